@@ -1,0 +1,243 @@
+#pragma once
+// Gaussian elimination with partial pivoting (GEPP): seed 001's gauss_elim, done properly.
+//
+// For each column k:
+//   1. pivot search  - find the row p >= k with the largest |a_pk|;
+//   2. row swap      - exchange rows k and p (of A and b);
+//   3. elimination   - for every row i below k: l_ik = a_ik / a_kk, row_i -= l_ik * row_k.
+// Then:
+//   4. back substitution - x_i = (c_i - sum_{j>i} u_ij x_j) / u_ii, from the last unknown up.
+//
+// A pivot that is zero relative to the matrix's scale (|a_kk| <= tol * max|a_ij|, tol = n*eps by
+// default) ends the solve with Status::singular: there is never a division by a negligible pivot.
+// The growth factor max|u_ij| / max|a_ij| is reported; it bounds how much rounding error the
+// elimination can amplify (2^(n-1) at worst, reached by Wilkinson's matrix).
+//
+// One step() is one pivot column (steps 1-3) or one back-substituted unknown. Fixed sizes
+// (N = 2, 8, 10, ...) work on the stack with no heap allocation; N = Eigen::Dynamic allocates
+// in start(), never in step().
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "numlab/linalg/input_checks.hpp"
+#include "numlab/linalg/linear_result.hpp"
+
+namespace numlab::linalg {
+
+enum class Pivoting { partial, none };
+
+enum class EliminationEvent { row_swap, elimination, back_substitution };
+
+// What one step did: sent to an observer, if one is attached.
+struct EliminationRecord {
+  EliminationEvent event;
+  int column;     // pivot column (swap, elimination) or the unknown just found (back substitution)
+  int other_row;  // the row swapped with `column` (row_swap only)
+  double value;   // the pivot used (row_swap, elimination) or the unknown's value (back substitution)
+};
+
+template <int N>
+class GaussElimination;
+
+template <int N>
+class GaussEliminationObserver {
+ public:
+  virtual ~GaussEliminationObserver() = default;
+  virtual void on_step(const GaussElimination<N>& state, const EliminationRecord& record) = 0;
+};
+
+struct GaussEliminationOptions {
+  Pivoting pivoting = Pivoting::partial;
+  // A pivot is negligible when |pivot| <= relative_pivot_tolerance * max|a_ij|.
+  // Unset means n * machine epsilon.
+  std::optional<double> relative_pivot_tolerance;
+};
+
+template <int N = Eigen::Dynamic>
+class GaussElimination {
+ public:
+  using MatrixType = Matrix<N>;
+  using VectorType = Vector<N>;
+  // Row-major, so that the elimination's inner loop runs along contiguous memory.
+  using WorkMatrix = Eigen::Matrix<double, N, N, (N == 1 ? Eigen::ColMajor : Eigen::RowMajor)>;
+
+  enum class Phase { elimination, back_substitution, done };
+
+  explicit GaussElimination(GaussEliminationOptions options = {}) : options_(options) {
+    if (options_.relative_pivot_tolerance) {
+      require_non_negative(*options_.relative_pivot_tolerance, "relative pivot tolerance");
+    }
+  }
+
+  void set_observer(GaussEliminationObserver<N>* observer) { observer_ = observer; }
+
+  // Copies A and b into the working arrays; throws std::invalid_argument on bad input.
+  void start(const MatrixType& A, const VectorType& b) {
+    require_valid_system(A, b);
+    n_ = static_cast<int>(A.rows());
+    original_matrix_ = A;
+    original_rhs_ = b;
+    reduced_ = A;
+    rhs_ = b;
+    x_.setZero(n_);
+    matrix_max_ = A.cwiseAbs().maxCoeff();
+    const double tolerance = options_.relative_pivot_tolerance.value_or(n_ * std::numeric_limits<double>::epsilon());
+    negligible_pivot_ = tolerance * matrix_max_;
+    column_ = 0;
+    next_unknown_ = n_ - 1;
+    growth_factor_ = LinearResult<N>::not_applicable;
+    status_ = Status::converged;
+    phase_ = Phase::elimination;
+  }
+
+  // Performs one pivot column or one back substitution. Returns false once the solve is over.
+  bool step() {
+    if (phase_ == Phase::elimination) {
+      eliminate_next_column();
+    } else if (phase_ == Phase::back_substitution) {
+      back_substitute_next_unknown();
+    }
+    return phase_ != Phase::done;
+  }
+
+  LinearResult<N> solve(const MatrixType& A, const VectorType& b) {
+    start(A, b);
+    while (step()) {
+    }
+    return result();
+  }
+
+  LinearResult<N> result() const {
+    LinearResult<N> result;
+    result.status = status_;
+    result.iterations = column_;
+    result.growth_factor = growth_factor_;
+    if (status_ == Status::converged) {
+      result.x = x_;
+      result.residual_norm = residual_inf_norm(original_matrix_, original_rhs_, x_);
+    } else {
+      // No solution exists to report: say so with NaN rather than print a meaningless number.
+      result.x.setConstant(n_, std::numeric_limits<double>::quiet_NaN());
+    }
+    return result;
+  }
+
+  // State between steps, for tracing and step-by-step labs.
+  Phase phase() const { return phase_; }
+  Status status() const { return status_; }
+  int size() const { return n_; }
+  int columns_eliminated() const { return column_; }
+  const WorkMatrix& reduced_matrix() const { return reduced_; }
+  const VectorType& reduced_rhs() const { return rhs_; }
+  // Entries next_unknown()+1 ... n-1 of solution() are known during back substitution.
+  const VectorType& solution() const { return x_; }
+  int next_unknown() const { return next_unknown_; }
+  double growth_factor() const { return growth_factor_; }
+  double negligible_pivot() const { return negligible_pivot_; }
+
+ private:
+  void eliminate_next_column() {
+    const int k = column_;
+
+    // 1. Pivot search: the largest |a_ik| on or below the diagonal.
+    int pivot_row = k;
+    if (options_.pivoting == Pivoting::partial) {
+      for (int i = k + 1; i < n_; ++i) {
+        if (std::abs(reduced_(i, k)) > std::abs(reduced_(pivot_row, k))) pivot_row = i;
+      }
+    }
+
+    // 2. Row swap: bring the pivot to the diagonal.
+    if (pivot_row != k) {
+      reduced_.row(k).swap(reduced_.row(pivot_row));
+      std::swap(rhs_(k), rhs_(pivot_row));
+      notify({EliminationEvent::row_swap, k, pivot_row, reduced_(k, k)});
+    }
+
+    const double pivot = reduced_(k, k);
+    if (!std::isfinite(pivot)) {
+      finish(Status::non_finite);
+      return;
+    }
+    if (std::abs(pivot) <= negligible_pivot_) {
+      finish(Status::singular);
+      return;
+    }
+
+    // 3. Elimination: subtract l_ik * (row k) from each row i below, so that a_ik becomes 0.
+    const int trailing = n_ - k - 1;
+    for (int i = k + 1; i < n_; ++i) {
+      const double multiplier = reduced_(i, k) / pivot;
+      reduced_(i, k) = 0.0;
+      if (multiplier == 0.0) continue;
+      reduced_.row(i).tail(trailing) -= multiplier * reduced_.row(k).tail(trailing);
+      rhs_(i) -= multiplier * rhs_(k);
+    }
+    ++column_;
+    notify({EliminationEvent::elimination, k, k, pivot});
+
+    if (column_ == n_) {
+      growth_factor_ = upper_triangle_max() / matrix_max_;
+      phase_ = Phase::back_substitution;
+    }
+  }
+
+  void back_substitute_next_unknown() {
+    // 4. Back substitution: x_i = (c_i - sum_{j>i} u_ij x_j) / u_ii.
+    const int i = next_unknown_;
+    const int known = n_ - i - 1;
+    const double sum = reduced_.row(i).tail(known).dot(x_.tail(known));
+    x_(i) = (rhs_(i) - sum) / reduced_(i, i);
+    --next_unknown_;
+    notify({EliminationEvent::back_substitution, i, i, x_(i)});
+
+    if (!std::isfinite(x_(i))) {
+      finish(Status::non_finite);
+    } else if (next_unknown_ < 0) {
+      finish(Status::converged);
+    }
+  }
+
+  double upper_triangle_max() const {
+    double largest = 0.0;
+    for (int i = 0; i < n_; ++i) largest = std::max(largest, reduced_.row(i).tail(n_ - i).cwiseAbs().maxCoeff());
+    return largest;
+  }
+
+  void finish(Status status) {
+    status_ = status;
+    phase_ = Phase::done;
+  }
+
+  void notify(const EliminationRecord& record) {
+    if (observer_ != nullptr) observer_->on_step(*this, record);
+  }
+
+  GaussEliminationOptions options_;
+  GaussEliminationObserver<N>* observer_ = nullptr;
+  int n_ = 0;
+  MatrixType original_matrix_;
+  VectorType original_rhs_;
+  WorkMatrix reduced_;  // A, reduced step by step to upper triangular U
+  VectorType rhs_;      // b, with the same row operations applied
+  VectorType x_;
+  double matrix_max_ = 0.0;
+  double negligible_pivot_ = 0.0;
+  int column_ = 0;
+  int next_unknown_ = -1;
+  double growth_factor_ = LinearResult<N>::not_applicable;
+  Status status_ = Status::converged;
+  Phase phase_ = Phase::done;
+};
+
+// Convenience: one GEPP solve of A x = b.
+template <int N>
+LinearResult<N> gauss_elimination(const Matrix<N>& A, const Vector<N>& b, GaussEliminationOptions options = {}) {
+  return GaussElimination<N>(options).solve(A, b);
+}
+
+}  // namespace numlab::linalg

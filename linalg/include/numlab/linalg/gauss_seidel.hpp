@@ -1,0 +1,196 @@
+#pragma once
+// Gauss-Seidel iteration: seed 001's gauss_seidel, with its stop test fixed.
+//
+// The system it sweeps, M x = c, is chosen by Options::system:
+//   normal_equations (default, as in the seed): M = A^T A, c = A^T b. M is symmetric positive
+//       definite for any nonsingular A, so the sweeps always converge, but at a rate set by
+//       kappa(M) = kappa(A)^2: the sweep count grows with the square of A's condition number.
+//   plain (for comparison): M = A, c = b. Converges for diagonally dominant A; may diverge otherwise.
+//
+// One sweep (one step()):
+//   for i = 1..n:  x_i <- (c_i - sum_{j != i} m_ij x_j) / m_ii     (new values used at once)
+// Stop test, after each sweep:
+//   ||x_k - x_{k-1}||_inf <= tolerance * max(1, ||x_k||_inf)
+// (the seed compared the signed update, so any decreasing component "passed").
+// The residual reported is that of the ORIGINAL system, ||b - A x||_inf, never only of M x = c.
+//
+// Other endings: Status::diverged when the update has grown by divergence_factor over the first
+// sweep's, Status::non_finite when an infinity or NaN appears, Status::max_iterations at the limit,
+// Status::singular when some m_ii = 0 (the sweep cannot divide by it).
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "numlab/linalg/input_checks.hpp"
+#include "numlab/linalg/linear_result.hpp"
+
+namespace numlab::linalg {
+
+// One row of the trace: sent to an observer after every sweep.
+struct SweepRecord {
+  int sweep;
+  double step_norm;      // ||x_k - x_{k-1}||_inf
+  double residual_norm;  // ||b - A x_k||_inf of the original system
+};
+
+template <int N>
+class GaussSeidel;
+
+template <int N>
+class GaussSeidelObserver {
+ public:
+  virtual ~GaussSeidelObserver() = default;
+  virtual void on_sweep(const GaussSeidel<N>& state, const SweepRecord& record) = 0;
+};
+
+struct GaussSeidelOptions {
+  enum class System { normal_equations, plain };
+  System system = System::normal_equations;
+  double tolerance = 1e-9;         // seed 001's default
+  int max_iterations = 100;        // seed 001's default
+  double divergence_factor = 1e8;  // diverged when ||dx|| exceeds this times the first sweep's ||dx||
+};
+
+template <int N = Eigen::Dynamic>
+class GaussSeidel {
+ public:
+  using MatrixType = Matrix<N>;
+  using VectorType = Vector<N>;
+  // Row-major: a sweep reads M row by row.
+  using WorkMatrix = Eigen::Matrix<double, N, N, (N == 1 ? Eigen::ColMajor : Eigen::RowMajor)>;
+
+  explicit GaussSeidel(GaussSeidelOptions options = {}) : options_(options) {
+    require_non_negative(options_.tolerance, "tolerance");
+    if (options_.max_iterations < 1) {
+      throw std::invalid_argument("iteration limit must be at least 1, got " + std::to_string(options_.max_iterations));
+    }
+    if (!(options_.divergence_factor > 1.0)) {
+      throw std::invalid_argument("divergence factor must exceed 1, got " + std::to_string(options_.divergence_factor));
+    }
+  }
+
+  void set_observer(GaussSeidelObserver<N>* observer) { observer_ = observer; }
+
+  void start(const MatrixType& A, const VectorType& b) { start(A, b, VectorType::Zero(A.rows())); }
+
+  // Forms the system to sweep (A^T A and A^T b for the normal equations) and sets x = x0.
+  void start(const MatrixType& A, const VectorType& b, const VectorType& x0) {
+    require_valid_system(A, b);
+    if (x0.size() != A.rows()) {
+      throw std::invalid_argument("initial guess has " + std::to_string(x0.size()) + " entries but the matrix has " +
+                                  std::to_string(A.rows()) + " rows");
+    }
+    require_finite(x0, "initial guess");
+    n_ = static_cast<int>(A.rows());
+    original_matrix_ = A;
+    original_rhs_ = b;
+    if (options_.system == GaussSeidelOptions::System::normal_equations) {
+      swept_matrix_.noalias() = A.transpose() * A;
+      swept_rhs_.noalias() = A.transpose() * b;
+    } else {
+      swept_matrix_ = A;
+      swept_rhs_ = b;
+    }
+    x_ = x0;
+    sweep_ = 0;
+    step_norm_ = LinearResult<N>::not_applicable;
+    first_step_norm_ = 0.0;
+    status_ = Status::converged;
+    running_ = true;
+    if ((swept_matrix_.diagonal().array() == 0.0).any()) finish(Status::singular);
+  }
+
+  // Performs one sweep. Returns false once the iteration has ended.
+  bool step() {
+    if (!running_) return false;
+    ++sweep_;
+
+    // One sweep: solve equation i for x_i, using the newest values of the other unknowns.
+    step_norm_ = 0.0;
+    for (int i = 0; i < n_; ++i) {
+      const int after = n_ - i - 1;
+      const double others = swept_matrix_.row(i).head(i).dot(x_.head(i)) +
+                            swept_matrix_.row(i).tail(after).dot(x_.tail(after));
+      const double updated = (swept_rhs_(i) - others) / swept_matrix_(i, i);
+      step_norm_ = std::max(step_norm_, std::abs(updated - x_(i)));
+      x_(i) = updated;
+    }
+    if (sweep_ == 1) first_step_norm_ = step_norm_;
+
+    if (observer_ != nullptr) observer_->on_sweep(*this, {sweep_, step_norm_, residual_norm()});
+
+    // Stop tests, in order of precedence.
+    if (!x_.allFinite() || !std::isfinite(step_norm_)) {
+      finish(Status::non_finite);
+    } else if (step_norm_ <= options_.tolerance * std::max(1.0, x_.template lpNorm<Eigen::Infinity>())) {
+      finish(Status::converged);
+    } else if (step_norm_ > options_.divergence_factor * std::max(first_step_norm_, options_.tolerance)) {
+      finish(Status::diverged);
+    } else if (sweep_ >= options_.max_iterations) {
+      finish(Status::max_iterations);
+    }
+    return running_;
+  }
+
+  LinearResult<N> solve(const MatrixType& A, const VectorType& b) {
+    start(A, b);
+    return run();
+  }
+
+  LinearResult<N> solve(const MatrixType& A, const VectorType& b, const VectorType& x0) {
+    start(A, b, x0);
+    return run();
+  }
+
+  LinearResult<N> result() const {
+    LinearResult<N> result;
+    result.x = x_;
+    result.status = status_;
+    result.iterations = sweep_;
+    result.step_norm = step_norm_;
+    result.residual_norm = residual_norm();
+    return result;
+  }
+
+  // State between sweeps.
+  bool running() const { return running_; }
+  Status status() const { return status_; }
+  int sweeps() const { return sweep_; }
+  const VectorType& x() const { return x_; }
+  double step_norm() const { return step_norm_; }
+  double residual_norm() const { return residual_inf_norm(original_matrix_, original_rhs_, x_); }
+  const WorkMatrix& swept_matrix() const { return swept_matrix_; }
+  const VectorType& swept_rhs() const { return swept_rhs_; }
+
+ private:
+  LinearResult<N> run() {
+    while (step()) {
+    }
+    return result();
+  }
+
+  void finish(Status status) {
+    status_ = status;
+    running_ = false;
+  }
+
+  GaussSeidelOptions options_;
+  GaussSeidelObserver<N>* observer_ = nullptr;
+  int n_ = 0;
+  MatrixType original_matrix_;
+  VectorType original_rhs_;
+  WorkMatrix swept_matrix_;  // M: A^T A or A
+  VectorType swept_rhs_;     // c: A^T b or b
+  VectorType x_;
+  int sweep_ = 0;
+  double step_norm_ = LinearResult<N>::not_applicable;
+  double first_step_norm_ = 0.0;
+  Status status_ = Status::converged;
+  bool running_ = false;
+};
+
+}  // namespace numlab::linalg
