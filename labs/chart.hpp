@@ -1,0 +1,25 @@
+#pragma once
+// Charts drawn by gnuplot from a script written next to the data, so a student can open the CSV
+// and the script, change them, and redraw by hand with `gnuplot FILE.gp`.
+
+#include <string>
+
+namespace numlab::cli {
+
+struct ChartFiles {
+  std::string chart;   // FILE.svg or FILE.png
+  std::string data;    // FILE.csv, beside the chart
+  std::string script;  // FILE.gp, beside the chart
+};
+
+// The data and script paths beside a chart path; throws std::invalid_argument unless it ends in .svg or .png.
+ChartFiles chart_files(const std::string& chart_path);
+
+// The gnuplot `set terminal ...; set output ...` lines for the chart's extension.
+std::string gnuplot_output_lines(const ChartFiles& files);
+
+// Writes the data and the script (each whole or not at all), then runs gnuplot on the script.
+// Throws std::runtime_error when gnuplot is missing or fails.
+void draw_chart(const ChartFiles& files, const std::string& csv, const std::string& script);
+
+}  // namespace numlab::cli

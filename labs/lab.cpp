@@ -1,0 +1,71 @@
+#include "lab.hpp"
+
+#include <fmt/format.h>
+
+#include <sstream>
+
+#include "cli_common.hpp"
+#include "linear_methods.hpp"
+#include "numlab/linalg/measures.hpp"
+#include "timing.hpp"
+
+namespace numlab::cli {
+
+void LabSession::begin_step(const std::string& title, const std::string& explanation) {
+  if (step_number_ > 0) pause_if_stepping(step_);
+  ++step_number_;
+  out_ << fmt::format("\nStep {}: {}\n", step_number_, title) << std::string(title.size() + 8, '=') << '\n';
+  say(explanation);
+}
+
+void LabSession::say(const std::string& paragraph) {
+  std::istringstream words(paragraph);
+  std::string word;
+  std::string line = "  ";
+  while (words >> word) {
+    if (line.size() + word.size() + 1 > 96 && line.size() > 2) {
+      out_ << line << '\n';
+      line = "  ";
+    }
+    line += (line.size() > 2 ? " " : "") + word;
+  }
+  if (line.size() > 2) out_ << line << '\n';
+  out_ << '\n';
+}
+
+void LabSession::show(const Table& table) {
+  table.print(out_);
+  out_ << '\n';
+}
+
+const std::vector<Lab>& all_labs() {
+  static const std::vector<Lab> labs = {
+      {"gauss", "Gaussian elimination: pivoting, Wilkinson's growth, and GEPP against GSL LU/QR and Eigen",
+       run_gauss_lab},
+      {"seidel", "Gauss-Seidel: the plain system diverges, the normal equations converge at a kappa^2 price",
+       run_seidel_lab},
+      {"inverse2x2", "The 2x2 closed-form inverse: the determinant judged by scale, and a nearly singular 2x2",
+       run_inverse2x2_lab},
+  };
+  return labs;
+}
+
+Table linear_comparison_table(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const Eigen::VectorXd& exact,
+                              const std::vector<std::string>& methods) {
+  Table table({"method", "status", "x_1", "x_n", "relative residual", "forward error", "time (median)"});
+  LinearSettings settings;
+  settings.max_iterations = 100000;
+  for (const std::string& method : methods) {
+    const DynamicResult result = run_linear_method(method, A, b, settings);
+    const bool has_answer = result.x.allFinite();
+    const double seconds = median_time([&] { run_linear_method(method, A, b, settings); }, {3, 200, 0.02});
+    table.add_row({method, std::string(to_string(result.status)), fmt::format("{:.12g}", result.x(0)),
+                   fmt::format("{:.12g}", result.x(result.x.size() - 1)),
+                   has_answer ? scientific(linalg::relative_residual(A, b, result.x)) : "-",
+                   has_answer ? scientific(linalg::forward_error(result.x, exact)) : "-",
+                   fmt::format("{:.3g} s", seconds)});
+  }
+  return table;
+}
+
+}  // namespace numlab::cli

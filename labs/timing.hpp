@@ -1,0 +1,35 @@
+#pragma once
+// In-process timing for benchmarks and lab tables: a warm-up run, then repeated runs, and the median.
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+namespace numlab::cli {
+
+struct TimingPlan {
+  int min_runs = 5;            // at least this many timed runs
+  int max_runs = 1000;         // at most this many
+  double min_total_s = 0.05;   // keep running until this much time has been measured
+};
+
+// Median wall time of one call of `work`, in seconds.
+template <typename Work>
+double median_time(Work&& work, TimingPlan plan = {}) {
+  using Clock = std::chrono::steady_clock;
+  work();  // warm-up: caches, lazy allocations, page faults
+  std::vector<double> times;
+  double total = 0.0;
+  while (static_cast<int>(times.size()) < plan.max_runs &&
+         (static_cast<int>(times.size()) < plan.min_runs || total < plan.min_total_s)) {
+    const auto begin = Clock::now();
+    work();
+    const double elapsed = std::chrono::duration<double>(Clock::now() - begin).count();
+    times.push_back(elapsed);
+    total += elapsed;
+  }
+  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+  return times[times.size() / 2];
+}
+
+}  // namespace numlab::cli

@@ -1,0 +1,48 @@
+#pragma once
+// Trace observers for the hand-written linear methods: readable text on a stream, or JSON records
+// collected for the "trace" array. With --step they pause after each record.
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "numlab/linalg/gauss_elimination.hpp"
+#include "numlab/linalg/gauss_seidel.hpp"
+
+namespace numlab::cli {
+
+// Matrices larger than this are summarised in traces rather than printed whole.
+constexpr int max_traced_matrix_size = 12;
+
+// Seed 001's verbose mode, made readable: the augmented matrix [A | b] after each row swap and
+// each elimination, then each back-substituted value (all indices 1-based).
+class EliminationTracer : public linalg::GaussEliminationObserver<Eigen::Dynamic> {
+ public:
+  // text_out == nullptr collects JSON records instead of printing.
+  EliminationTracer(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
+  void on_step(const linalg::GaussElimination<Eigen::Dynamic>& state, const linalg::EliminationRecord& record) override;
+  const nlohmann::ordered_json& records() const { return records_; }
+
+ private:
+  std::ostream* text_out_;
+  bool step_;
+  nlohmann::ordered_json records_ = nlohmann::ordered_json::array();
+};
+
+// One row per sweep: k, ||dx||_inf, ||b - A x||_inf of the original system.
+class SweepTracer : public linalg::GaussSeidelObserver<Eigen::Dynamic> {
+ public:
+  SweepTracer(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
+  void on_sweep(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) override;
+  const nlohmann::ordered_json& records() const { return records_; }
+
+ private:
+  std::ostream* text_out_;
+  bool step_;
+  bool header_printed_ = false;
+  nlohmann::ordered_json records_ = nlohmann::ordered_json::array();
+};
+
+// Prints [M | c] with aligned columns, each line indented.
+void print_augmented(std::ostream& out, const Eigen::MatrixXd& M, const Eigen::VectorXd& c);
+
+}  // namespace numlab::cli
