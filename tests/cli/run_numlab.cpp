@@ -1,0 +1,44 @@
+#include "run_numlab.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace numlab::test {
+
+namespace {
+std::string read_all(const std::string& path) {
+  std::ifstream file(path);
+  std::ostringstream contents;
+  contents << file.rdbuf();
+  return contents.str();
+}
+}  // namespace
+
+std::string temporary_folder() {
+  std::string pattern = (std::filesystem::temp_directory_path() / "numlab-test-XXXXXX").string();
+  if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+  return pattern;
+}
+
+std::string temporary_file(const std::string& name, const std::string& contents) {
+  const std::string path = temporary_folder() + "/" + name;
+  std::ofstream(path) << contents;
+  return path;
+}
+
+ProgramRun run_numlab(const std::string& arguments) {
+  const std::string folder = temporary_folder();
+  const std::string command = std::string(NUMLAB_BINARY) + " " + arguments + " </dev/null >" + folder + "/out 2>" +
+                              folder + "/err";
+  const int status = std::system(command.c_str());
+  ProgramRun run{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_all(folder + "/out"), read_all(folder + "/err")};
+  std::filesystem::remove_all(folder);
+  return run;
+}
+
+}  // namespace numlab::test

@@ -1,0 +1,24 @@
+#pragma once
+// Runs the numlab program as a user would (stdin from /dev/null, so --step never blocks) and
+// captures its exit code, stdout and stderr.
+
+#include <string>
+
+namespace numlab::test {
+
+struct ProgramRun {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+// `arguments` is appended to the program path as shell words.
+ProgramRun run_numlab(const std::string& arguments);
+
+// A fresh temporary folder for files a test writes.
+std::string temporary_folder();
+
+// Writes `contents` to a file in a temporary folder and returns its path.
+std::string temporary_file(const std::string& name, const std::string& contents);
+
+}  // namespace numlab::test

@@ -1,0 +1,138 @@
+// Heap allocations inside the solve loops, counted two ways:
+//  - Eigen's own (EIGEN_RUNTIME_NO_MALLOC: every Eigen heap allocation asks is_malloc_allowed());
+//  - everything else, through a counting global operator new.
+// This file is its own executable and compiles inverse2x2.cpp itself, so that every Eigen function
+// it runs is built with the hook (the library is not linked); count_eigen_allocations.hpp is
+// force-included into both.
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<long> operator_new_calls{0};
+std::atomic<bool> counting{false};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  if (counting) ++operator_new_calls;
+  if (void* memory = std::malloc(size == 0 ? 1 : size)) return memory;
+  throw std::bad_alloc();
+}
+void operator delete(void* memory) noexcept { std::free(memory); }
+void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
+
+#include <catch2/catch.hpp>
+
+#include "numlab/linalg/eigen_reference.hpp"
+#include "numlab/linalg/gauss_elimination.hpp"
+#include "numlab/linalg/gauss_seidel.hpp"
+#include "numlab/linalg/inverse2x2.hpp"
+
+using namespace numlab;
+using namespace numlab::linalg;
+
+namespace {
+
+struct AllocationCount {
+  long eigen;
+  long operator_new;
+};
+
+// Runs `work` with Eigen's heap forbidden and operator new counted; returns what was attempted.
+template <typename Work>
+AllocationCount allocations_during(Work&& work) {
+  refused_eigen_allocations = 0;
+  operator_new_calls = 0;
+  Eigen::internal::set_is_malloc_allowed(false);
+  counting = true;
+  work();
+  counting = false;
+  Eigen::internal::set_is_malloc_allowed(true);
+  return {refused_eigen_allocations.load(), operator_new_calls.load()};
+}
+
+template <int N>
+Matrix<N> diagonally_dominant() {
+  Matrix<N> A = Matrix<N>::Constant(0.5);
+  A.diagonal().setConstant(N + 1.0);
+  A(0, N - 1) = -0.25;
+  return A;
+}
+
+}  // namespace
+
+TEST_CASE("The counter sees allocations (so a zero below means something)", "[allocations]") {
+  const AllocationCount counted = allocations_during([] {
+    Eigen::VectorXd dynamic(64);
+    dynamic.setZero();
+    static int* volatile boxed = nullptr;  // volatile: the compiler may not elide the new
+    boxed = new int(3);
+    delete boxed;
+  });
+  CHECK(counted.eigen >= 1);
+  CHECK(counted.operator_new == 1);
+}
+
+TEMPLATE_TEST_CASE_SIG("Fixed-size GEPP allocates nothing", "[allocations][gepp]", ((int N), N), 2, 8, 10) {
+  const Matrix<N> A = diagonally_dominant<N>();
+  const Vector<N> b = A * Vector<N>::Ones();
+  GaussElimination<N> solver;
+  LinearResult<N> result;
+  const AllocationCount counted = allocations_during([&] {
+    for (int repeat = 0; repeat < 100; ++repeat) result = solver.solve(A, b);
+  });
+  REQUIRE(result.status == Status::converged);
+  CHECK(counted.eigen == 0);
+  CHECK(counted.operator_new == 0);
+}
+
+TEST_CASE("Fixed-size Gauss-Seidel, the 2x2 closed form and fixed Eigen LU allocate nothing", "[allocations]") {
+  const Matrix<8> A = diagonally_dominant<8>();
+  const Vector<8> b = A * Vector<8>::Ones();
+  GaussSeidelOptions plain;
+  plain.system = GaussSeidelOptions::System::plain;
+  GaussSeidel<8> normal_equations, plain_sweeps(plain);
+  EigenLu<8> eigen_lu;
+  const Eigen::Matrix2d A2 = diagonally_dominant<2>();
+  LinearResult<8> r1, r2, r3;
+  LinearResult<2> r4;
+  const AllocationCount counted = allocations_during([&] {
+    for (int repeat = 0; repeat < 20; ++repeat) {
+      r1 = normal_equations.solve(A, b);
+      r2 = plain_sweeps.solve(A, b);
+      r3 = eigen_lu.solve(A, b);
+      r4 = solve2x2(A2, Eigen::Vector2d(1, 2));
+    }
+  });
+  REQUIRE(r1.status == Status::converged);
+  REQUIRE(r2.status == Status::converged);
+  REQUIRE(r4.status == Status::converged);
+  CHECK(counted.eigen == 0);
+  CHECK(counted.operator_new == 0);
+}
+
+TEST_CASE("Dynamic sizes allocate in start(), never in step()", "[allocations]") {
+  const Eigen::MatrixXd A = Eigen::MatrixXd(diagonally_dominant<10>());
+  const Eigen::VectorXd b = A * Eigen::VectorXd::Ones(10);
+
+  GaussElimination<Eigen::Dynamic> elimination;
+  elimination.start(A, b);
+  const AllocationCount in_elimination = allocations_during([&] {
+    while (elimination.step()) {
+    }
+  });
+  CHECK(elimination.status() == Status::converged);
+  CHECK(in_elimination.eigen == 0);
+  CHECK(in_elimination.operator_new == 0);
+
+  GaussSeidel<Eigen::Dynamic> sweeps;
+  sweeps.start(A, b);
+  const AllocationCount in_sweeps = allocations_during([&] {
+    while (sweeps.step()) {
+    }
+  });
+  CHECK(sweeps.status() == Status::converged);
+  CHECK(in_sweeps.eigen == 0);
+  CHECK(in_sweeps.operator_new == 0);
+}
