@@ -13,19 +13,26 @@ struct TimingPlan {
   double min_total_s = 0.05;   // keep running until this much time has been measured
 };
 
-// Median wall time of one call of `work`, in seconds.
+// Median wall time of one call of `work`, in seconds. Calls shorter than the clock can resolve
+// well are batched: each timed sample runs `work` enough times to last at least 20 microseconds.
 template <typename Work>
 double median_time(Work&& work, TimingPlan plan = {}) {
   using Clock = std::chrono::steady_clock;
-  work();  // warm-up: caches, lazy allocations, page faults
+  auto seconds_for = [&](int calls) {
+    const auto begin = Clock::now();
+    for (int call = 0; call < calls; ++call) work();
+    return std::chrono::duration<double>(Clock::now() - begin).count();
+  };
+  // Warm-up (caches, lazy allocations, page faults), then choose the batch size.
+  int calls_per_sample = 1;
+  while (seconds_for(calls_per_sample) < 20e-6 && calls_per_sample < (1 << 20)) calls_per_sample *= 2;
+
   std::vector<double> times;
   double total = 0.0;
   while (static_cast<int>(times.size()) < plan.max_runs &&
          (static_cast<int>(times.size()) < plan.min_runs || total < plan.min_total_s)) {
-    const auto begin = Clock::now();
-    work();
-    const double elapsed = std::chrono::duration<double>(Clock::now() - begin).count();
-    times.push_back(elapsed);
+    const double elapsed = seconds_for(calls_per_sample);
+    times.push_back(elapsed / calls_per_sample);
     total += elapsed;
   }
   std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());

@@ -6,7 +6,9 @@
 //   2. row swap      - exchange rows k and p (of A and b);
 //   3. elimination   - for every row i below k: l_ik = a_ik / a_kk, row_i -= l_ik * row_k.
 // Then:
-//   4. back substitution - x_i = (c_i - sum_{j>i} u_ij x_j) / u_ii, from the last unknown up.
+//   4. back substitution - x_i = (c_i - sum_{j>i} u_ij x_j) / u_ii, from the last unknown up,
+//                          column by column (each x_i is subtracted from the c_j above it at once),
+//                          multiplying by the 1/u_ii kept from step 3.
 //
 // A pivot that is zero relative to the matrix's scale (|a_kk| <= tol * max|a_ij|, tol = n*eps by
 // default) ends the solve with Status::singular: there is never a division by a negligible pivot.
@@ -75,23 +77,11 @@ class GaussElimination {
 
   void set_observer(GaussEliminationObserver<N>* observer) { observer_ = observer; }
 
-  // Copies A and b into the working arrays; throws std::invalid_argument on bad input.
+  // Copies A and b, for stepping; throws std::invalid_argument on bad input.
   void start(const MatrixType& A, const VectorType& b) {
-    require_valid_system(A, b);
-    n_ = static_cast<int>(A.rows());
+    load(A, b);
     original_matrix_ = A;
     original_rhs_ = b;
-    reduced_ = A;
-    rhs_ = b;
-    x_.setZero(n_);
-    matrix_max_ = A.cwiseAbs().maxCoeff();
-    const double tolerance = options_.relative_pivot_tolerance.value_or(n_ * std::numeric_limits<double>::epsilon());
-    negligible_pivot_ = tolerance * matrix_max_;
-    column_ = 0;
-    next_unknown_ = n_ - 1;
-    growth_factor_ = LinearResult<N>::not_applicable;
-    status_ = Status::converged;
-    phase_ = Phase::elimination;
   }
 
   // Performs one pivot column or one back substitution. Returns false once the solve is over.
@@ -104,27 +94,16 @@ class GaussElimination {
     return phase_ != Phase::done;
   }
 
+  // start(), step() until done, result(); without the copies of A and b that stepping keeps.
   LinearResult<N> solve(const MatrixType& A, const VectorType& b) {
-    start(A, b);
+    load(A, b);
     while (step()) {
     }
-    return result();
+    return result_for(A, b);
   }
 
-  LinearResult<N> result() const {
-    LinearResult<N> result;
-    result.status = status_;
-    result.iterations = column_;
-    result.growth_factor = growth_factor_;
-    if (status_ == Status::converged) {
-      result.x = x_;
-      result.residual_norm = residual_inf_norm(original_matrix_, original_rhs_, x_);
-    } else {
-      // No solution exists to report: say so with NaN rather than print a meaningless number.
-      result.x.setConstant(n_, std::numeric_limits<double>::quiet_NaN());
-    }
-    return result;
-  }
+  // The result of a solve begun with start().
+  LinearResult<N> result() const { return result_for(original_matrix_, original_rhs_); }
 
   // State between steps, for tracing and step-by-step labs.
   Phase phase() const { return phase_; }
@@ -140,14 +119,52 @@ class GaussElimination {
   double negligible_pivot() const { return negligible_pivot_; }
 
  private:
+  // Checks the input and sets up the working copies: reduced = A, rhs = b.
+  void load(const MatrixType& A, const VectorType& b) {
+    require_valid_system(A, b);
+    matrix_max_ = A.cwiseAbs().maxCoeff();
+    n_ = static_cast<int>(A.rows());
+    reduced_ = A;
+    rhs_ = b;
+    x_.setZero(n_);
+    inverse_pivots_.resize(n_);  // each entry is written in step 3 before step 4 reads it
+    const double tolerance = options_.relative_pivot_tolerance.value_or(n_ * std::numeric_limits<double>::epsilon());
+    negligible_pivot_ = tolerance * matrix_max_;
+    column_ = 0;
+    next_unknown_ = n_ - 1;
+    growth_factor_ = LinearResult<N>::not_applicable;
+    status_ = Status::converged;
+    phase_ = Phase::elimination;
+  }
+
+  LinearResult<N> result_for(const MatrixType& A, const VectorType& b) const {
+    LinearResult<N> result;
+    result.status = status_;
+    result.iterations = column_;
+    result.growth_factor = growth_factor_;
+    if (status_ == Status::converged) {
+      result.x = x_;
+      result.residual_norm = residual_inf_norm(A, b, x_);
+    } else {
+      // No solution exists to report: say so with NaN rather than print a meaningless number.
+      result.x.setConstant(n_, std::numeric_limits<double>::quiet_NaN());
+    }
+    return result;
+  }
+
   void eliminate_next_column() {
     const int k = column_;
+    const int n = dimension();
 
     // 1. Pivot search: the largest |a_ik| on or below the diagonal.
     int pivot_row = k;
     if (options_.pivoting == Pivoting::partial) {
-      for (int i = k + 1; i < n_; ++i) {
-        if (std::abs(reduced_(i, k)) > std::abs(reduced_(pivot_row, k))) pivot_row = i;
+      double largest = std::abs(reduced_(k, k));
+      for (int i = k + 1; i < n; ++i) {
+        if (std::abs(reduced_(i, k)) > largest) {
+          largest = std::abs(reduced_(i, k));
+          pivot_row = i;
+        }
       }
     }
 
@@ -169,29 +186,33 @@ class GaussElimination {
     }
 
     // 3. Elimination: subtract l_ik * (row k) from each row i below, so that a_ik becomes 0.
-    const int trailing = n_ - k - 1;
-    for (int i = k + 1; i < n_; ++i) {
-      const double multiplier = reduced_(i, k) / pivot;
-      reduced_(i, k) = 0.0;
-      if (multiplier == 0.0) continue;
-      reduced_.row(i).tail(trailing) -= multiplier * reduced_.row(k).tail(trailing);
+    const double inverse_pivot = 1.0 / pivot;  // kept: back substitution multiplies by it
+    inverse_pivots_(k) = inverse_pivot;
+    const double* pivot_row_entries = row_pointer(k);
+    for (int i = k + 1; i < n; ++i) {
+      double* row = row_pointer(i);
+      const double multiplier = row[k] * inverse_pivot;  // l_ik = a_ik / a_kk
+      row[k] = 0.0;
+      for (int j = k + 1; j < n; ++j) row[j] -= multiplier * pivot_row_entries[j];
       rhs_(i) -= multiplier * rhs_(k);
     }
     ++column_;
     notify({EliminationEvent::elimination, k, k, pivot});
 
-    if (column_ == n_) {
-      growth_factor_ = upper_triangle_max() / matrix_max_;
+    if (column_ == n) {
+      // Every entry below the diagonal was set to exactly 0 when its column was eliminated, so
+      // max|u_ij| is the largest entry of the whole working matrix.
+      growth_factor_ = reduced_.cwiseAbs().maxCoeff() / matrix_max_;
       phase_ = Phase::back_substitution;
     }
   }
 
   void back_substitute_next_unknown() {
-    // 4. Back substitution: x_i = (c_i - sum_{j>i} u_ij x_j) / u_ii.
+    // 4. Back substitution, column by column: x_i = c_i / u_ii, then c_j -= u_ji x_i for every
+    //    row j above, so that c_j holds c_j - sum_{l>j} u_jl x_l by the time x_j is needed.
     const int i = next_unknown_;
-    const int known = n_ - i - 1;
-    const double sum = reduced_.row(i).tail(known).dot(x_.tail(known));
-    x_(i) = (rhs_(i) - sum) / reduced_(i, i);
+    x_(i) = rhs_(i) * inverse_pivots_(i);
+    for (int j = 0; j < i; ++j) rhs_(j) -= reduced_(j, i) * x_(i);
     --next_unknown_;
     notify({EliminationEvent::back_substitution, i, i, x_(i)});
 
@@ -202,11 +223,12 @@ class GaussElimination {
     }
   }
 
-  double upper_triangle_max() const {
-    double largest = 0.0;
-    for (int i = 0; i < n_; ++i) largest = std::max(largest, reduced_.row(i).tail(n_ - i).cwiseAbs().maxCoeff());
-    return largest;
-  }
+  // The size n: a compile-time constant for fixed sizes, so their loops have known bounds.
+  int dimension() const { return N == Eigen::Dynamic ? n_ : N; }
+
+  // Row i of the working matrix as plain memory (row-major, so its entries are contiguous).
+  double* row_pointer(int i) { return reduced_.data() + static_cast<Eigen::Index>(i) * dimension(); }
+  const double* row_pointer(int i) const { return reduced_.data() + static_cast<Eigen::Index>(i) * dimension(); }
 
   void finish(Status status) {
     status_ = status;
@@ -220,10 +242,11 @@ class GaussElimination {
   GaussEliminationOptions options_;
   GaussEliminationObserver<N>* observer_ = nullptr;
   int n_ = 0;
-  MatrixType original_matrix_;
+  MatrixType original_matrix_;  // kept by start() for result(); solve() uses the caller's
   VectorType original_rhs_;
-  WorkMatrix reduced_;  // A, reduced step by step to upper triangular U
-  VectorType rhs_;      // b, with the same row operations applied
+  WorkMatrix reduced_;      // A, reduced step by step to upper triangular U
+  VectorType rhs_;          // b, with the same row operations applied
+  VectorType inverse_pivots_;  // 1 / u_kk, computed once per column
   VectorType x_;
   double matrix_max_ = 0.0;
   double negligible_pivot_ = 0.0;
