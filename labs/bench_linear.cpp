@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -70,7 +71,7 @@ double time_of(const std::vector<BenchRow>& rows, const std::string& solver, int
   return std::nan("");
 }
 
-std::string chart_script(const ChartFiles& files, const std::vector<BenchRow>& rows) {
+std::string chart_script(const ChartFiles& files, const std::vector<BenchRow>& rows, const std::vector<int>& sizes) {
   // Anchor the n^3 guide at the largest GEPP point.
   double anchor = 1e-9;
   for (const BenchRow& row : rows) {
@@ -82,11 +83,15 @@ std::string chart_script(const ChartFiles& files, const std::vector<BenchRow>& r
   script += "set title 'Linear solvers: median time per solve (diagonally dominant A)'\n";
   script += "set xlabel 'n'\nset ylabel 'time per solve (s)'\nset format y '10^{%T}'\n";
   script += fmt::format("guide(n) = {:.6g} * n**3\n", anchor);
+  const auto [smallest, largest] = std::minmax_element(sizes.begin(), sizes.end());
+  script += fmt::format("set xrange [{}:{}]\nset xtics (", *smallest / 1.5, *largest * 1.5);
+  for (std::size_t i = 0; i < sizes.size(); ++i) script += fmt::format("{}{}", i ? ", " : "", sizes[i]);
+  script += ")\n";
   script += "plot ";
   for (std::size_t i = 0; i < solvers.size(); ++i) {
     script += fmt::format("'{}' using 1:{} with linespoints lw 2 pt {} title '{}', ", files.data, i + 2, i + 5, solvers[i]);
   }
-  script += "[2:1024] guide(x) with lines dt 2 lc rgb 'gray40' title 'n^3 guide'\n";
+  script += fmt::format("[{}:{}] guide(x) with lines dt 2 lc rgb 'gray40' title 'n^3 guide'\n", *smallest, *largest);
   return script;
 }
 
@@ -135,7 +140,7 @@ BenchCommand::BenchCommand(CLI::App& app) {
 int BenchCommand::run() const {
   const ChartFiles files = chart_files(chart_.empty() ? common_.out_dir + "/bench-linear.svg" : chart_);
   const std::vector<BenchRow> rows = bench_linear(sizes_, quick_);
-  draw_chart(files, chart_data(rows, sizes_), chart_script(files, rows));
+  draw_chart(files, chart_data(rows, sizes_), chart_script(files, rows, sizes_));
 
   if (common_.format == Format::json) {
     nlohmann::ordered_json out = {{"benchmark", "linear"}, {"chart", files.chart}, {"rows", nlohmann::ordered_json::array()}};

@@ -15,12 +15,24 @@ namespace numlab::cli {
 
 namespace {
 
+// Runs `method` and prints its sweep table: every row when short, else the first and last rows.
 DynamicResult traced_sweeps(LabSession& session, const std::string& method, const Eigen::MatrixXd& A,
                             const Eigen::VectorXd& b, int max_sweeps) {
-  SweepTracer tracer(&session.out(), false);
+  constexpr std::size_t first_rows = 12, last_rows = 4;
+  SweepTracer tracer(nullptr, false);  // collects the rows
   LinearSettings settings;
   settings.max_iterations = max_sweeps;
   const DynamicResult result = run_linear_method(method, A, b, settings, {nullptr, &tracer});
+  const auto& rows = tracer.records();
+  session.out() << fmt::format("  {:>6}  {:>12}  {:>16}\n", "sweep", "||dx||_inf", "||b - A x||_inf");
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    if (rows.size() > first_rows + last_rows && k == first_rows) {
+      session.out() << fmt::format("  {:>6}  ({} more sweeps)\n", "...", rows.size() - first_rows - last_rows);
+      k = rows.size() - last_rows;
+    }
+    session.out() << fmt::format("  {:>6}  {:>12.4e}  {:>16.4e}\n", rows[k]["sweep"].get<int>(),
+                                 rows[k]["step_inf"].get<double>(), rows[k]["residual_inf"].get<double>());
+  }
   session.say(fmt::format("{}: {} after {} sweeps; ||b - A x||_inf = {:.3g}.", method, to_string(result.status),
                           result.iterations, result.residual_norm));
   return result;
@@ -69,6 +81,8 @@ int run_seidel_lab(LabSession& session) {
                    fmt::format("{} ({} sweeps)", to_string(plain.status), plain.iterations)});
   }
   session.show(table);
+  session.say("Each doubling of kappa roughly quadruples the sweeps: sweeps / kappa^2 settles near 1. Plain "
+              "Gauss-Seidel diverges on every one of these matrices, which are not diagonally dominant.");
 
   session.begin_step("Gauss-Seidel against GSL",
                      "A 100x100 diagonally dominant system (b = A * ones): plain Gauss-Seidel converges in a few "
