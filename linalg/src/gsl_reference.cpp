@@ -7,6 +7,7 @@
 #include <gsl/gsl_vector.h>
 
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -70,73 +71,73 @@ LinearResult<Eigen::Dynamic> finish(const Eigen::MatrixXd& A, const Eigen::Vecto
   return result;
 }
 
+// GSL objects freed by their own gsl_*_free when the owner goes.
+struct GslFree {
+  void operator()(gsl_matrix* matrix) const { gsl_matrix_free(matrix); }
+  void operator()(gsl_vector* vector) const { gsl_vector_free(vector); }
+  void operator()(gsl_permutation* permutation) const { gsl_permutation_free(permutation); }
+};
+template <typename GslType>
+using GslOwned = std::unique_ptr<GslType, GslFree>;
+
+// What LU and QR share: the matrix to factorize in place, the right-hand side and the solution.
+struct GslSystem {
+  explicit GslSystem(int n) : factors(gsl_matrix_alloc(n, n)), rhs(gsl_vector_alloc(n)), solution(gsl_vector_alloc(n)) {
+    disable_gsl_abort();
+  }
+
+  // Checks A x = b and copies it in.
+  void load(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const char* solver) {
+    require_valid_system(A, b);
+    require_size(A, factors->size1, solver);
+    copy_into(A, factors.get());
+    copy_into(b, rhs.get());
+  }
+
+  GslOwned<gsl_matrix> factors;
+  GslOwned<gsl_vector> rhs;
+  GslOwned<gsl_vector> solution;
+};
+
 }  // namespace
 
 struct GslLu::Workspace {
-  gsl_matrix* factors;
-  gsl_permutation* permutation;
-  gsl_vector* rhs;
-  gsl_vector* solution;
+  explicit Workspace(int n) : system(n), permutation(gsl_permutation_alloc(n)) {}
+  GslSystem system;
+  GslOwned<gsl_permutation> permutation;
 };
 
-GslLu::GslLu(int n) : workspace_(new Workspace) {
-  disable_gsl_abort();
-  workspace_->factors = gsl_matrix_alloc(n, n);
-  workspace_->permutation = gsl_permutation_alloc(n);
-  workspace_->rhs = gsl_vector_alloc(n);
-  workspace_->solution = gsl_vector_alloc(n);
-}
-
-GslLu::~GslLu() {
-  gsl_matrix_free(workspace_->factors);
-  gsl_permutation_free(workspace_->permutation);
-  gsl_vector_free(workspace_->rhs);
-  gsl_vector_free(workspace_->solution);
-}
+GslLu::GslLu(int n) : workspace_(std::make_unique<Workspace>(n)) {}
+GslLu::~GslLu() = default;
 
 LinearResult<Eigen::Dynamic> GslLu::solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
-  require_valid_system(A, b);
-  require_size(A, workspace_->factors->size1, "GSL LU");
-  copy_into(A, workspace_->factors);
-  copy_into(b, workspace_->rhs);
+  GslSystem& system = workspace_->system;
+  system.load(A, b, "GSL LU");
   int sign = 0;
-  gsl_linalg_LU_decomp(workspace_->factors, workspace_->permutation, &sign);
-  const bool singular = has_zero_diagonal(workspace_->factors);
-  if (!singular) gsl_linalg_LU_solve(workspace_->factors, workspace_->permutation, workspace_->rhs, workspace_->solution);
-  return finish(A, b, workspace_->solution, singular);
+  gsl_linalg_LU_decomp(system.factors.get(), workspace_->permutation.get(), &sign);
+  const bool singular = has_zero_diagonal(system.factors.get());
+  if (!singular) {
+    gsl_linalg_LU_solve(system.factors.get(), workspace_->permutation.get(), system.rhs.get(), system.solution.get());
+  }
+  return finish(A, b, system.solution.get(), singular);
 }
 
 struct GslQr::Workspace {
-  gsl_matrix* factors;
-  gsl_vector* tau;
-  gsl_vector* rhs;
-  gsl_vector* solution;
+  explicit Workspace(int n) : system(n), tau(gsl_vector_alloc(n)) {}
+  GslSystem system;
+  GslOwned<gsl_vector> tau;
 };
 
-GslQr::GslQr(int n) : workspace_(new Workspace) {
-  disable_gsl_abort();
-  workspace_->factors = gsl_matrix_alloc(n, n);
-  workspace_->tau = gsl_vector_alloc(n);
-  workspace_->rhs = gsl_vector_alloc(n);
-  workspace_->solution = gsl_vector_alloc(n);
-}
-
-GslQr::~GslQr() {
-  gsl_matrix_free(workspace_->factors);
-  gsl_vector_free(workspace_->tau);
-  gsl_vector_free(workspace_->rhs);
-  gsl_vector_free(workspace_->solution);
-}
+GslQr::GslQr(int n) : workspace_(std::make_unique<Workspace>(n)) {}
+GslQr::~GslQr() = default;
 
 LinearResult<Eigen::Dynamic> GslQr::solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
-  require_valid_system(A, b);
-  require_size(A, workspace_->factors->size1, "GSL QR");
-  copy_into(A, workspace_->factors);
-  copy_into(b, workspace_->rhs);
-  gsl_linalg_QR_decomp(workspace_->factors, workspace_->tau);
-  const bool singular = has_zero_diagonal(workspace_->factors);
-  if (!singular) gsl_linalg_QR_solve(workspace_->factors, workspace_->tau, workspace_->rhs, workspace_->solution);
-  return finish(A, b, workspace_->solution, singular);
+  GslSystem& system = workspace_->system;
+  system.load(A, b, "GSL QR");
+  gsl_linalg_QR_decomp(system.factors.get(), workspace_->tau.get());
+  const bool singular = has_zero_diagonal(system.factors.get());
+  if (!singular) gsl_linalg_QR_solve(system.factors.get(), workspace_->tau.get(), system.rhs.get(), system.solution.get());
+  return finish(A, b, system.solution.get(), singular);
 }
 
 LinearResult<Eigen::Dynamic> gsl_lu_solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
