@@ -33,9 +33,12 @@ void LabSession::say(const std::string& paragraph) {
   out_ << '\n';
 }
 
-void LabSession::show(const Table& table) {
+void LabSession::show(const Table& table, const std::string& name) {
   table.print(out_);
-  out_ << '\n';
+  ensure_directory(folder_);
+  const std::string path = fmt::format("{}/step{}-{}.csv", folder_, step_number_, name);
+  write_file_atomically(path, table.csv());
+  out_ << "  (table saved as " << path << ")\n\n";
 }
 
 const std::vector<Lab>& all_labs() {

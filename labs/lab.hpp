@@ -1,6 +1,6 @@
 #pragma once
 // The frame every lab shares: numbered, explained steps (pausing between them with --step),
-// tables, and the closing comparison of hand-written methods with GSL.
+// tables (printed, and saved as CSV files), and the closing comparison of hand-written methods with GSL.
 
 #include <Eigen/Core>
 #include <ostream>
@@ -13,23 +13,24 @@ namespace numlab::cli {
 
 class LabSession {
  public:
-  LabSession(std::ostream& out, bool step, std::string out_dir)
-      : out_(out), step_(step), out_dir_(std::move(out_dir)) {}
+  // Tables are also saved as CSV files in `folder` (created on first use).
+  LabSession(std::ostream& out, bool step, std::string folder) : out_(out), step_(step), folder_(std::move(folder)) {}
 
   // Starts the next step: pauses first (with --step, after step 1), then prints its title and explanation.
   void begin_step(const std::string& title, const std::string& explanation);
   // A paragraph, wrapped to 96 columns and indented.
   void say(const std::string& paragraph);
-  void show(const Table& table);
+  // Prints the table and saves it as FOLDER/stepK-NAME.csv.
+  void show(const Table& table, const std::string& name);
 
   std::ostream& out() { return out_; }
-  const std::string& out_dir() const { return out_dir_; }
+  const std::string& folder() const { return folder_; }
   int steps_taken() const { return step_number_; }
 
  private:
   std::ostream& out_;
   bool step_;
-  std::string out_dir_;
+  std::string folder_;
   int step_number_ = 0;
 };
 

@@ -63,7 +63,7 @@ void show_a_tiny_pivot(LabSession& session) {
                    fmt::format("{:.12g}", pivoted.x(0)), scientific(linalg::forward_error(pivoted.x, exact)),
                    scientific(pivoted.growth_factor)});
   }
-  session.show(table);
+  session.show(table, "tiny-pivot");
 }
 
 void show_wilkinson_growth(LabSession& session) {
@@ -82,7 +82,7 @@ void show_wilkinson_growth(LabSession& session) {
     table.add_row({std::to_string(n), scientific(gepp.growth_factor), scientific(std::ldexp(1.0, n - 1)),
                    scientific(gepp_error), digits(gepp_error), digits(lu_error), digits(qr_error)});
   }
-  session.show(table);
+  session.show(table, "wilkinson-growth");
   session.say("From n = 55 GEPP (and GSL's LU, which pivots the same way) returns 0 where x_(n-1) should be 1: a "
               "relative error of 1, no correct digit, while the status is still 'converged' because no pivot was "
               "small. numlab solve linear reports the growth factor and prints a warning for exactly this case.");
@@ -107,7 +107,7 @@ void show_hilbert_conditioning(LabSession& session) {
                    solved ? scientific(linalg::forward_error(gepp.x, system.exact_solution)) : "-",
                    scientific(linalg::forward_error(lu.x, system.exact_solution))});
   }
-  session.show(table);
+  session.show(table, "hilbert");
 }
 
 }  // namespace
@@ -122,7 +122,7 @@ int run_gauss_lab(LabSession& session) {
                      "A random 200x200 system (entries uniform in [-1, 1], b = A * ones). All three LU "
                      "factorizations pivot the same way and agree to rounding; QR costs about twice as much.");
   const linalg::GeneratedSystem system = linalg::generate_system("random", 200);
-  session.show(linear_comparison_table(system.A, system.b, system.exact_solution, {"gepp", "gsl-lu", "gsl-qr", "eigen-lu"}));
+  session.show(linear_comparison_table(system.A, system.b, system.exact_solution, {"gepp", "gsl-lu", "gsl-qr", "eigen-lu"}), "comparison");
   return 0;
 }
 

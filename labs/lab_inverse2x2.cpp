@@ -44,7 +44,7 @@ int run_inverse2x2_lab(LabSession& session) {
     scale.add_row({name, scientific(result.determinant), scientific(result.condition_number),
                    std::string(to_string(result.status))});
   }
-  session.show(scale);
+  session.show(scale, "scale");
   session.say("The determinants of the two scaled matrices are -6e-400 and -6e+400: they underflow to -0 and "
               "overflow to -inf in double precision. numlab therefore first scales A by a power of two (exact) "
               "and tests the determinant of the scaled matrix, which is why both still solve correctly.");
@@ -73,7 +73,7 @@ int run_inverse2x2_lab(LabSession& session) {
     nearly.add_row({scientific(d), scientific(inverse.condition_number), std::string(to_string(closed_form.status)),
                     closed_error, closed_residual, std::string(to_string(lu.status)), lu_error, lu_residual});
   }
-  session.show(nearly);
+  session.show(nearly, "nearly-singular");
   session.say("The residual columns show why they differ. LU with partial pivoting is backward stable: its "
               "relative residual stays at rounding level for every d, and here its one elimination, row 2 - "
               "row 1, even subtracts nearly equal numbers exactly, so it keeps every digit. Solving through an "
@@ -85,7 +85,7 @@ int run_inverse2x2_lab(LabSession& session) {
                      "A = [4 3; 6 3], b = A * (1, 1). Both are exact to rounding here; the closed form needs no "
                      "pivoting, workspace or loop, which is why seed 003 uses it inside every Newton iteration.");
   const Eigen::Vector2d exact(1, 1);
-  session.show(linear_comparison_table(A, A * exact, exact, {"inverse2x2", "gepp", "gsl-lu", "eigen-lu"}));
+  session.show(linear_comparison_table(A, A * exact, exact, {"inverse2x2", "gepp", "gsl-lu", "eigen-lu"}), "comparison");
   return 0;
 }
 

@@ -80,7 +80,7 @@ int run_seidel_lab(LabSession& session) {
                    fixed(normal.iterations / (kappa * kappa), 2), scientific(linalg::forward_error(normal.x, exact)),
                    fmt::format("{} ({} sweeps)", to_string(plain.status), plain.iterations)});
   }
-  session.show(table);
+  session.show(table, "sweeps-vs-kappa");
   session.say("Each doubling of kappa roughly quadruples the sweeps: sweeps / kappa^2 settles near 1. Plain "
               "Gauss-Seidel diverges on every one of these matrices, which are not diagonally dominant.");
 
@@ -90,7 +90,7 @@ int run_seidel_lab(LabSession& session) {
                      "solvers need no iteration at all.");
   const linalg::GeneratedSystem system = linalg::generate_system("diag-dominant", 100);
   session.show(linear_comparison_table(system.A, system.b, system.exact_solution,
-                                       {"gauss-seidel", "gauss-seidel-plain", "gepp", "gsl-lu"}));
+                                       {"gauss-seidel", "gauss-seidel-plain", "gepp", "gsl-lu"}), "comparison");
   return 0;
 }
 

@@ -37,7 +37,7 @@ int run_lab(const std::string& name, bool step, const std::string& out_dir) {
     if (lab.name != name) continue;
     std::cout << fmt::format("numlab lab {}: {}\n", lab.name, lab.summary);
     if (step) std::cout << "(--step: press Enter after each step)\n";
-    LabSession session(std::cout, step, out_dir);
+    LabSession session(std::cout, step, out_dir + "/lab-" + lab.name);
     return lab.run(session);
   }
   throw std::invalid_argument("unknown lab '" + name + "' (see numlab labs)");

@@ -31,6 +31,32 @@ void Table::print(std::ostream& out) const {
   for (const auto& row : rows_) print_row(row);
 }
 
+std::string Table::csv() const {
+  auto append_cell = [](std::string& text, const std::string& cell) {
+    if (cell.find_first_of(",\"") == std::string::npos) {
+      text += cell;
+      return;
+    }
+    text += '"';
+    for (char c : cell) {
+      if (c == '"') text += '"';  // a quote inside a quoted cell is doubled
+      text += c;
+    }
+    text += '"';
+  };
+  auto append_line = [&](std::string& text, const std::vector<std::string>& row) {
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      if (j > 0) text += ',';
+      append_cell(text, row[j]);
+    }
+    text += '\n';
+  };
+  std::string text;
+  append_line(text, header_);
+  for (const auto& row : rows_) append_line(text, row);
+  return text;
+}
+
 std::string scientific(double value) {
   if (std::isnan(value)) return "-";
   return fmt::format("{:.3g}", value);

@@ -12,6 +12,8 @@ class Table {
   explicit Table(std::vector<std::string> header) : header_(std::move(header)) {}
   void add_row(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
   void print(std::ostream& out) const;
+  // The same cells as CSV (header line, then rows; cells with commas or quotes are quoted).
+  std::string csv() const;
 
  private:
   std::vector<std::string> header_;

@@ -1,7 +1,10 @@
 // `numlab labs`, `numlab lab NAME --step` (non-interactive), `numlab bench linear`, and the main job.
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <vector>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -19,10 +22,27 @@ TEST_CASE("numlab labs lists the labs", "[cli][labs]") {
 
 TEST_CASE("Each lab runs its steps with --step without blocking, and ends with the GSL comparison", "[cli][labs]") {
   for (const std::string lab : {"gauss", "seidel", "inverse2x2"}) {
-    const auto run = run_numlab("lab " + lab + " --step");
+    const std::string folder = temporary_folder();
+    const auto run = run_numlab("lab " + lab + " --step --out " + folder);
     INFO(lab << "\n" << run.err);
     CHECK(run.exit_code == 0);
     CHECK_THAT(run.out, Contains("Step 1:") && Contains("Step 3:") && Contains("gsl-lu") && Contains("forward error"));
+    // Every table is also saved as CSV; the last one is the comparison with GSL.
+    std::vector<std::string> saved;
+    for (const auto& entry : std::filesystem::directory_iterator(folder + "/lab-" + lab)) {
+      saved.push_back(entry.path().filename().string());
+    }
+    CHECK(saved.size() >= 2);
+    const auto comparison = std::find_if(saved.begin(), saved.end(), [](const std::string& name) {
+      return name.ends_with("-comparison.csv");
+    });
+    REQUIRE(comparison != saved.end());
+    std::ifstream csv(folder + "/lab-" + lab + "/" + *comparison);
+    std::string header;
+    std::getline(csv, header);
+    CHECK(header == "method,status,x_1,x_n,relative residual,forward error,time (median)");
+    CHECK_THAT(run.out, Contains("(table saved as " + folder + "/lab-" + lab + "/"));
+    std::filesystem::remove_all(folder);
   }
   const auto gauss = run_numlab("lab gauss");
   CHECK_THAT(gauss.out, Contains("Wilkinson") && Contains("5.76e+17"));
