@@ -60,7 +60,10 @@ int run_seidel_lab(LabSession& session) {
   traced_sweeps(session, "gauss-seidel-plain", diverging.A, diverging.b, 100);
   session.say("The same system through the normal equations A^T A x = A^T b, as seed 001 does: A^T A is "
               "symmetric positive definite, and Gauss-Seidel always converges on such a matrix.");
-  traced_sweeps(session, "gauss-seidel", diverging.A, diverging.b, 1000);
+  const DynamicResult normal = traced_sweeps(session, "gauss-seidel", diverging.A, diverging.b, 1000);
+  session.say(fmt::format("A small step is not a small error: the last step was {:.2g}, but the error is {:.2g}. "
+                          "When each sweep shrinks the error only slightly, the error is many steps long.",
+                          normal.step_norm, linalg::forward_error(normal.x, diverging.exact_solution)));
 
   session.begin_step("The price: sweeps grow with kappa(A)^2",
                      "kappa(A^T A) = kappa(A)^2, and the convergence rate of Gauss-Seidel on a symmetric positive "

@@ -113,6 +113,87 @@ std::string vector_text(const Eigen::VectorXd& x) {
   return text;
 }
 
+// Everything the three output formats print about one solve.
+struct SolveReport {
+  std::string method;
+  const LoadedSystem& system;
+  const DynamicResult& result;
+  double time_s;
+  bool has_answer;          // x is finite
+  bool iterative;           // Gauss-Seidel
+  double relative_residual; // NaN without an answer
+  double forward_error;     // NaN without an answer or a known exact solution
+  double condition;
+  std::string warning;
+};
+
+SolveReport measure(const std::string& method, const LoadedSystem& system, const DynamicResult& result, double time_s) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  const bool has_answer = result.x.allFinite();
+  const double condition = linalg::condition_estimate(system.A);
+  return {method,
+          system,
+          result,
+          time_s,
+          has_answer,
+          method.starts_with("gauss-seidel"),
+          has_answer ? linalg::relative_residual(system.A, system.b, result.x) : nan,
+          has_answer && system.exact_solution ? linalg::forward_error(result.x, *system.exact_solution) : nan,
+          condition,
+          warning_for(result, condition)};
+}
+
+nlohmann::ordered_json json_report(const SolveReport& report) {
+  nlohmann::ordered_json out = {
+      {"method", report.method},
+      {"n", report.system.A.rows()},
+      {"x", nlohmann::ordered_json::array()},
+      {"status", std::string(to_string(report.result.status))},
+      {"iterations", report.result.iterations},
+      {"relative_residual", number_or_null(report.relative_residual)},
+      {"condition_estimate", number_or_null(report.condition)},
+      {"time_s", report.time_s},
+      {"warning", report.warning.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(report.warning)}};
+  for (double value : report.result.x) out["x"].push_back(number_or_null(value));
+  if (report.system.exact_solution) out["forward_error"] = number_or_null(report.forward_error);
+  if (report.method.starts_with("gepp")) out["growth_factor"] = number_or_null(report.result.growth_factor);
+  if (report.iterative) out["step_inf"] = number_or_null(report.result.step_norm);
+  return out;
+}
+
+void print_csv_report(std::ostream& out, const SolveReport& report) {
+  out << "method,n,status,iterations,relative_residual,forward_error,growth_factor,condition_estimate,time_s";
+  for (Eigen::Index i = 0; i < report.result.x.size(); ++i) out << ",x" << i + 1;
+  out << '\n'
+      << fmt::format("{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", report.method, report.system.A.rows(),
+                     to_string(report.result.status), report.result.iterations, report.relative_residual,
+                     report.forward_error, report.result.growth_factor, report.condition, report.time_s);
+  for (double value : report.result.x) out << fmt::format(",{:.17g}", value);
+  out << '\n';
+}
+
+void print_text_report(std::ostream& out, const SolveReport& report) {
+  const DynamicResult& result = report.result;
+  const char* counted = report.iterative ? " sweeps" : (report.method.starts_with("gepp") ? " pivot columns" : "");
+  out << fmt::format("method             {} - {}\n", report.method, describe_linear_method(report.method))
+      << fmt::format("system             {}\n", report.system.description)
+      << fmt::format("status             {}\n", to_string(result.status));
+  if (report.has_answer) {
+    out << fmt::format("x                  {}\n", vector_text(result.x));
+  } else {
+    out << "x                  (none: the method did not produce a solution)\n";
+  }
+  out << fmt::format("iterations         {}{}\n", result.iterations, counted);
+  if (report.has_answer) {
+    out << fmt::format("relative residual  {:.3g}   (||b - A x|| / (||A|| ||x||))\n", report.relative_residual);
+  }
+  if (std::isfinite(report.forward_error)) out << fmt::format("forward error      {:.3g}\n", report.forward_error);
+  if (std::isfinite(result.growth_factor)) out << fmt::format("growth factor      {:.4g}\n", result.growth_factor);
+  out << fmt::format("condition estimate {:.3g}   (1-norm)\n", report.condition)
+      << fmt::format("time               {:.3g} s\n", report.time_s);
+  if (!report.warning.empty()) out << "WARNING            " << report.warning << '\n';
+}
+
 }  // namespace
 
 SolveLinearCommand::SolveLinearCommand(CLI::App& solve) {
@@ -134,8 +215,8 @@ int SolveLinearCommand::run() const {
   if (generate_.empty() && matrix_file_.empty()) throw std::invalid_argument("give --generate KIND:N or --matrix FILE");
   const LoadedSystem system = generate_.empty() ? file_system(matrix_file_, rhs_file_) : generated_system(generate_, seed_);
 
-  const bool text = common_.format == Format::text;
-  std::ostream* trace_stream = common_.trace && text ? &std::cerr : nullptr;
+  // Text traces go to stderr as the solve runs; JSON traces are collected for the "trace" array.
+  std::ostream* trace_stream = common_.trace && common_.format == Format::text ? &std::cerr : nullptr;
   EliminationTracer elimination_tracer(trace_stream, common_.step);
   SweepTracer sweep_tracer(trace_stream, common_.step);
   LinearTracers tracers;
@@ -146,55 +227,15 @@ int SolveLinearCommand::run() const {
   const DynamicResult result = run_linear_method(method_, system.A, system.b, settings, tracers);
   const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 
-  const bool has_answer = result.x.allFinite();
-  const double relative_residual =
-      has_answer ? linalg::relative_residual(system.A, system.b, result.x) : std::numeric_limits<double>::quiet_NaN();
-  const double forward_error = has_answer && system.exact_solution
-                                   ? linalg::forward_error(result.x, *system.exact_solution)
-                                   : std::numeric_limits<double>::quiet_NaN();
-  const double condition = linalg::condition_estimate(system.A);
-  const std::string warning = warning_for(result, condition);
-  const bool iterative = method_.starts_with("gauss-seidel");
-
+  const SolveReport report = measure(method_, system, result, time_s);
   if (common_.format == Format::json) {
-    nlohmann::ordered_json out = {{"method", method_},
-                          {"n", system.A.rows()},
-                          {"x", nlohmann::ordered_json::array()},
-                          {"status", std::string(to_string(result.status))},
-                          {"iterations", result.iterations},
-                          {"relative_residual", number_or_null(relative_residual)},
-                          {"condition_estimate", number_or_null(condition)},
-                          {"time_s", time_s},
-                          {"warning", warning.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(warning)}};
-    for (double value : result.x) out["x"].push_back(number_or_null(value));
-    if (system.exact_solution) out["forward_error"] = number_or_null(forward_error);
-    if (method_.starts_with("gepp")) out["growth_factor"] = number_or_null(result.growth_factor);
-    if (iterative) out["step_inf"] = number_or_null(result.step_norm);
-    if (common_.trace) out["trace"] = iterative ? sweep_tracer.records() : elimination_tracer.records();
+    nlohmann::ordered_json out = json_report(report);
+    if (common_.trace) out["trace"] = report.iterative ? sweep_tracer.records() : elimination_tracer.records();
     std::cout << out.dump(2) << '\n';
   } else if (common_.format == Format::csv) {
-    std::cout << "method,n,status,iterations,relative_residual,forward_error,growth_factor,condition_estimate,time_s";
-    for (Eigen::Index i = 0; i < result.x.size(); ++i) std::cout << ",x" << i + 1;
-    std::cout << '\n'
-              << fmt::format("{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", method_, system.A.rows(),
-                             to_string(result.status), result.iterations, relative_residual, forward_error,
-                             result.growth_factor, condition, time_s);
-    for (double value : result.x) std::cout << fmt::format(",{:.17g}", value);
-    std::cout << '\n';
+    print_csv_report(std::cout, report);
   } else {
-    std::cout << fmt::format("method             {} - {}\n", method_, describe_linear_method(method_))
-              << fmt::format("system             {}\n", system.description)
-              << fmt::format("status             {}\n", to_string(result.status));
-    if (has_answer) std::cout << fmt::format("x                  {}\n", vector_text(result.x));
-    else std::cout << "x                  (none: the method did not produce a solution)\n";
-    std::cout << fmt::format("iterations         {}{}\n", result.iterations,
-                             iterative ? " sweeps" : (method_.starts_with("gepp") ? " pivot columns" : ""));
-    if (has_answer) std::cout << fmt::format("relative residual  {:.3g}   (||b - A x|| / (||A|| ||x||))\n", relative_residual);
-    if (has_answer && system.exact_solution) std::cout << fmt::format("forward error      {:.3g}\n", forward_error);
-    if (std::isfinite(result.growth_factor)) std::cout << fmt::format("growth factor      {:.4g}\n", result.growth_factor);
-    std::cout << fmt::format("condition estimate {:.3g}   (1-norm)\n", condition)
-              << fmt::format("time               {:.3g} s\n", time_s);
-    if (!warning.empty()) std::cout << "WARNING            " << warning << '\n';
+    print_text_report(std::cout, report);
   }
   return exit_code_for(result.status);
 }
