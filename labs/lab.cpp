@@ -49,6 +49,8 @@ const std::vector<Lab>& all_labs() {
        run_seidel_lab},
       {"inverse2x2", "The 2x2 closed-form inverse: the determinant judged by scale, and a nearly singular 2x2",
        run_inverse2x2_lab},
+      {"newton", "Newton-Raphson against GSL's eight multiroot types: quadratic convergence, Jacobian checks, failures",
+       run_newton_lab},
   };
   return labs;
 }

@@ -50,5 +50,6 @@ Table linear_comparison_table(const Eigen::MatrixXd& A, const Eigen::VectorXd& b
 int run_gauss_lab(LabSession& session);
 int run_seidel_lab(LabSession& session);
 int run_inverse2x2_lab(LabSession& session);
+int run_newton_lab(LabSession& session);
 
 }  // namespace numlab::cli

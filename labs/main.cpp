@@ -9,6 +9,7 @@
 #include "cli_common.hpp"
 #include "labs_command.hpp"
 #include "solve_linear.hpp"
+#include "solve_nonlinear.hpp"
 
 namespace {
 
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   CLI::App* solve = app.add_subcommand("solve", "Solve one problem with one method");
   solve->require_subcommand(0, 1);
   const SolveLinearCommand solve_linear(*solve);
+  const SolveNonlinearCommand solve_nonlinear(*solve);
   const LabsCommand labs(app);
   const BenchCommand bench(app);
 
@@ -44,6 +46,7 @@ int main(int argc, char** argv) {
 
   try {
     if (solve_linear.selected()) return solve_linear.run();
+    if (solve_nonlinear.selected()) return solve_nonlinear.run();
     if (solve->parsed()) throw std::invalid_argument("solve: say what to solve, e.g. numlab solve linear --help");
     if (labs.list_selected()) return labs.list();
     if (labs.lab_selected()) return labs.run();

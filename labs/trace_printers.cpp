@@ -82,4 +82,33 @@ void SweepTracer::on_sweep(const linalg::GaussSeidel<Eigen::Dynamic>&, const lin
   pause_if_stepping(step_);
 }
 
+void NewtonTracer::on_iteration(const nonlinear::NewtonRecord& record) {
+  const bool has_linear_solve = record.linear_iterations != nonlinear::NewtonRecord::no_linear_solve;
+  if (text_out_ == nullptr) {
+    nlohmann::ordered_json entry = {{"iteration", record.iteration},
+                                    {"residual_inf", record.residual_inf},
+                                    {"residual_2", record.residual_2},
+                                    {"step_inf", record.step_inf}};
+    if (has_linear_solve) {
+      entry["linear_status"] = std::string(to_string(record.linear_status));
+      entry["linear_iterations"] = record.linear_iterations;
+    }
+    entry["damping"] = record.damping;
+    entry["time_s"] = record.elapsed_s;
+    records_.push_back(entry);
+    return;
+  }
+  if (!header_printed_) {
+    *text_out_ << fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>6}  {:>7}  {:>10}\n", "k", "||f||_inf",
+                              "||f||_2", "||dx||_inf", "linear solve", "sweeps", "lambda", "time (s)");
+    header_printed_ = true;
+  }
+  *text_out_ << fmt::format("  {:>4}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>14}  {:>6}  {:>7.4g}  {:>10.3e}\n",
+                            record.iteration, record.residual_inf, record.residual_2, record.step_inf,
+                            has_linear_solve ? std::string(to_string(record.linear_status)) : "-",
+                            has_linear_solve ? std::to_string(record.linear_iterations) : "-", record.damping,
+                            record.elapsed_s);
+  pause_if_stepping(step_);
+}
+
 }  // namespace numlab::cli

@@ -7,6 +7,7 @@
 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
+#include "numlab/nonlinear/newton.hpp"
 
 namespace numlab::cli {
 
@@ -33,6 +34,21 @@ class SweepTracer : public linalg::GaussSeidelObserver<Eigen::Dynamic> {
  public:
   SweepTracer(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
   void on_sweep(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) override;
+  const nlohmann::ordered_json& records() const { return records_; }
+
+ private:
+  std::ostream* text_out_;
+  bool step_;
+  bool header_printed_ = false;
+  nlohmann::ordered_json records_ = nlohmann::ordered_json::array();
+};
+
+// One row per Newton iteration: k, ||f||_inf, ||f||_2, ||dx||_inf, the inner linear solve's status
+// and sweep count, the damping factor and the time since the start.
+class NewtonTracer : public nonlinear::NewtonObserver<Eigen::Dynamic> {
+ public:
+  NewtonTracer(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
+  void on_iteration(const nonlinear::NewtonRecord& record) override;
   const nlohmann::ordered_json& records() const { return records_; }
 
  private:

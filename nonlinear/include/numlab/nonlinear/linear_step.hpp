@@ -1,0 +1,65 @@
+#pragma once
+// The inner linear solve of Newton's method, J dx = -f, by any numlab linear method.
+//
+// A LinearStep<N> policy has
+//   linalg::LinearResult<N> solve(const Matrix<N>& J, const Vector<N>& rhs);
+// GEPP, Gauss-Seidel (normal equations), Eigen LU and, for N = 2, the closed form already have it.
+// GSL LU needs a dynamic matrix, so fixed sizes go through GslLuStep's copy.
+// RuntimeLinearStep picks one of them by name, for the command line.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "numlab/linalg/eigen_reference.hpp"
+#include "numlab/linalg/gauss_elimination.hpp"
+#include "numlab/linalg/gauss_seidel.hpp"
+#include "numlab/linalg/gsl_reference.hpp"
+#include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/nonlinear/system.hpp"
+
+namespace numlab::nonlinear {
+
+// GSL LU for any N (a fixed-size J is copied into GSL's dynamic workspace).
+template <int N>
+class GslLuStep {
+ public:
+  linalg::LinearResult<N> solve(const Matrix<N>& J, const Vector<N>& rhs) {
+    if (!lu_ || size_ != J.rows()) {
+      size_ = static_cast<int>(J.rows());
+      lu_ = std::make_unique<linalg::GslLu>(size_);
+    }
+    const linalg::LinearResult<Eigen::Dynamic> dynamic = lu_->solve(J, rhs);
+    linalg::LinearResult<N> result;
+    result.x = dynamic.x;
+    result.status = dynamic.status;
+    result.iterations = dynamic.iterations;
+    result.residual_norm = dynamic.residual_norm;
+    return result;
+  }
+
+ private:
+  int size_ = 0;
+  std::unique_ptr<linalg::GslLu> lu_;
+};
+
+// The linear methods Newton can use by name: gepp, gauss-seidel, gsl-lu, eigen-lu, inverse2x2 (n = 2).
+const std::vector<std::string>& newton_linear_methods();
+
+// One of the linear methods, chosen at run time (dynamic sizes only).
+class RuntimeLinearStep {
+ public:
+  // Throws std::invalid_argument for an unknown name, or inverse2x2 when n != 2.
+  RuntimeLinearStep(const std::string& method, int n, linalg::GaussSeidelOptions gauss_seidel = {});
+  linalg::LinearResult<Eigen::Dynamic> solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& rhs);
+  const std::string& method() const { return method_; }
+
+ private:
+  std::string method_;
+  linalg::GaussElimination<Eigen::Dynamic> gepp_;
+  linalg::GaussSeidel<Eigen::Dynamic> gauss_seidel_;
+  linalg::EigenLu<Eigen::Dynamic> eigen_lu_;
+  GslLuStep<Eigen::Dynamic> gsl_lu_;
+};
+
+}  // namespace numlab::nonlinear

@@ -1,0 +1,260 @@
+#pragma once
+// Full Newton-Raphson (seed 000 Listing 1, seed 001 jansen_estimate), with any linear solver:
+//
+//   repeat:  solve J(x) dx = -f(x)      (GEPP, Gauss-Seidel, GSL LU, Eigen LU, 2x2 closed form)
+//            x <- x + lambda dx         (lambda = 1; with damping, halved until ||f||^2 decreases)
+//   until    ||f(x)||_inf <= residual_tolerance            -> converged (residual test)
+//         or ||dx||_inf <= step_tolerance (1 + ||x||_inf)  -> converged (step test)
+//
+// Other endings, each a status with the numbers behind it: max_iterations; singular (the linear
+// solve found J singular); non_finite (f, J or x stopped being finite); diverged (||f||_inf grew
+// past divergence_factor times its start); no_progress (damping could not decrease ||f||).
+//
+// One step() is one iteration. Fixed sizes allocate nothing on the heap, in start() or step().
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "numlab/linalg/gauss_elimination.hpp"
+#include "numlab/linalg/input_checks.hpp"
+#include "numlab/nonlinear/system.hpp"
+
+namespace numlab::nonlinear {
+
+struct NewtonOptions {
+  double residual_tolerance = 1e-9;  // seed 001's accuracy (seed 000 used 1e-5)
+  double step_tolerance = 1e-12;     // relative: ||dx|| <= tol (1 + ||x||)
+  int max_iterations = 20;           // seed 001's limit (seed 000 used 10)
+  bool damped = false;               // backtracking on ||f||^2, off by default
+  int max_halvings = 30;             // damping gives up (no_progress) after this many
+  double divergence_factor = 1e12;   // diverged when ||f|| > factor * max(||f(x0)||, 1)
+};
+
+// Why the iteration stopped.
+enum class StopReason { running, residual_small, step_small, iteration_limit, singular_jacobian, non_finite, diverged, no_descent };
+
+// The bookkeeping of a Newton run: everything in its result but x.
+struct NewtonCounts {
+  Status status = Status::max_iterations;
+  StopReason reason = StopReason::running;
+  int iterations = 0;
+  double residual_norm = std::numeric_limits<double>::quiet_NaN();  // ||f(x)||_inf at the end
+  double step_norm = std::numeric_limits<double>::quiet_NaN();      // ||dx||_inf of the last step
+  int function_evaluations = 0;
+  int jacobian_evaluations = 0;
+};
+
+template <int N>
+struct NewtonResult : NewtonCounts {
+  Vector<N> x = Vector<N>::Zero(N == Eigen::Dynamic ? 0 : N);
+};
+
+// One row of the trace, sent after every iteration.
+struct NewtonRecord {
+  static constexpr int no_linear_solve = -1;  // linear_iterations of a method without one (GSL's)
+  int iteration;
+  double residual_inf;    // ||f||_inf after the step
+  double residual_2;      // ||f||_2 after the step
+  double step_inf;        // ||lambda dx||_inf
+  Status linear_status;   // of the inner solve J dx = -f
+  int linear_iterations;  // sweeps, for Gauss-Seidel
+  double damping;         // lambda (1 unless damped)
+  double elapsed_s;       // since start()
+};
+
+template <int N>
+class NewtonObserver {
+ public:
+  virtual ~NewtonObserver() = default;
+  virtual void on_iteration(const NewtonRecord& record) = 0;
+};
+
+// "Termination: CONVERGED (||f||_inf = 3e-13 <= 1e-09 after 5 iterations)" and the like.
+template <int N>
+std::string termination_line(const NewtonResult<N>& result, const NewtonOptions& options);
+
+template <NonlinearSystem S, typename LinearStep = linalg::GaussElimination<S::size>>
+class Newton {
+ public:
+  static constexpr int N = S::size;
+
+  explicit Newton(const S& system, NewtonOptions options = {}, LinearStep linear_step = {})
+      : system_(system), options_(options), linear_step_(std::move(linear_step)) {
+    linalg::require_non_negative(options_.residual_tolerance, "residual tolerance");
+    linalg::require_non_negative(options_.step_tolerance, "step tolerance");
+    if (options_.max_iterations < 1) {
+      throw std::invalid_argument("iteration limit must be at least 1, got " + std::to_string(options_.max_iterations));
+    }
+  }
+
+  void set_observer(NewtonObserver<N>* observer) { observer_ = observer; }
+
+  // Sets x = x0 and evaluates f(x0). Throws std::invalid_argument for a wrong size or non-finite x0.
+  void start(const Vector<N>& x0) {
+    const int n = system_.dimension();
+    if (x0.size() != n) {
+      throw std::invalid_argument("starting point has " + std::to_string(x0.size()) + " entries but the system has " +
+                                  std::to_string(n) + " unknowns");
+    }
+    linalg::require_finite(x0, "starting point");
+    x_ = x0;
+    f_.resize(n);
+    J_.resize(n, n);
+    dx_.setZero(n);
+    trial_x_.resize(n);
+    trial_f_.resize(n);
+    result_ = NewtonCounts{};
+    jacobian_fresh_ = false;
+    started_at_ = std::chrono::steady_clock::now();
+    evaluate_at(x_, f_);
+    residual_at_start_ = f_.template lpNorm<Eigen::Infinity>();
+    running_ = true;
+    if (!f_.allFinite()) {
+      finish(Status::non_finite, StopReason::non_finite);
+    } else if (residual_at_start_ <= options_.residual_tolerance) {
+      finish(Status::converged, StopReason::residual_small);
+    }
+  }
+
+  // One Newton iteration. Returns false once the iteration has ended.
+  bool step() {
+    if (!running_) return false;
+    ++result_.iterations;
+
+    // 1. The Jacobian at x (already there when the system evaluates f and J together).
+    if (!jacobian_fresh_) {
+      system_.jacobian(x_, J_);
+      ++result_.jacobian_evaluations;
+    }
+    if (!J_.allFinite()) return finish(Status::non_finite, StopReason::non_finite);
+
+    // 2. The Newton step: solve J dx = -f.
+    const auto linear = linear_step_.solve(J_, -f_);
+    if (linear.status == Status::singular) return finish(Status::singular, StopReason::singular_jacobian);
+    if (linear.status == Status::non_finite || linear.status == Status::diverged || !linear.x.allFinite()) {
+      return finish(Status::non_finite, StopReason::non_finite);
+    }
+    dx_ = linear.x;  // an iterative inner solve that hit its limit still gives a usable (inexact) step
+
+    // 3. Move: the full step, or with damping the largest of 1, 1/2, 1/4, ... that decreases ||f||^2.
+    double lambda = 1.0;
+    if (options_.damped) {
+      const double merit = f_.squaredNorm();
+      int halvings = 0;
+      while (true) {
+        trial_x_ = x_ + lambda * dx_;
+        evaluate_at(trial_x_, trial_f_);
+        if (trial_f_.allFinite() && trial_f_.squaredNorm() <= (1.0 - 2e-4 * lambda) * merit) break;
+        if (++halvings > options_.max_halvings) return finish(Status::no_progress, StopReason::no_descent);
+        lambda *= 0.5;
+      }
+      x_ = trial_x_;
+      f_ = trial_f_;
+    } else {
+      x_ += dx_;
+      evaluate_at(x_, f_);
+    }
+    result_.step_norm = lambda * dx_.template lpNorm<Eigen::Infinity>();
+    result_.residual_norm = f_.template lpNorm<Eigen::Infinity>();
+    notify(linear.status, linear.iterations, lambda);
+
+    // 4. Stop tests, in order.
+    if (!x_.allFinite() || !f_.allFinite()) return finish(Status::non_finite, StopReason::non_finite);
+    if (result_.residual_norm <= options_.residual_tolerance) return finish(Status::converged, StopReason::residual_small);
+    if (result_.step_norm <= options_.step_tolerance * (1.0 + x_.template lpNorm<Eigen::Infinity>())) {
+      return finish(Status::converged, StopReason::step_small);
+    }
+    if (result_.residual_norm > options_.divergence_factor * std::max(residual_at_start_, 1.0)) {
+      return finish(Status::diverged, StopReason::diverged);
+    }
+    if (result_.iterations >= options_.max_iterations) return finish(Status::max_iterations, StopReason::iteration_limit);
+    return true;
+  }
+
+  NewtonResult<N> solve(const Vector<N>& x0) {
+    start(x0);
+    while (step()) {
+    }
+    return result();
+  }
+
+  NewtonResult<N> result() const {
+    NewtonResult<N> result;
+    static_cast<NewtonCounts&>(result) = result_;
+    result.x = x_;
+    result.residual_norm = f_.template lpNorm<Eigen::Infinity>();
+    return result;
+  }
+
+  // State between iterations.
+  bool running() const { return running_; }
+  const Vector<N>& x() const { return x_; }
+  const Vector<N>& residual() const { return f_; }
+  const Matrix<N>& jacobian() const { return J_; }
+  const NewtonOptions& options() const { return options_; }
+  LinearStep& linear_step() { return linear_step_; }
+
+ private:
+  // f(point), and J(point) too when the system shares the work (then J is fresh for the next step).
+  void evaluate_at(const Vector<N>& point, Vector<N>& f) {
+    ++result_.function_evaluations;
+    if constexpr (SharesEvaluation<S>) {
+      system_.residual_and_jacobian(point, f, J_);
+      ++result_.jacobian_evaluations;
+      jacobian_fresh_ = true;
+    } else {
+      system_.residual(point, f);
+      jacobian_fresh_ = false;
+    }
+  }
+
+  bool finish(Status status, StopReason reason) {
+    result_.status = status;
+    result_.reason = reason;
+    running_ = false;
+    return false;
+  }
+
+  void notify(Status linear_status, int linear_iterations, double lambda) {
+    if (observer_ == nullptr) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_at_).count();
+    observer_->on_iteration({result_.iterations, result_.residual_norm, f_.norm(), result_.step_norm, linear_status,
+                             linear_iterations, lambda, elapsed});
+  }
+
+  const S& system_;
+  NewtonOptions options_;
+  LinearStep linear_step_;
+  NewtonObserver<N>* observer_ = nullptr;
+  Vector<N> x_, f_, dx_, trial_x_, trial_f_;
+  Matrix<N> J_;
+  NewtonCounts result_;
+  double residual_at_start_ = 0.0;
+  bool jacobian_fresh_ = false;
+  bool running_ = false;
+  std::chrono::steady_clock::time_point started_at_;
+};
+
+// Convenience: solve S from x0 with GEPP (or the given linear step).
+template <NonlinearSystem S, typename LinearStep = linalg::GaussElimination<S::size>>
+NewtonResult<S::size> newton_solve(const S& system, const Vector<S::size>& x0, NewtonOptions options = {},
+                                   LinearStep linear_step = {}) {
+  return Newton<S, LinearStep>(system, options, std::move(linear_step)).solve(x0);
+}
+
+std::string_view to_string(StopReason reason);
+std::string termination_text(Status status, StopReason reason, int iterations, double residual_norm, double step_norm,
+                             const NewtonOptions& options);
+
+template <int N>
+std::string termination_line(const NewtonResult<N>& result, const NewtonOptions& options) {
+  return termination_text(result.status, result.reason, result.iterations, result.residual_norm, result.step_norm,
+                          options);
+}
+
+}  // namespace numlab::nonlinear
