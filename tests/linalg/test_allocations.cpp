@@ -38,6 +38,9 @@ void operator delete[](void* memory, std::size_t) noexcept { std::free(memory); 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/mechanisms/jansen_closure.hpp"
+#include "numlab/nonlinear/newton.hpp"
+#include "../nonlinear/small_systems.hpp"
 
 using namespace numlab;
 using namespace numlab::linalg;
@@ -145,4 +148,27 @@ TEST_CASE("Dynamic sizes allocate in start(), never in step()", "[allocations]")
   CHECK(sweeps.status() == Status::converged);
   CHECK(in_sweeps.eigen == 0);
   CHECK(in_sweeps.other == 0);
+}
+
+TEST_CASE("Fixed-size Newton allocates nothing, in solve() or per iteration", "[allocations][newton]") {
+  using numlab::mechanisms::JansenClosure;
+  const JansenClosure closure(JansenClosure::seed_crank_angle);
+  const JansenClosure::Vector start = JansenClosure::seed_estimates();
+  nonlinear::NewtonOptions options;
+  options.residual_tolerance = 1e-12;
+  nonlinear::Newton<JansenClosure> full(closure, options);  // GEPP<8>
+  nonlinear::Newton<test::FixedRosenbrock, linalg::ClosedForm2x2> two_by_two(test::FixedRosenbrock{}, options);
+  nonlinear::NewtonResult<8> result8;
+  nonlinear::NewtonResult<2> result2;
+  const AllocationCount counted = allocations_during([&] {
+    for (int repeat = 0; repeat < 20; ++repeat) {
+      result8 = full.solve(start);
+      result2 = two_by_two.solve(test::Vector2(-1.2, 1.0));
+    }
+  });
+  REQUIRE(result8.status == Status::converged);
+  REQUIRE(result8.iterations >= 2);
+  REQUIRE(result2.status == Status::converged);
+  CHECK(counted.eigen == 0);
+  if (counts_operator_new) CHECK(counted.other == 0);
 }

@@ -83,8 +83,19 @@ class Newton {
  public:
   static constexpr int N = S::size;
 
-  explicit Newton(const S& system, NewtonOptions options = {}, LinearStep linear_step = {})
+  // The linear step is built in place (its default); or passed in, for one that needs arguments.
+  explicit Newton(const S& system, NewtonOptions options = {}) : system_(system), options_(options) {
+    check_options();
+  }
+  Newton(const S& system, NewtonOptions options, LinearStep linear_step)
       : system_(system), options_(options), linear_step_(std::move(linear_step)) {
+    check_options();
+  }
+
+  void set_observer(NewtonObserver<N>* observer) { observer_ = observer; }
+
+ private:
+  void check_options() const {
     linalg::require_non_negative(options_.residual_tolerance, "residual tolerance");
     linalg::require_non_negative(options_.step_tolerance, "step tolerance");
     if (options_.max_iterations < 1) {
@@ -92,8 +103,7 @@ class Newton {
     }
   }
 
-  void set_observer(NewtonObserver<N>* observer) { observer_ = observer; }
-
+ public:
   // Sets x = x0 and evaluates f(x0). Throws std::invalid_argument for a wrong size or non-finite x0.
   void start(const Vector<N>& x0) {
     const int n = system_.dimension();
@@ -240,10 +250,15 @@ class Newton {
   std::chrono::steady_clock::time_point started_at_;
 };
 
-// Convenience: solve S from x0 with GEPP (or the given linear step).
-template <NonlinearSystem S, typename LinearStep = linalg::GaussElimination<S::size>>
-NewtonResult<S::size> newton_solve(const S& system, const Vector<S::size>& x0, NewtonOptions options = {},
-                                   LinearStep linear_step = {}) {
+// Convenience: solve S from x0 with GEPP, or with the given linear step.
+template <NonlinearSystem S>
+NewtonResult<S::size> newton_solve(const S& system, const Vector<S::size>& x0, NewtonOptions options = {}) {
+  return Newton<S>(system, options).solve(x0);
+}
+
+template <NonlinearSystem S, typename LinearStep>
+NewtonResult<S::size> newton_solve(const S& system, const Vector<S::size>& x0, NewtonOptions options,
+                                   LinearStep linear_step) {
   return Newton<S, LinearStep>(system, options, std::move(linear_step)).solve(x0);
 }
 

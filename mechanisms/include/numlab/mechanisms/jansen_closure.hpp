@@ -1,0 +1,48 @@
+#pragma once
+// The Jansen leg's eight loop-closure equations, seed 000 eqs (1)-(8), in theta1 ... theta8 at a
+// given crank angle theta_i (radians, counter-clockwise from +x). Frame and lengths: design/mechanisms.md.
+// O (crank pivot) is the origin, P1 = (-b, -a); each equation equates two paths to one joint:
+//   (1,2)  B:  O -> A -> B            = P1 -> B                 (theta1, theta2)
+//   (3,4)  C:  O -> A -> B -> C       = P1 -> C                 (theta1, theta3, theta4)
+//   (5,6)  D:  O -> A -> D            = P1 -> D                 (theta6, theta7)
+//   (7,8)  E:  O -> A -> B -> C -> E  = P1 -> D -> E            (theta1, theta3, theta5, theta7, theta8)
+// Its Jacobian is block lower-triangular in the pairs (1,2), (3,4), (6,7), (5,8).
+// residual_and_jacobian() computes each sine and cosine once for both.
+
+#include <Eigen/Core>
+
+#include "numlab/linalg/linear_result.hpp"
+
+namespace numlab::mechanisms {
+
+struct JansenLengths {
+  double crank = 15.0;  // li, O-A
+  double l1 = 50.0, l2 = 41.5, l3 = 55.8, l4 = 40.1, l5 = 39.4, l6 = 61.9, l7 = 39.3, l8 = 36.7;
+  double a = 7.8;   // P1 lies a below O
+  double b = 38.0;  // and b to its left
+};
+
+class JansenClosure {
+ public:
+  static constexpr int size = 8;
+  using Vector = linalg::Vector<8>;
+  using Matrix = linalg::Matrix<8>;
+
+  explicit JansenClosure(double crank_angle, JansenLengths lengths = {}) : lengths_(lengths) { set_crank_angle(crank_angle); }
+
+  void set_crank_angle(double crank_angle);
+  int dimension() const { return size; }
+  void residual(const Vector& theta, Vector& f) const;
+  void jacobian(const Vector& theta, Matrix& J) const;
+  void residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const;
+
+  // Seed 000 Table 3: theta1 ... theta8 at theta_i = 1.57 rad, the start of the seed's branch.
+  static Vector seed_estimates();
+  static constexpr double seed_crank_angle = 1.57;
+
+ private:
+  JansenLengths lengths_;
+  double crank_x_ = 0.0, crank_y_ = 0.0;  // A - P1 = (li cos theta_i + b, li sin theta_i + a)
+};
+
+}  // namespace numlab::mechanisms

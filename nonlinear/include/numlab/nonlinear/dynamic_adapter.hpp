@@ -1,0 +1,30 @@
+#pragma once
+// A fixed-size system seen through the DynamicSystem interface (for GSL, the sparsity pattern,
+// the Jacobian check and generic sequential Newton). It copies between fixed and dynamic vectors,
+// so the fixed-size Newton remains the fast path.
+
+#include "numlab/nonlinear/system.hpp"
+
+namespace numlab::nonlinear {
+
+template <NonlinearSystem S>
+class AsDynamicSystem final : public DynamicSystem {
+ public:
+  explicit AsDynamicSystem(const S& system) : system_(system) {}
+  int dimension() const override { return system_.dimension(); }
+  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const override {
+    Vector<S::size> fixed_f;
+    system_.residual(Vector<S::size>(x), fixed_f);
+    f = fixed_f;
+  }
+  void jacobian(const Eigen::VectorXd& x, Eigen::MatrixXd& J) const override {
+    Matrix<S::size> fixed_J;
+    system_.jacobian(Vector<S::size>(x), fixed_J);
+    J = fixed_J;
+  }
+
+ private:
+  const S& system_;
+};
+
+}  // namespace numlab::nonlinear

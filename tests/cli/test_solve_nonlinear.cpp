@@ -1,0 +1,106 @@
+// `numlab solve nonlinear` against design/cli.md: fields, statuses, exit codes, traces, bad input.
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "run_numlab.hpp"
+
+using numlab::test::run_numlab;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+using nlohmann::json;
+
+namespace {
+json solve_json(const std::string& arguments, int expected_exit) {
+  const auto run = run_numlab("solve nonlinear " + arguments + " --format json");
+  INFO(run.err);
+  REQUIRE(run.exit_code == expected_exit);
+  return json::parse(run.out);
+}
+
+void require_bad_input(const std::string& arguments, const std::string& named) {
+  const auto run = run_numlab("solve nonlinear " + arguments);
+  INFO("numlab solve nonlinear " << arguments << "\nstderr: " << run.err);
+  CHECK(run.exit_code == 2);
+  CHECK(run.out.empty());
+  CHECK_THAT(run.err, StartsWith("numlab: error:") && Contains(named));
+  CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+}
+}  // namespace
+
+TEST_CASE("solve nonlinear: Newton and every GSL type, with the documented JSON fields", "[cli][nonlinear]") {
+  const json newton = solve_json("--problem rosenbrock --method newton", 0);
+  CHECK(newton["problem"] == "rosenbrock");
+  CHECK(newton["method"] == "newton");
+  CHECK(newton["status"] == "converged");
+  CHECK(newton["x"][0].get<double>() == Approx(1.0).epsilon(1e-12));
+  CHECK(newton["x"][1].get<double>() == Approx(1.0).epsilon(1e-12));
+  CHECK(newton["iterations"] == 2);
+  CHECK(newton["residual_inf"].get<double>() <= 1e-9);
+  CHECK(newton["function_evaluations"].get<int>() >= 3);
+  CHECK(newton["jacobian_evaluations"].get<int>() >= 2);
+  CHECK(newton["time_s"].get<double>() >= 0.0);
+  CHECK(newton["distance_to_root"].get<double>() <= 1e-12);
+  CHECK_THAT(newton["termination"].get<std::string>(), StartsWith("Termination: CONVERGED"));
+  for (const std::string type : {"hybrids", "hybrid", "dnewton", "broyden", "hybridsj", "hybridj", "newton", "gnewton"}) {
+    const json gsl = solve_json("--problem helical-valley --method gsl-" + type + " --max-iter 100", 0);
+    INFO(type);
+    CHECK(gsl["status"] == "converged");
+    CHECK(gsl["distance_to_root"].get<double>() <= 1e-8);
+  }
+  for (const std::string linear : {"gepp", "gsl-lu", "eigen-lu", "inverse2x2"}) {
+    const json run = solve_json("--problem freudenstein-roth --method newton --max-iter 100 --linear " + linear, 0);
+    INFO(linear);
+    CHECK(run["linear"] == linear);
+    CHECK(run["distance_to_root"].get<double>() <= 1e-8);
+  }
+  // Gauss-Seidel's inexact inner solves (100 sweeps on the normal equations of a nearly singular J)
+  // derail Newton on this problem: it wanders for all 100 iterations.
+  const json inexact = solve_json("--problem freudenstein-roth --method newton --max-iter 100 --linear gauss-seidel", 1);
+  CHECK(inexact["status"] == "max_iterations");
+  CHECK(inexact["residual_inf"].get<double>() > 1.0);
+}
+
+TEST_CASE("solve nonlinear: --x0, --damped and failures exit 1 with the full result", "[cli][nonlinear][failure]") {
+  const json from_elsewhere = solve_json("--problem rosenbrock --method newton --x0 2,3", 0);
+  CHECK(from_elsewhere["x"][0].get<double>() == Approx(1.0));
+  const json trapped = solve_json("--problem freudenstein-roth --method newton --damped --max-iter 100", 1);
+  CHECK(trapped["status"] == "no_progress");
+  CHECK(trapped["damped"] == true);
+  const json limited = solve_json("--problem powell-singular --method newton --max-iter 5", 1);
+  CHECK(limited["status"] == "max_iterations");
+  CHECK(limited["iterations"] == 5);
+  CHECK_THAT(limited["termination"].get<std::string>(), Contains("MAX_ITERATIONS"));
+  const json stuck = solve_json("--problem trigonometric --method gsl-hybridsj --max-iter 100 --tol 1e-10", 1);
+  CHECK(stuck["status"] == "no_progress");
+}
+
+TEST_CASE("solve nonlinear --trace: one row per iteration and the termination line", "[cli][nonlinear][trace]") {
+  const json traced = solve_json("--problem wood --method newton --trace", 0);
+  const json& trace = traced["trace"];
+  REQUIRE(trace.size() == traced["iterations"].get<std::size_t>());
+  CHECK(trace[0]["iteration"] == 1);
+  CHECK(trace.back()["residual_inf"].get<double>() == Approx(traced["residual_inf"].get<double>()));
+  CHECK(trace[0]["linear_status"] == "converged");
+  CHECK(trace[0].contains("residual_2"));
+  CHECK(trace[0].contains("step_inf"));
+  CHECK(trace[0].contains("time_s"));
+  const json gsl = solve_json("--problem wood --method gsl-hybridsj --trace --max-iter 100", 0);
+  CHECK_FALSE(gsl["trace"][0].contains("linear_status"));  // GSL has no inner solve to report
+
+  const auto text = run_numlab("solve nonlinear --problem rosenbrock --method newton --trace --step");
+  CHECK(text.exit_code == 0);
+  CHECK_THAT(text.err, Contains("||f||_inf") && Contains("linear solve"));
+  CHECK_THAT(text.out, Contains("Termination: CONVERGED (residual below tolerance"));
+}
+
+TEST_CASE("solve nonlinear: bad input gets one error line and exit 2", "[cli][nonlinear][bad-input]") {
+  require_bad_input("--problem beale --method newton", "--problem");
+  require_bad_input("--problem wood --method levenberg", "--method");
+  require_bad_input("--problem wood --method newton --linear qr", "--linear");
+  require_bad_input("--problem wood --method newton --x0 1,2,3", "has 3 numbers but the problem has 4 unknowns");
+  require_bad_input("--problem rosenbrock --method newton --x0 1,abc", "'abc' is not a finite number");
+  require_bad_input("--problem rosenbrock --method newton --x0 1,nan", "'nan' is not a finite number");
+  require_bad_input("--problem rosenbrock --method newton --tol -1", "non-negative");
+  require_bad_input("--problem wood --method newton --linear inverse2x2", "inverse2x2 needs a 2x2");
+}
