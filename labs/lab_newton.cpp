@@ -156,6 +156,20 @@ void show_failures(LabSession& session) {
       plain.iterations, to_string(plain.status), point_text(damped.x), J.determinant(), to_string(damped.status),
       point_text(hybrid.x), hybrid.residual_inf, to_string(hybrid.status)));
 
+  // Arctangent: the failure damping was made for.
+  const nonlinear::TestProblem arctangent = nonlinear::make_test_problem("arctangent");
+  const NonlinearRun overshoot =
+      run_nonlinear_method("newton", *arctangent.system, arctangent.standard_start, lab_settings(false));
+  const NonlinearRun cured =
+      run_nonlinear_method("newton", *arctangent.system, arctangent.standard_start, lab_settings(true));
+  session.say(fmt::format(
+      "Arctangent, f_i = atan(x_i) from (2, 2): each full Newton step x - atan(x)(1 + x^2) overshoots the root "
+      "further, so the iterates run away to {:.2g} until J = 1/(1 + x^2) underflows to zero: {} after {} "
+      "iterations. Damped Newton halves each step until ||f||^2 decreases and converges in {} ({}, ||x|| = {:.2g}). "
+      "Damping cures an overshoot; it cannot cure a bad region (Freudenstein-Roth above).",
+      overshoot.x.lpNorm<Eigen::Infinity>(), to_string(overshoot.status), overshoot.iterations, cured.iterations,
+      to_string(cured.status), cured.x.lpNorm<Eigen::Infinity>()));
+
   // Wood: a root of the system that is not the minimum.
   const nonlinear::TestProblem wood = nonlinear::make_test_problem("wood");
   const NonlinearRun saddle = run_nonlinear_method("newton", *wood.system, wood.standard_start, lab_settings(false));

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <type_traits>
 
 namespace numlab::nonlinear {
 
@@ -230,6 +231,30 @@ class BroydenTridiagonal final : public TemplatedResidual<BroydenTridiagonal> {
   int n_;
 };
 
+// Arctangent: f_i = atan(x_i), root 0. Not an MGH problem: the classic case where plain Newton
+// overshoots (x <- x - atan(x)(1 + x^2) grows like x^3 once |x| > 1.3917) and damping cures it.
+class Arctangent final : public TemplatedResidual<Arctangent> {
+ public:
+  int dimension() const override { return 2; }
+  template <typename T>
+  void evaluate(const VectorOf<T>& x, VectorOf<T>& f) const {
+    for (int i = 0; i < 2; ++i) {
+      if constexpr (std::is_same_v<T, double>) {
+        f(i) = std::atan(x(i));
+      } else {
+        // Eigen's AutoDiff has no atan: asin(x / sqrt(1 + x^2)) is the same function, fine for
+        // checking derivatives at moderate x (1 + x^2 overflows past 1e154, so not for solving).
+        using std::asin;
+        f(i) = asin(x(i) / sqrt(1.0 + x(i) * x(i)));
+      }
+    }
+  }
+  void jacobian(const Eigen::VectorXd& x, Eigen::MatrixXd& J) const override {
+    J.setZero(2, 2);
+    for (int i = 0; i < 2; ++i) J(i, i) = 1.0 / (1.0 + x(i) * x(i));
+  }
+};
+
 Eigen::VectorXd vector_of(std::initializer_list<double> values) {
   Eigen::VectorXd v(static_cast<Eigen::Index>(values.size()));
   Eigen::Index i = 0;
@@ -257,7 +282,8 @@ Eigen::VectorXd powell_badly_scaled_root() {
 const std::vector<std::string>& test_problem_names() {
   static const std::vector<std::string> names = {"rosenbrock",      "freudenstein-roth", "powell-badly-scaled",
                                                  "powell-singular", "wood",              "helical-valley",
-                                                 "discrete-bvp",    "trigonometric",     "broyden-tridiagonal"};
+                                                 "discrete-bvp",    "trigonometric",     "broyden-tridiagonal",
+                                                 "arctangent"};
   return names;
 }
 
@@ -303,9 +329,13 @@ TestProblem make_test_problem(const std::string& name) {
     return {name, "Broyden tridiagonal (n = 10); no closed-form root", std::make_shared<BroydenTridiagonal>(n),
             Eigen::VectorXd::Constant(n, -1.0), std::nullopt};
   }
+  if (name == "arctangent") {
+    return {name, "Arctangent (n = 2, not MGH); plain Newton overshoots from |x| > 1.39, damping cures it",
+            std::make_shared<Arctangent>(), vector_of({2.0, 2.0}), Eigen::VectorXd::Zero(2)};
+  }
   throw std::invalid_argument("unknown problem '" + name +
                               "' (expected rosenbrock, freudenstein-roth, powell-badly-scaled, powell-singular, wood, "
-                              "helical-valley, discrete-bvp, trigonometric or broyden-tridiagonal)");
+                              "helical-valley, discrete-bvp, trigonometric, broyden-tridiagonal or arctangent)");
 }
 
 }  // namespace numlab::nonlinear

@@ -1,7 +1,8 @@
 #pragma once
 // Nonlinear test systems from Moré, Garbow & Hillstrom, "Testing unconstrained optimization
 // software" (ACM TOMS 7, 1981), in the square forms MINPACK uses for equation solvers, each with
-// its analytic Jacobian, standard starting point and, where one is known, a root.
+// its analytic Jacobian, standard starting point and, where one is known, a root. One more,
+// "arctangent", shows what damping is for.
 
 #include <Eigen/Core>
 #include <memory>
@@ -22,7 +23,7 @@ struct TestProblem {
 };
 
 // rosenbrock, freudenstein-roth, powell-badly-scaled, powell-singular, wood, helical-valley,
-// discrete-bvp, trigonometric, broyden-tridiagonal.
+// discrete-bvp, trigonometric, broyden-tridiagonal; and arctangent, the classic case for damping.
 const std::vector<std::string>& test_problem_names();
 
 // The variable-size problems (discrete-bvp, trigonometric, broyden-tridiagonal) use n = 10.
