@@ -99,11 +99,11 @@ void NewtonTracer::on_iteration(const nonlinear::NewtonRecord& record) {
     return;
   }
   if (!header_printed_) {
-    *text_out_ << fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>6}  {:>7}  {:>10}\n", "k", "||f||_inf",
-                              "||f||_2", "||dx||_inf", "linear solve", "sweeps", "lambda", "time (s)");
+    *text_out_ << fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>9}  {:>7}  {:>10}\n", "k", "||f||_inf",
+                              "||f||_2", "||dx||_inf", "linear solve", "inner its", "lambda", "time (s)");
     header_printed_ = true;
   }
-  *text_out_ << fmt::format("  {:>4}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>14}  {:>6}  {:>7.4g}  {:>10.3e}\n",
+  *text_out_ << fmt::format("  {:>4}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>14}  {:>9}  {:>7.4g}  {:>10.3e}\n",
                             record.iteration, record.residual_inf, record.residual_2, record.step_inf,
                             has_linear_solve ? std::string(to_string(record.linear_status)) : "-",
                             has_linear_solve ? std::to_string(record.linear_iterations) : "-", record.damping,

@@ -44,7 +44,8 @@ class SweepTracer : public linalg::GaussSeidelObserver<Eigen::Dynamic> {
 };
 
 // One row per Newton iteration: k, ||f||_inf, ||f||_2, ||dx||_inf, the inner linear solve's status
-// and sweep count, the damping factor and the time since the start.
+// and iteration count (pivot columns for GEPP, sweeps for Gauss-Seidel), the damping factor and
+// the time since the start.
 class NewtonTracer : public nonlinear::NewtonObserver<Eigen::Dynamic> {
  public:
   NewtonTracer(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
