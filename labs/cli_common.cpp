@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -26,6 +27,10 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
   command.add_option("--max-iter", options.max_iterations, "Override the iteration limit (at least 1)")
       ->check(CLI::PositiveNumber);
   command.add_option("--out", options.out_dir, "Folder for the files written (default out/)");
+}
+
+nlohmann::ordered_json number_or_null(double value) {
+  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json();
 }
 
 int exit_code_for(Status status) { return status == Status::converged ? exit_success : exit_method_failed; }

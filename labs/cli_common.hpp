@@ -2,6 +2,7 @@
 // What every `numlab` sub-command shares: the common flags, exit codes, and --step pauses.
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -31,6 +32,9 @@ int exit_code_for(Status status);
 
 // With --step, waits for Enter; only when stdin is a terminal, so scripts and CI never block.
 void pause_if_stepping(bool step);
+
+// A number for JSON output, or null when it is NaN or infinite (JSON has no such numbers).
+nlohmann::ordered_json number_or_null(double value);
 
 // Creates the output folder (and parents); throws std::invalid_argument naming it on failure.
 void ensure_directory(const std::string& path);

@@ -98,8 +98,6 @@ std::string warning_for(const DynamicResult& result, double condition_estimate) 
   return warning;
 }
 
-nlohmann::ordered_json number_or_null(double value) { return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(); }
-
 std::string vector_text(const Eigen::VectorXd& x) {
   constexpr Eigen::Index shown = 8;
   std::string text;

@@ -15,12 +15,6 @@
 
 namespace numlab::cli {
 
-namespace {
-nlohmann::ordered_json number_or_null(double value) {
-  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json();
-}
-}  // namespace
-
 Eigen::VectorXd parse_point(const std::string& text, int expected, const std::string& flag) {
   std::vector<double> values;
   std::size_t begin = 0;

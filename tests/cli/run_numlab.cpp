@@ -1,7 +1,10 @@
 #include "run_numlab.hpp"
 
+#include <catch2/catch.hpp>
+
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -39,6 +42,22 @@ ProgramRun run_numlab(const std::string& arguments) {
   ProgramRun run{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_all(folder + "/out"), read_all(folder + "/err")};
   std::filesystem::remove_all(folder);
   return run;
+}
+
+nlohmann::json run_json(const std::string& command, const std::string& arguments, int expected_exit) {
+  const ProgramRun run = run_numlab(command + " " + arguments + " --format json");
+  INFO("numlab " << command << " " << arguments << "\nstderr: " << run.err);
+  REQUIRE(run.exit_code == expected_exit);
+  return nlohmann::json::parse(run.out);
+}
+
+void require_bad_input(const std::string& arguments, const std::string& named) {
+  const ProgramRun run = run_numlab(arguments);
+  INFO("numlab " << arguments << "\nstderr: " << run.err);
+  CHECK(run.exit_code == 2);
+  CHECK(run.out.empty());
+  CHECK_THAT(run.err, Catch::Matchers::StartsWith("numlab: error:") && Catch::Matchers::Contains(named));
+  CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
 }
 
 }  // namespace numlab::test

@@ -2,6 +2,7 @@
 // Runs the numlab program as a user would (stdin from /dev/null, so --step never blocks) and
 // captures its exit code, stdout and stderr.
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace numlab::test {
@@ -14,6 +15,13 @@ struct ProgramRun {
 
 // `arguments` is appended to the program path as shell words.
 ProgramRun run_numlab(const std::string& arguments);
+
+// Runs `numlab COMMAND ARGUMENTS --format json`, requires the exit code, and parses stdout.
+nlohmann::json run_json(const std::string& command, const std::string& arguments, int expected_exit);
+
+// Bad input: requires exit 2, nothing on stdout, and exactly one line on stderr that starts
+// "numlab: error:" and contains `named`.
+void require_bad_input(const std::string& arguments, const std::string& named);
 
 // A fresh temporary folder for files a test writes.
 std::string temporary_folder();

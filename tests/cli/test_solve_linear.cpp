@@ -15,22 +15,10 @@ using nlohmann::json;
 
 namespace {
 json solve_json(const std::string& arguments, int expected_exit) {
-  const auto run = run_numlab("solve linear " + arguments + " --format json");
-  INFO(run.err);
-  REQUIRE(run.exit_code == expected_exit);
-  return json::parse(run.out);
-}
-
-// Bad input: exit 2, nothing on stdout, exactly one line on stderr naming the problem.
-void require_bad_input(const std::string& arguments, const std::string& named) {
-  const auto run = run_numlab(arguments);
-  INFO("numlab " << arguments << "\nstderr: " << run.err);
-  CHECK(run.exit_code == 2);
-  CHECK(run.out.empty());
-  CHECK_THAT(run.err, StartsWith("numlab: error:") && Contains(named));
-  CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+  return numlab::test::run_json("solve linear", arguments, expected_exit);
 }
 }  // namespace
+using numlab::test::require_bad_input;
 
 TEST_CASE("solve linear: every method solves a generated system, with the documented JSON fields", "[cli]") {
   for (const std::string method : {"gepp", "gauss-seidel", "gauss-seidel-plain", "gsl-lu", "gsl-qr", "eigen-lu"}) {

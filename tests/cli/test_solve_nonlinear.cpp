@@ -12,19 +12,11 @@ using nlohmann::json;
 
 namespace {
 json solve_json(const std::string& arguments, int expected_exit) {
-  const auto run = run_numlab("solve nonlinear " + arguments + " --format json");
-  INFO(run.err);
-  REQUIRE(run.exit_code == expected_exit);
-  return json::parse(run.out);
+  return numlab::test::run_json("solve nonlinear", arguments, expected_exit);
 }
 
 void require_bad_input(const std::string& arguments, const std::string& named) {
-  const auto run = run_numlab("solve nonlinear " + arguments);
-  INFO("numlab solve nonlinear " << arguments << "\nstderr: " << run.err);
-  CHECK(run.exit_code == 2);
-  CHECK(run.out.empty());
-  CHECK_THAT(run.err, StartsWith("numlab: error:") && Contains(named));
-  CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+  numlab::test::require_bad_input("solve nonlinear " + arguments, named);
 }
 }  // namespace
 
