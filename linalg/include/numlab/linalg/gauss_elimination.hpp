@@ -242,12 +242,12 @@ class GaussElimination {
   GaussEliminationOptions options_;
   GaussEliminationObserver<N>* observer_ = nullptr;
   int n_ = 0;
-  MatrixType original_matrix_;  // kept by start() for result(); solve() uses the caller's
-  VectorType original_rhs_;
-  WorkMatrix reduced_;      // A, reduced step by step to upper triangular U
-  VectorType rhs_;          // b, with the same row operations applied
-  VectorType inverse_pivots_;  // 1 / u_kk, computed once per column
-  VectorType x_;
+  MatrixType original_matrix_ = zero_or_empty<MatrixType>();  // kept by start() for result()
+  VectorType original_rhs_ = zero_or_empty<VectorType>();
+  WorkMatrix reduced_ = zero_or_empty<WorkMatrix>();        // A, reduced step by step to U
+  VectorType rhs_ = zero_or_empty<VectorType>();            // b, with the same row operations
+  VectorType inverse_pivots_ = zero_or_empty<VectorType>(); // 1 / u_kk, once per column
+  VectorType x_ = zero_or_empty<VectorType>();
   double matrix_max_ = 0.0;
   double negligible_pivot_ = 0.0;
   int column_ = 0;

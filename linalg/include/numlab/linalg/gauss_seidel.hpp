@@ -181,11 +181,11 @@ class GaussSeidel {
   GaussSeidelOptions options_;
   GaussSeidelObserver<N>* observer_ = nullptr;
   int n_ = 0;
-  MatrixType original_matrix_;
-  VectorType original_rhs_;
-  WorkMatrix swept_matrix_;  // M: A^T A or A
-  VectorType swept_rhs_;     // c: A^T b or b
-  VectorType x_;
+  MatrixType original_matrix_ = zero_or_empty<MatrixType>();
+  VectorType original_rhs_ = zero_or_empty<VectorType>();
+  WorkMatrix swept_matrix_ = zero_or_empty<WorkMatrix>();  // M: A^T A or A
+  VectorType swept_rhs_ = zero_or_empty<VectorType>();     // c: A^T b or b
+  VectorType x_ = zero_or_empty<VectorType>();
   int sweep_ = 0;
   double step_norm_ = LinearResult<N>::not_applicable;
   double first_step_norm_ = 0.0;

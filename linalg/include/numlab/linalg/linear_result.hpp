@@ -14,6 +14,17 @@ using Vector = Eigen::Matrix<double, N, 1>;
 template <int N>
 using Matrix = Eigen::Matrix<double, N, N>;
 
+// A defined starting value for a stepper's Eigen member: zero for fixed sizes (so copying or
+// moving a stepper never reads uninitialized memory), empty for dynamic ones (sized in start()).
+template <typename EigenType>
+EigenType zero_or_empty() {
+  if constexpr (EigenType::SizeAtCompileTime == Eigen::Dynamic) {
+    return EigenType();
+  } else {
+    return EigenType::Zero();
+  }
+}
+
 template <int N>
 struct LinearResult {
   static constexpr double not_applicable = std::numeric_limits<double>::quiet_NaN();

@@ -241,8 +241,10 @@ class Newton {
   NewtonOptions options_;
   LinearStep linear_step_;
   NewtonObserver<N>* observer_ = nullptr;
-  Vector<N> x_, f_, dx_, trial_x_, trial_f_;
-  Matrix<N> J_;
+  Vector<N> x_ = linalg::zero_or_empty<Vector<N>>(), f_ = linalg::zero_or_empty<Vector<N>>();
+  Vector<N> dx_ = linalg::zero_or_empty<Vector<N>>(), trial_x_ = linalg::zero_or_empty<Vector<N>>();
+  Vector<N> trial_f_ = linalg::zero_or_empty<Vector<N>>();
+  Matrix<N> J_ = linalg::zero_or_empty<Matrix<N>>();
   NewtonCounts result_;
   double residual_at_start_ = 0.0;
   bool jacobian_fresh_ = false;

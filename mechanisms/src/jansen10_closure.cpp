@@ -1,0 +1,53 @@
+#include "numlab/mechanisms/jansen10_closure.hpp"
+
+#include <cmath>
+
+namespace numlab::mechanisms {
+
+namespace {
+// Each closure term is L cos(x_j) in a cosine row and L sin(x_j) in the sine row below it.
+struct Term {
+  int row;  // the cosine row
+  int column;
+  double length;
+};
+constexpr Term terms[] = {{0, 0, 50.0},  {0, 1, 41.5},  {2, 1, -41.5}, {2, 2, 55.8},  {2, 3, 40.1},
+                          {4, 3, 40.1},  {4, 4, -39.4}, {4, 5, 39.3},  {4, 6, -36.7}, {6, 5, -39.3},
+                          {6, 7, -61.9}, {8, 6, 36.7},  {8, 8, 49.0},  {8, 9, 65.7}};
+}  // namespace
+
+void Jansen10Closure::set_crank_angle(double crank_angle) {
+  const JansenLengths lengths;
+  crank_x_ = lengths.b + lengths.crank * std::cos(crank_angle);
+  crank_y_ = lengths.a + lengths.crank * std::sin(crank_angle);
+}
+
+void Jansen10Closure::residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const {
+  Vector c, s;  // each sine and cosine once
+  for (int k = 0; k < 10; ++k) {
+    c(k) = std::cos(theta(k));
+    s(k) = std::sin(theta(k));
+  }
+  f.setZero();
+  f(0) = f(6) = crank_x_;
+  f(1) = f(7) = crank_y_;
+  J.setZero();
+  for (const Term& term : terms) {
+    f(term.row) += term.length * c(term.column);
+    f(term.row + 1) += term.length * s(term.column);
+    J(term.row, term.column) = -term.length * s(term.column);  // d(L cos t)/dt
+    J(term.row + 1, term.column) = term.length * c(term.column);  // d(L sin t)/dt
+  }
+}
+
+void Jansen10Closure::residual(const Vector& theta, Vector& f) const {
+  Matrix unused;
+  residual_and_jacobian(theta, f, unused);
+}
+
+void Jansen10Closure::jacobian(const Vector& theta, Matrix& J) const {
+  Vector unused;
+  residual_and_jacobian(theta, unused, J);
+}
+
+}  // namespace numlab::mechanisms

@@ -1,0 +1,346 @@
+#include "numlab/mechanisms/jansen_solvers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "numlab/linalg/eigen_reference.hpp"
+#include "numlab/linalg/gauss_elimination.hpp"
+#include "numlab/linalg/gauss_seidel.hpp"
+#include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/mechanisms/jansen10_closure.hpp"
+#include "numlab/nonlinear/block_order.hpp"
+#include "numlab/nonlinear/dynamic_adapter.hpp"
+#include "numlab/nonlinear/gsl_multiroot.hpp"
+#include "numlab/nonlinear/linear_step.hpp"
+#include "numlab/nonlinear/sequential_newton.hpp"
+
+namespace numlab::mechanisms {
+
+namespace {
+
+constexpr double degrees = std::numbers::pi / 180.0;
+std::size_t at(JansenJoint joint) { return static_cast<std::size_t>(joint); }
+Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
+double direction(const Eigen::Vector2d& from, const Eigen::Vector2d& to) { return std::atan2(to.y() - from.y(), to.x() - from.x()); }
+
+PoseOutcome outcome_of(const nonlinear::NewtonCounts& result) { return {result.status, result.iterations, result.residual_norm}; }
+
+// Full Newton on a fixed-size closure (8 or 10 equations) with a compile-time linear solver.
+template <typename Closure, typename LinearStep>
+class FullNewton final : public JansenPoseSolver {
+ public:
+  explicit FullNewton(const nonlinear::NewtonOptions& options) : closure_(0.0), newton_(closure_, options) {}
+  FullNewton(const nonlinear::NewtonOptions& options, LinearStep linear_step)
+      : closure_(0.0), newton_(closure_, options, std::move(linear_step)) {}
+  PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
+    closure_.set_crank_angle(crank_angle);
+    const auto result = newton_.solve(typename Closure::Vector(angles));
+    angles = result.x;
+    return outcome_of(result);
+  }
+
+ private:
+  Closure closure_;
+  nonlinear::Newton<Closure, LinearStep> newton_;
+};
+
+// One of seed 000's blocks: k + p u(alpha) - q u(beta) = 0 in (alpha, beta), sine row first.
+struct DyadClosure {
+  static constexpr int size = 2;
+  Eigen::Vector2d known;  // (k_y, k_x): the part already solved
+  double p = 0.0, q = 0.0;
+  int dimension() const { return 2; }
+  void residual_and_jacobian(const Eigen::Vector2d& x, Eigen::Vector2d& f, Eigen::Matrix2d& J) const {
+    const double ca = std::cos(x(0)), sa = std::sin(x(0)), cb = std::cos(x(1)), sb = std::sin(x(1));
+    f << known(0) + p * sa - q * sb, known(1) + p * ca - q * cb;
+    J << p * ca, -q * cb, -p * sa, q * sb;
+  }
+  void residual(const Eigen::Vector2d& x, Eigen::Vector2d& f) const {
+    Eigen::Matrix2d unused;
+    residual_and_jacobian(x, f, unused);
+  }
+  void jacobian(const Eigen::Vector2d& x, Eigen::Matrix2d& J) const {
+    Eigen::Vector2d unused;
+    residual_and_jacobian(x, unused, J);
+  }
+};
+
+// Seed 000's sequential solve: (theta1, theta2), (theta3, theta4), (theta6, theta7), (theta5, theta8).
+class SequentialEight final : public JansenPoseSolver {
+ public:
+  explicit SequentialEight(const nonlinear::NewtonOptions& options) : newton_(dyad_, options) {}
+  PoseOutcome solve(double crank_angle, Eigen::VectorXd& theta) override {
+    const JansenLengths L;
+    const Eigen::Vector2d crank(L.a + L.crank * std::sin(crank_angle), L.b + L.crank * std::cos(crank_angle));
+    PoseOutcome total;
+    auto block = [&](const Eigen::Vector2d& known, double p, double q, int alpha, int beta) {
+      dyad_ = {known, p, q};
+      const auto result = newton_.solve(Eigen::Vector2d(theta(alpha), theta(beta)));
+      theta(alpha) = result.x(0);
+      theta(beta) = result.x(1);
+      total.iterations += result.iterations;
+      if (result.status != Status::converged && total.status == Status::converged) total.status = result.status;
+      return result.status == Status::converged;
+    };
+    auto swapped = [](const Eigen::Vector2d& v) { return Eigen::Vector2d(v(1), v(0)); };  // (y, x)
+    const bool ok = block(crank, L.l1, L.l2, 0, 1) &&
+                    block(crank + swapped(L.l1 * unit(theta(0))), L.l3, L.l4, 2, 3) &&
+                    block(crank, L.l6, L.l7, 5, 6) &&
+                    block(crank + swapped(L.l1 * unit(theta(0)) + L.l3 * unit(theta(2)) - L.l7 * unit(theta(6))), L.l5,
+                          L.l8, 4, 7);
+    (void)ok;
+    JansenClosure closure(crank_angle);
+    JansenClosure::Vector f;
+    closure.residual(JansenClosure::Vector(theta), f);
+    total.residual_inf = f.lpNorm<Eigen::Infinity>();
+    return total;
+  }
+
+ private:
+  DyadClosure dyad_;
+  nonlinear::Newton<DyadClosure, linalg::ClosedForm2x2> newton_;
+};
+
+// Generic sequential Newton over blocks derived from the pattern (used for the 10-equation model).
+template <typename Closure>
+class SequentialDerived final : public JansenPoseSolver {
+ public:
+  SequentialDerived(const nonlinear::NewtonOptions& options, const Eigen::VectorXd& typical)
+      : options_(options), closure_(0.0), dynamic_(closure_) {
+    blocks_ = nonlinear::block_triangular_order(nonlinear::jacobian_pattern(dynamic_, typical));
+  }
+  PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
+    closure_.set_crank_angle(crank_angle);
+    const auto result = nonlinear::sequential_newton(dynamic_, blocks_, angles, options_, "inverse2x2");
+    angles = result.x;
+    return {result.status, result.iterations, result.residual_norm};
+  }
+
+ private:
+  nonlinear::NewtonOptions options_;
+  Closure closure_;
+  nonlinear::AsDynamicSystem<Closure> dynamic_;
+  std::vector<nonlinear::Block> blocks_;
+};
+
+template <typename Closure>
+class GslSolver final : public JansenPoseSolver {
+ public:
+  GslSolver(std::string type, const nonlinear::NewtonOptions& options)
+      : type_(std::move(type)), options_(options), closure_(0.0), dynamic_(closure_) {}
+  PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
+    closure_.set_crank_angle(crank_angle);
+    const auto result = nonlinear::gsl_multiroot_solve(dynamic_, angles, type_, options_);
+    angles = result.x;
+    return {result.status, result.iterations, result.residual_norm};
+  }
+
+ private:
+  std::string type_;
+  nonlinear::NewtonOptions options_;
+  Closure closure_;
+  nonlinear::AsDynamicSystem<Closure> dynamic_;
+};
+
+// The closed form, producing the same outputs (the angles) as the iterative solvers.
+class Analytic final : public JansenPoseSolver {
+ public:
+  explicit Analytic(JansenModel model) : model_(model) {}
+  PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
+    const auto joints = leg_.closed_form_joints(crank_angle);
+    if (!joints) return {Status::cannot_assemble, 0, 0.0};
+    angles = jansen_angles_of(model_, *joints, angles);
+    return {Status::converged, 0, 0.0};
+  }
+
+ private:
+  JansenModel model_;
+  JansenLeg leg_;
+};
+
+template <typename Closure>
+std::unique_ptr<JansenPoseSolver> make_full(const std::string& linear, const nonlinear::NewtonOptions& options) {
+  constexpr int N = Closure::size;
+  if (linear == "gepp") return std::make_unique<FullNewton<Closure, linalg::GaussElimination<N>>>(options);
+  if (linear == "gauss-seidel") {
+    // An inexact inner solve slows Newton down, a very inexact one stops it: sweep the normal
+    // equations until the update is far below Newton's own tolerance.
+    linalg::GaussSeidelOptions inner;
+    inner.tolerance = std::min(1e-9, 1e-3 * options.residual_tolerance);
+    inner.max_iterations = 100000;
+    return std::make_unique<FullNewton<Closure, linalg::GaussSeidel<N>>>(options, linalg::GaussSeidel<N>(inner));
+  }
+  if (linear == "gsl-lu") return std::make_unique<FullNewton<Closure, nonlinear::GslLuStep<N>>>(options);
+  if (linear == "eigen-lu") return std::make_unique<FullNewton<Closure, linalg::EigenLu<N>>>(options);
+  throw std::invalid_argument("unknown linear method '" + linear + "' for full Newton (expected gepp, gauss-seidel, "
+                              "gsl-lu or eigen-lu)");
+}
+
+}  // namespace
+
+std::vector<std::string> jansen_angle_names(JansenModel model) {
+  std::vector<std::string> names;
+  const int first = model == JansenModel::eight_equations ? 1 : 3;
+  const int count = model == JansenModel::eight_equations ? 8 : 10;
+  for (int k = 0; k < count; ++k) names.push_back("theta" + std::to_string(first + k));
+  return names;
+}
+
+JansenJoints jansen_joints(JansenModel model, const JansenLeg& leg, double crank_angle, const Eigen::VectorXd& x) {
+  if (model == JansenModel::eight_equations) return leg.joints(crank_angle, JansenAngles(x));
+  // Seed 001's directions (see jansen10_closure.hpp).
+  const JansenLengths& L = leg.lengths();
+  JansenJoints p;
+  p[at(JansenJoint::O)] = Eigen::Vector2d::Zero();
+  p[at(JansenJoint::P1)] = Eigen::Vector2d(-L.b, -L.a);
+  p[at(JansenJoint::A)] = L.crank * unit(crank_angle);
+  p[at(JansenJoint::B)] = p[at(JansenJoint::A)] + L.l1 * unit(x(0));
+  p[at(JansenJoint::C)] = p[at(JansenJoint::B)] + L.l3 * unit(x(2));
+  p[at(JansenJoint::D)] = p[at(JansenJoint::P1)] + L.l7 * unit(x(5));
+  p[at(JansenJoint::E)] = p[at(JansenJoint::D)] - L.l8 * unit(x(6));
+  p[at(JansenJoint::F)] = p[at(JansenJoint::D)] + 49.0 * unit(x(8));
+  return p;
+}
+
+Eigen::VectorXd jansen_angles_of(JansenModel model, const JansenJoints& p, const Eigen::VectorXd& near) {
+  if (model == JansenModel::eight_equations) return JansenLeg::angles_of(p, JansenAngles(near));
+  using J = JansenJoint;
+  const std::pair<J, J> ends[10] = {{J::A, J::B}, {J::B, J::P1}, {J::B, J::C}, {J::C, J::P1}, {J::C, J::E},
+                                    {J::P1, J::D}, {J::E, J::D}, {J::D, J::A}, {J::D, J::F}, {J::F, J::E}};
+  Eigen::VectorXd theta(10);
+  constexpr double turn = 2.0 * std::numbers::pi;
+  for (int k = 0; k < 10; ++k) {
+    const double angle = direction(p[at(ends[k].first)], p[at(ends[k].second)]);
+    theta(k) = angle + turn * std::round((near(k) - angle) / turn);
+  }
+  return theta;
+}
+
+Eigen::VectorXd jansen_seed_estimates(JansenModel model, const JansenLeg& leg) {
+  const Eigen::VectorXd eight = JansenClosure::seed_estimates();
+  if (model == JansenModel::eight_equations) return eight;
+  // The joints seed 000's (approximate) estimates describe, read as seed 001's ten directions.
+  const JansenJoints joints = leg.joints(JansenClosure::seed_crank_angle, JansenAngles(eight));
+  return jansen_angles_of(model, joints, Eigen::VectorXd::Zero(10));
+}
+
+const std::vector<std::string>& jansen_solver_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = {"full", "sequential", "analytic"};
+    for (const std::string& type : nonlinear::gsl_multiroot_types()) all.push_back("gsl-" + type);
+    return all;
+  }();
+  return names;
+}
+
+std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const std::string& solver,
+                                                     const std::string& linear, const nonlinear::NewtonOptions& options) {
+  const bool eight = model == JansenModel::eight_equations;
+  if (solver == "full") return eight ? make_full<JansenClosure>(linear, options) : make_full<Jansen10Closure>(linear, options);
+  if (solver == "sequential") {
+    if (eight) return std::make_unique<SequentialEight>(options);
+    return std::make_unique<SequentialDerived<Jansen10Closure>>(options, jansen_seed_estimates(model, JansenLeg()));
+  }
+  if (solver == "analytic") return std::make_unique<Analytic>(model);
+  if (solver.starts_with("gsl-")) {
+    const std::string type = solver.substr(4);
+    const auto& types = nonlinear::gsl_multiroot_types();
+    if (std::find(types.begin(), types.end(), type) == types.end()) {
+      throw std::invalid_argument("unknown solver '" + solver + "'");
+    }
+    if (eight) return std::make_unique<GslSolver<JansenClosure>>(type, options);
+    return std::make_unique<GslSolver<Jansen10Closure>>(type, options);
+  }
+  throw std::invalid_argument("unknown solver '" + solver + "' (expected full, sequential, analytic or gsl-<type>)");
+}
+
+JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
+                        double step_deg) {
+  if (!(step_deg != 0.0) || !std::isfinite(start_deg) || !std::isfinite(stop_deg) || !std::isfinite(step_deg) ||
+      (stop_deg - start_deg) * step_deg < 0.0) {
+    throw std::invalid_argument("sweep " + std::to_string(start_deg) + ":" + std::to_string(stop_deg) + ":" +
+                                std::to_string(step_deg) + " does not step from its start towards its stop");
+  }
+  const JansenLeg leg;
+  JansenSweep sweep;
+  Eigen::VectorXd angles = jansen_seed_estimates(model, leg);
+  double current_deg = JansenClosure::seed_crank_angle / degrees;
+
+  // Moves from current_deg to target_deg: tries the whole step; when a solve fails, halves the
+  // step and tries again from the last pose that solved (at most 20 halvings in all).
+  auto advance_to = [&](double target_deg) -> PoseOutcome {
+    double reached = current_deg, step = target_deg - current_deg;
+    int halvings = 0;
+    while (true) {
+      const bool whole_way = step == target_deg - reached;
+      const double next = whole_way ? target_deg : reached + step;
+      Eigen::VectorXd trial = angles;
+      const PoseOutcome outcome = solver.solve(next * degrees, trial);
+      if (outcome.status == Status::converged) {
+        angles = trial;
+        reached = next;
+        if (whole_way) return outcome;
+        step = target_deg - reached;  // aim for the target again
+      } else {
+        if (++halvings > 20) return outcome;
+        ++sweep.step_halvings;
+        step *= 0.5;
+      }
+    }
+  };
+
+  // Solve at 1.57 rad from the seed's estimates, then walk to the first requested angle.
+  PoseOutcome outcome = solver.solve(current_deg * degrees, angles);
+  if (outcome.status != Status::converged) {
+    sweep.status = outcome.status;
+    return sweep;
+  }
+  const double walk_step = std::abs(step_deg);
+  while (std::abs(start_deg - current_deg) > 1e-12) {
+    const double next = std::abs(start_deg - current_deg) <= walk_step
+                            ? start_deg
+                            : current_deg + std::copysign(walk_step, start_deg - current_deg);
+    outcome = advance_to(next);
+    if (outcome.status != Status::converged) {
+      sweep.status = outcome.status;
+      return sweep;
+    }
+    current_deg = next;
+    ++sweep.walk_in_poses;
+  }
+
+  const int count = static_cast<int>(std::floor((stop_deg - start_deg) / step_deg + 1e-9)) + 1;
+  for (int i = 0; i < count; ++i) {
+    const double target = start_deg + i * step_deg;
+    if (i > 0) {
+      outcome = advance_to(target);
+    } else {
+      outcome = solver.solve(target * degrees, angles);  // refine at the start itself
+    }
+    if (outcome.status != Status::converged) {
+      sweep.status = outcome.status;
+      break;
+    }
+    current_deg = target;
+    JansenPose pose;
+    pose.crank_deg = target;
+    pose.angles = angles;
+    pose.outcome = outcome;
+    pose.joints = jansen_joints(model, leg, target * degrees, angles);
+    pose.length_error = leg.worst_length_error(pose.joints);
+    if (const auto exact = leg.closed_form_joints(target * degrees)) {
+      for (int j = 0; j < jansen_joint_count; ++j) {
+        pose.closed_form_distance = std::max(pose.closed_form_distance, (pose.joints[j] - (*exact)[j]).norm());
+      }
+    }
+    if (JansenLeg::triangle_orientation(pose.joints) != 1) sweep.orientation_kept = false;
+    sweep.worst_closed_form_distance = std::max(sweep.worst_closed_form_distance, pose.closed_form_distance);
+    sweep.worst_length_error = std::max(sweep.worst_length_error, pose.length_error);
+    sweep.poses.push_back(std::move(pose));
+  }
+  return sweep;
+}
+
+}  // namespace numlab::mechanisms
