@@ -8,6 +8,7 @@
 #include "bench_linear.hpp"
 #include "cli_common.hpp"
 #include "labs_command.hpp"
+#include "mechanism_command.hpp"
 #include "solve_linear.hpp"
 #include "solve_nonlinear.hpp"
 
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
   const SolveNonlinearCommand solve_nonlinear(*solve);
   const LabsCommand labs(app);
   const BenchCommand bench(app);
+  const MechanismCommand mechanism(app);
 
   try {
     app.parse(argc, argv);
@@ -51,6 +53,7 @@ int main(int argc, char** argv) {
     if (labs.list_selected()) return labs.list();
     if (labs.lab_selected()) return labs.run();
     if (bench.selected()) return bench.run();
+    if (mechanism.selected()) return mechanism.run();
     return run_main_job();
   } catch (const std::invalid_argument& error) {
     std::cerr << "numlab: error: " << error.what() << '\n';

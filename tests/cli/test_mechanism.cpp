@@ -1,0 +1,64 @@
+// `numlab mechanism` against design/cli.md: CSV columns, JSON fields, exit codes, bad input.
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "run_numlab.hpp"
+
+using numlab::test::require_bad_input;
+using numlab::test::run_json;
+using numlab::test::run_numlab;
+using Catch::Matchers::StartsWith;
+
+TEST_CASE("mechanism jansen: a whole turn, every pose checked against the closed form", "[cli][mechanism]") {
+  const auto out = run_json("mechanism jansen", "--sweep 0:359:1 --tol 1e-10", 0);
+  CHECK(out["mechanism"] == "jansen");
+  CHECK(out["solver"] == "full");
+  REQUIRE(out["poses"].size() == 360);
+  const auto& pose = out["poses"][90];
+  CHECK(pose["crank_deg"] == 90.0);
+  CHECK(pose["angles"].size() == 8);
+  CHECK(pose["joints"].size() == 8);
+  CHECK(pose["joints"]["O"] == nlohmann::json::array({0.0, 0.0}));
+  CHECK(pose["joints"]["P1"] == nlohmann::json::array({-38.0, -7.8}));
+  CHECK(pose["status"] == "converged");
+  CHECK(out["worst_closed_form_distance"].get<double>() <= 1e-8);
+  CHECK(out["branch_kept"] == true);
+  CHECK(out.contains("time_s"));
+}
+
+TEST_CASE("mechanism jansen10 and every solver name", "[cli][mechanism]") {
+  for (const std::string solver : {"full", "sequential", "analytic", "gsl-newton", "gsl-hybrids"}) {
+    const auto out = run_json("mechanism jansen10", "--sweep 0:90:30 --solver " + solver, 0);
+    INFO(solver);
+    REQUIRE(out["poses"].size() == 4);
+    CHECK(out["poses"][0]["angles"].contains("theta12"));
+    CHECK(out["worst_closed_form_distance"].get<double>() <= 1e-8);
+  }
+}
+
+TEST_CASE("mechanism CSV: one row per crank angle with the documented columns", "[cli][mechanism]") {
+  const auto run = run_numlab("mechanism jansen --sweep 0:20:10 --format csv");
+  REQUIRE(run.exit_code == 0);
+  std::istringstream lines(run.out);
+  std::string header, row;
+  std::getline(lines, header);
+  CHECK_THAT(header, StartsWith("crank_deg,theta1,theta2,theta3,theta4,theta5,theta6,theta7,theta8,x_O,y_O,x_P1,y_P1,"
+                                "x_A,y_A,x_B,y_B,x_C,y_C,x_D,y_D,x_E,y_E,x_F,y_F,iterations,residual_inf,status"));
+  int rows = 0;
+  while (std::getline(lines, row)) ++rows;
+  CHECK(rows == 3);
+}
+
+TEST_CASE("mechanism: bad input gets one error line and exit 2", "[cli][mechanism][bad-input]") {
+  require_bad_input("mechanism strandbeest --crank 10", "name");
+  require_bad_input("mechanism jansen", "give --crank DEG or --sweep");
+  require_bad_input("mechanism jansen --sweep 0:10", "expected START:STOP:STEP");
+  require_bad_input("mechanism jansen --sweep 0:10:-1", "point from START to STOP");
+  require_bad_input("mechanism jansen --sweep 0:x:1", "'x' is not a finite number");
+  require_bad_input("mechanism jansen --crank 10 --sweep 0:10:1", "excludes");
+  require_bad_input("mechanism jansen --crank 10 --solver bisection", "--solver");
+  require_bad_input("mechanism jansen --crank 10 --tol -1", "non-negative");
+  require_bad_input("mechanism mustang --crank 45", "not available yet");
+}
