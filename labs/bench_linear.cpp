@@ -9,6 +9,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "bench_jansen.hpp"
 #include "chart.hpp"
 #include "numlab/linalg/eigen_reference.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
@@ -130,7 +131,7 @@ std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick) {
 
 BenchCommand::BenchCommand(CLI::App& app) {
   command_ = app.add_subcommand("bench", "Measure speed: median of repeated in-process runs, as ratios");
-  command_->add_option("what", what_, "What to measure (linear)")->check(CLI::IsMember({"linear"}));
+  command_->add_option("what", what_, "What to measure: linear or jansen")->check(CLI::IsMember({"linear", "jansen"}));
   command_->add_option("--chart", chart_, "Chart file (.svg or .png); default OUT/bench-linear.svg");
   command_->add_option("--sizes", sizes_, "Sizes n, comma-separated")->delimiter(',')->check(CLI::Range(1, 4096));
   command_->add_flag("--quick", quick_, "Fewer repetitions (a smoke run, not a measurement)");
@@ -138,6 +139,7 @@ BenchCommand::BenchCommand(CLI::App& app) {
 }
 
 int BenchCommand::run() const {
+  if (what_ == "jansen") return run_jansen();
   const ChartFiles files = chart_files(chart_.empty() ? common_.out_dir + "/bench-linear.svg" : chart_);
   const std::vector<BenchRow> rows = bench_linear(sizes_, quick_);
   draw_chart(files, chart_data(rows, sizes_), chart_script(files, rows, sizes_));
@@ -175,6 +177,25 @@ int BenchCommand::run() const {
     }
     table.print(std::cout);
     std::cout << "\nChart: " << files.chart << " (data " << files.data << ", script " << files.script << ")\n";
+  }
+  return exit_success;
+}
+
+int BenchCommand::run_jansen() const {
+  const double tolerance = common_.tolerance.value_or(1e-10);
+  const auto rows = bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick_);
+  if (common_.format == Format::json) {
+    nlohmann::ordered_json out = {{"benchmark", "jansen"}, {"rows", nlohmann::ordered_json::array()}};
+    for (const auto& row : rows) {
+      out["rows"].push_back({{"solver", row.solver},
+                             {"tolerance", row.tolerance},
+                             {"time_s", row.time_s},
+                             {"error", number_or_null(row.error)},
+                             {"iterations", row.iterations}});
+    }
+    std::cout << out.dump(2) << '\n';
+  } else {
+    print_jansen_bench(std::cout, rows);
   }
   return exit_success;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// `numlab bench linear`: median time per solve for GEPP, GSL LU, Eigen LU and Gauss-Seidel
+// `numlab bench linear` (and `numlab bench jansen`, see bench_jansen.hpp): median time per solve for GEPP, GSL LU, Eigen LU and Gauss-Seidel
 // against n, with ratios to GSL LU and a log-log chart with an n^3 guide.
 
 #include <CLI/CLI.hpp>
@@ -27,6 +27,7 @@ class BenchCommand {
   int run() const;
 
  private:
+  int run_jansen() const;
   CLI::App* command_;
   CommonOptions common_;
   std::string what_ = "linear";

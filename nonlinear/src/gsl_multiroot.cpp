@@ -51,9 +51,16 @@ int jacobian_callback(const gsl_vector* x, void* params, gsl_matrix* J) {
   return state.J.allFinite() ? GSL_SUCCESS : GSL_EBADFUNC;
 }
 
+// f and J in one evaluation, as GSL's fdf solvers ask for them (shared work, when the system has it).
 int both_callback(const gsl_vector* x, void* params, gsl_vector* f, gsl_matrix* J) {
-  const int status = residual_callback(x, params, f);
-  return status != GSL_SUCCESS ? status : jacobian_callback(x, params, J);
+  auto& state = *static_cast<CallbackState*>(params);
+  state.x = view(x);
+  state.system->residual_and_jacobian(state.x, state.f, state.J);
+  ++state.function_evaluations;
+  ++state.jacobian_evaluations;
+  view(f) = state.f;
+  GslMatrixMap(J->data, J->size1, J->size2, Eigen::OuterStride<>(J->tda)) = state.J;
+  return state.f.allFinite() && state.J.allFinite() ? GSL_SUCCESS : GSL_EBADFUNC;
 }
 
 const gsl_multiroot_fsolver_type* derivative_free_type(const std::string& name) {

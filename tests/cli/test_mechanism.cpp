@@ -62,3 +62,15 @@ TEST_CASE("mechanism: bad input gets one error line and exit 2", "[cli][mechanis
   require_bad_input("mechanism jansen --crank 10 --tol -1", "non-negative");
   require_bad_input("mechanism mustang --crank 45", "not available yet");
 }
+
+TEST_CASE("bench jansen: JSON rows with solver, tolerance, time and error", "[cli][bench][mechanism]") {
+  const auto out = run_json("bench jansen", "--quick", 0);
+  REQUIRE(out["rows"].size() == 7);  // full x4 linear solvers, sequential, analytic, gsl-newton
+  for (const auto& row : out["rows"]) {
+    INFO(row["solver"]);
+    CHECK(row["tolerance"].get<double>() == 1e-10);
+    CHECK(row["time_s"].get<double>() > 0.0);
+    CHECK(row["error"].get<double>() <= 1e-8);  // every solver agrees with the closed form
+  }
+  CHECK(out["rows"][0]["solver"] == "full");
+}

@@ -74,7 +74,12 @@ struct JansenSweep {
 // before. The sweep begins with seed 000's estimates at 1.57 rad and, if `start` is elsewhere,
 // first walks there in steps no larger than `step`. A failed step is halved (up to 20 times)
 // before the sweep stops with that status.
+// With checks off (for timing), poses carry angles and joints only.
+enum class SweepChecks { against_closed_form, none };
 JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
-                        double step_deg);
+                        double step_deg, SweepChecks checks = SweepChecks::against_closed_form);
+
+// The worst joint distance from the closed form over a sweep's poses (for sweeps run unchecked).
+double worst_closed_form_distance(const JansenSweep& sweep);
 
 }  // namespace numlab::mechanisms

@@ -22,6 +22,13 @@ class AsDynamicSystem final : public DynamicSystem {
     system_.jacobian(Vector<S::size>(x), fixed_J);
     J = fixed_J;
   }
+  void residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd& f, Eigen::MatrixXd& J) const override {
+    Vector<S::size> fixed_f;
+    Matrix<S::size> fixed_J;
+    evaluate(system_, Vector<S::size>(x), fixed_f, fixed_J);  // shared work, when S offers it
+    f = fixed_f;
+    J = fixed_J;
+  }
 
  private:
   const S& system_;

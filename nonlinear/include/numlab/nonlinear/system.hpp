@@ -52,6 +52,11 @@ class DynamicSystem {
   virtual int dimension() const = 0;
   virtual void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const = 0;
   virtual void jacobian(const Eigen::VectorXd& x, Eigen::MatrixXd& J) const = 0;
+  // Both at once; systems that share work between f and J override it.
+  virtual void residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd& f, Eigen::MatrixXd& J) const {
+    residual(x, f);
+    jacobian(x, J);
+  }
 };
 
 }  // namespace numlab::nonlinear

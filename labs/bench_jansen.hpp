@@ -1,0 +1,27 @@
+#pragma once
+// `numlab bench jansen`: the time per 360-pose crank cycle of every Jansen solver at one Newton
+// tolerance, its worst joint error against the closed form, and the ratios the toolkit aims for.
+
+#include <string>
+#include <vector>
+
+#include "numlab/mechanisms/jansen_solvers.hpp"
+
+namespace numlab::cli {
+
+struct JansenBenchRow {
+  std::string solver;  // full, full-gauss-seidel, full-gsl-lu, full-eigen-lu, sequential, analytic, gsl-<type>
+  mechanisms::JansenModel model;
+  double tolerance;
+  double time_s;  // median per cycle
+  double error;   // worst joint distance from the closed form over the cycle
+  int iterations; // summed over the cycle
+};
+
+// One row per solver (all eight GSL types included unless `quick`).
+std::vector<JansenBenchRow> bench_jansen(mechanisms::JansenModel model, double tolerance, bool quick);
+
+// Prints the table and the three target ratios; returns the JSON rows.
+void print_jansen_bench(std::ostream& out, const std::vector<JansenBenchRow>& rows);
+
+}  // namespace numlab::cli
