@@ -51,6 +51,11 @@ const std::vector<Lab>& all_labs() {
        run_inverse2x2_lab},
       {"newton", "Newton-Raphson against GSL's eight multiroot types: quadratic convergence, Jacobian checks, failures",
        run_newton_lab},
+      {"jansen", "The Jansen leg: Newton with trace, the Jacobian check, every solver over a cycle, the scene",
+       run_jansen_lab},
+      {"jansen-sequential", "Sequential vs full Newton: seed 000's Figure 4 done right, timing, over-modelling",
+       run_jansen_sequential_lab},
+      {"beest", "Seed 000's four-legged beest, drawn and animated from one solved cycle", run_beest_lab},
   };
   return labs;
 }

@@ -51,5 +51,8 @@ int run_gauss_lab(LabSession& session);
 int run_seidel_lab(LabSession& session);
 int run_inverse2x2_lab(LabSession& session);
 int run_newton_lab(LabSession& session);
+int run_jansen_lab(LabSession& session);
+int run_jansen_sequential_lab(LabSession& session);
+int run_beest_lab(LabSession& session);
 
 }  // namespace numlab::cli

@@ -16,9 +16,9 @@ namespace {
 
 // Without arguments numlab runs its main job non-interactively.
 int run_main_job() {
-  std::cout << "numlab: no sub-command, so running the main job: the Gaussian elimination lab.\n"
+  std::cout << "numlab: no sub-command, so running the main job: the Jansen leg lab.\n"
                "        (numlab --help lists the sub-commands; numlab labs lists the labs.)\n";
-  return numlab::cli::run_lab("gauss", false, "out");
+  return numlab::cli::run_lab("jansen", false, "out");
 }
 
 }  // namespace

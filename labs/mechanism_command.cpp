@@ -10,6 +10,7 @@
 
 #include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
+#include "jansen_scene.hpp"
 #include "table.hpp"
 
 namespace numlab::cli {
@@ -127,6 +128,10 @@ MechanismCommand::MechanismCommand(CLI::App& app) {
       ->check(CLI::IsMember(mechanisms::jansen_solver_names()));
   command_->add_option("--linear", linear_, "Inner solver of full Newton")
       ->check(CLI::IsMember({"gepp", "gauss-seidel", "gsl-lu", "eigen-lu"}));
+  command_->add_option("--svg", svg_, "Draw the first pose and the foot path to this SVG file");
+  command_->add_option("--animate", animate_, "Write an animated SVG of the sweep to this file");
+  command_->add_option("--beest", beest_, "Draw seed 000's four-legged beest from the sweep (a full turn)");
+  command_->add_flag("--beest-animated{4.0}", beest_seconds_, "Animate the beest");
   add_common_options(*command_, common_);
 }
 
@@ -145,6 +150,11 @@ int MechanismCommand::run() const {
   const mechanisms::JansenSweep sweep = mechanisms::crank_sweep(model, *solver, range.start, range.stop, range.step);
   const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 
+  if (!sweep.poses.empty()) {
+    if (!svg_.empty()) write_file_atomically(svg_, jansen_pose_svg(sweep, 0));
+    if (!animate_.empty()) write_file_atomically(animate_, jansen_animation_svg(sweep, 4.0));
+    if (!beest_.empty()) write_file_atomically(beest_, beest_svg(sweep, beest_seconds_));
+  }
   if (common_.format == Format::json) {
     std::cout << json_of(name_, solver_, model, sweep, time_s).dump(2) << '\n';
   } else if (common_.format == Format::csv) {

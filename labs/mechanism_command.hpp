@@ -23,6 +23,10 @@ class MechanismCommand {
   std::string sweep_;
   std::string solver_ = "full";
   std::string linear_ = "gepp";
+  std::string svg_;
+  std::string animate_;
+  std::string beest_;
+  double beest_seconds_ = 0.0;
 };
 
 struct SweepRange {

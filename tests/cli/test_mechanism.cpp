@@ -2,6 +2,9 @@
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "run_numlab.hpp"
@@ -73,4 +76,19 @@ TEST_CASE("bench jansen: JSON rows with solver, tolerance, time and error", "[cl
     CHECK(row["error"].get<double>() <= 1e-8);  // every solver agrees with the closed form
   }
   CHECK(out["rows"][0]["solver"] == "full");
+}
+
+TEST_CASE("mechanism --svg and --animate write the scene", "[cli][mechanism][scene]") {
+  const std::string folder = numlab::test::temporary_folder();
+  const auto run = run_numlab("mechanism jansen --sweep 0:359:10 --svg " + folder + "/leg.svg --animate " + folder +
+                              "/leg-animated.svg");
+  REQUIRE(run.exit_code == 0);
+  std::ifstream still(folder + "/leg.svg"), moving(folder + "/leg-animated.svg");
+  const std::string still_svg((std::istreambuf_iterator<char>(still)), std::istreambuf_iterator<char>());
+  const std::string moving_svg((std::istreambuf_iterator<char>(moving)), std::istreambuf_iterator<char>());
+  CHECK(still_svg.find("<svg") == 0);
+  CHECK(still_svg.find(">F</text>") != std::string::npos);  // joints are labelled
+  CHECK(still_svg.find("<polygon") != std::string::npos);   // the foot path
+  CHECK(moving_svg.find("repeatCount=\"indefinite\"") != std::string::npos);
+  std::filesystem::remove_all(folder);
 }
