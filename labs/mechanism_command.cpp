@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
+#include <numbers>
 #include <nlohmann/json.hpp>
 
 #include "numlab/mechanisms/jansen_solvers.hpp"
@@ -29,16 +31,29 @@ double parse_degrees(const std::string& token, const std::string& whole) {
   return value;
 }
 
+// |dF / d theta_i| at a pose, from the 8-equation model's rates (the 10-equation model's joints are
+// the same, so its 8 angles are read off them).
+double foot_speed(JansenModel model, const mechanisms::JansenPose& pose) {
+  const mechanisms::JansenLeg leg;
+  const Eigen::VectorXd eight =
+      model == JansenModel::eight_equations
+          ? pose.angles
+          : mechanisms::jansen_angles_of(JansenModel::eight_equations, pose.joints,
+                                         Eigen::VectorXd(mechanisms::JansenClosure::seed_estimates()));
+  const auto rates = leg.rates(pose.crank_deg * std::numbers::pi / 180.0, mechanisms::JansenAngles(eight));
+  return rates.status == Status::converged ? rates.foot_speed : std::numeric_limits<double>::quiet_NaN();
+}
+
 void print_csv(std::ostream& out, JansenModel model, const mechanisms::JansenSweep& sweep) {
   out << "crank_deg";
   for (const std::string& name : mechanisms::jansen_angle_names(model)) out << ',' << name;
   for (std::string_view joint : mechanisms::jansen_joint_names) out << ",x_" << joint << ",y_" << joint;
-  out << ",iterations,residual_inf,status\n";
+  out << ",foot_speed,iterations,residual_inf,status\n";
   for (const auto& pose : sweep.poses) {
     out << fmt::format("{:.10g}", pose.crank_deg);
     for (double angle : pose.angles) out << fmt::format(",{:.17g}", angle);
     for (const auto& joint : pose.joints) out << fmt::format(",{:.17g},{:.17g}", joint.x(), joint.y());
-    out << fmt::format(",{},{:.6g},{}\n", pose.outcome.iterations, pose.outcome.residual_inf,
+    out << fmt::format(",{:.10g},{},{:.6g},{}\n", foot_speed(model, pose), pose.outcome.iterations, pose.outcome.residual_inf,
                        to_string(pose.outcome.status));
   }
 }
@@ -56,6 +71,7 @@ nlohmann::ordered_json json_of(const std::string& name, const std::string& solve
     out["poses"].push_back({{"crank_deg", pose.crank_deg},
                             {"angles", angles},
                             {"joints", joints},
+                            {"foot_speed", number_or_null(foot_speed(model, pose))},
                             {"iterations", pose.outcome.iterations},
                             {"residual_inf", pose.outcome.residual_inf},
                             {"status", std::string(to_string(pose.outcome.status))}});
@@ -77,7 +93,7 @@ void print_text(std::ostream& out, const std::string& name, const std::string& s
       << fmt::format("status             {}\n", to_string(sweep.status))
       << fmt::format("poses              {}\n", sweep.poses.size());
   constexpr std::size_t shown = 8;
-  Table table({"crank (deg)", "x_F", "y_F", "iterations", "||f||_inf", "status"});
+  Table table({"crank (deg)", "x_F", "y_F", "foot speed", "iterations", "||f||_inf", "status"});
   for (std::size_t i = 0; i < sweep.poses.size(); ++i) {
     if (sweep.poses.size() > shown && i == shown / 2) {
       table.add_row({fmt::format("... ({} more)", sweep.poses.size() - shown)});
@@ -86,7 +102,7 @@ void print_text(std::ostream& out, const std::string& name, const std::string& s
     const auto& pose = sweep.poses[i];
     const auto& foot = pose.joints[static_cast<std::size_t>(mechanisms::JansenJoint::F)];
     table.add_row({fmt::format("{:g}", pose.crank_deg), fmt::format("{:.6f}", foot.x()), fmt::format("{:.6f}", foot.y()),
-                   std::to_string(pose.outcome.iterations), scientific(pose.outcome.residual_inf),
+                   fmt::format("{:.4f}", foot_speed(model, pose)), std::to_string(pose.outcome.iterations), scientific(pose.outcome.residual_inf),
                    std::string(to_string(pose.outcome.status))});
   }
   table.print(out);
@@ -94,7 +110,8 @@ void print_text(std::ostream& out, const std::string& name, const std::string& s
                      "error {:.2g}; branch {}\n",
                      sweep.worst_closed_form_distance, sweep.worst_length_error,
                      sweep.orientation_kept ? "kept" : "FLIPPED")
-      << fmt::format("time               {:.3g} s\n", time_s);
+      << fmt::format("time               {:.3g} s\n", time_s)
+      << "foot speed is |dF/d theta_i|: length units per radian of crank\n";
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/mechanisms/circle_intersection.hpp"
 
 namespace numlab::mechanisms {
@@ -87,6 +88,29 @@ JansenAngles JansenLeg::angles_of(const JansenJoints& p, const JansenAngles& nea
     theta(k) = nearest_turn(direction(p[at(ends[k].first)], p[at(ends[k].second)]), near(k));
   }
   return theta;
+}
+
+JansenRates JansenLeg::rates(double crank_angle, const JansenAngles& theta) const {
+  const JansenClosure closure(crank_angle, lengths_);
+  JansenClosure::Vector f;
+  JansenClosure::Matrix J;
+  closure.residual_and_jacobian(theta, f, J);
+  // df/d(theta_i): the crank term li u(theta_i) appears in every equation; its sine rows (even
+  // index) change by li cos(theta_i), its cosine rows by -li sin(theta_i).
+  JansenClosure::Vector crank_derivative;
+  for (int row = 0; row < 8; row += 2) {
+    crank_derivative(row) = lengths_.crank * std::cos(crank_angle);
+    crank_derivative(row + 1) = -lengths_.crank * std::sin(crank_angle);
+  }
+  const auto solved = linalg::gauss_elimination<8>(J, -crank_derivative);
+  JansenRates rates{solved.x, Eigen::Vector2d::Zero(), 0.0, solved.status};
+  if (solved.status != Status::converged) return rates;
+  // F = P1 + l7 u(theta7) + l9 u(theta8 + c): differentiate each unit vector, u' = (-sin, cos).
+  auto turning = [](double angle) { return Eigen::Vector2d(-std::sin(angle), std::cos(angle)); };
+  rates.foot_velocity = lengths_.l7 * turning(theta(6)) * rates.angle_rates(6) +
+                        foot_.l9 * turning(theta(7) + foot_angle_) * rates.angle_rates(7);
+  rates.foot_speed = rates.foot_velocity.norm();
+  return rates;
 }
 
 double JansenLeg::worst_length_error(const JansenJoints& p) const {

@@ -136,3 +136,29 @@ TEST_CASE("Sweeps start anywhere, step backwards, and refuse a step that points 
   CHECK_THROWS_AS(crank_sweep(JansenModel::eight_equations, *solver, 0.0, 10.0, 0.0), std::invalid_argument);
   CHECK_THROWS_AS(make_jansen_solver(JansenModel::eight_equations, "bisection", "gepp", tight()), std::invalid_argument);
 }
+
+TEST_CASE("Foot velocity from one extra solve agrees with finite differences of the closed form",
+          "[mechanisms][velocity]") {
+  const JansenLeg leg;
+  const auto solver = make_jansen_solver(JansenModel::eight_equations, "full", "gepp", tight());
+  const JansenSweep sweep = crank_sweep(JansenModel::eight_equations, *solver, 0.0, 350.0, 10.0);
+  REQUIRE(sweep.status == Status::converged);
+  const std::size_t F = static_cast<std::size_t>(JansenJoint::F);
+  double fastest = 0.0, slowest = 1e300;
+  for (const JansenPose& pose : sweep.poses) {
+    const double crank = pose.crank_deg * degrees;
+    const JansenRates rates = leg.rates(crank, JansenAngles(pose.angles));
+    REQUIRE(rates.status == Status::converged);
+    // Central difference of the exact foot position, h = 1e-5 rad: error ~ h^2 |F'''| ~ 1e-8.
+    const double h = 1e-5;
+    const auto ahead = leg.closed_form_joints(crank + h), behind = leg.closed_form_joints(crank - h);
+    REQUIRE(ahead);
+    REQUIRE(behind);
+    const Eigen::Vector2d difference = ((*ahead)[F] - (*behind)[F]) / (2.0 * h);
+    INFO("crank " << pose.crank_deg);
+    CHECK((rates.foot_velocity - difference).norm() <= 1e-6 * std::max(1.0, difference.norm()));
+    fastest = std::max(fastest, rates.foot_speed);
+    slowest = std::min(slowest, rates.foot_speed);
+  }
+  CHECK(fastest > 2.0 * slowest);  // a walking foot: slow on the ground, fast in the air
+}

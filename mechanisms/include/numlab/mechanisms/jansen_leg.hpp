@@ -33,6 +33,14 @@ struct JansenLink {
   double length;
 };
 
+// Rates per unit crank rate (d/d theta_i; multiply by the crank's angular speed for time rates).
+struct JansenRates {
+  JansenAngles angle_rates;       // d theta_k / d theta_i, k = 1..8
+  Eigen::Vector2d foot_velocity;  // dF / d theta_i
+  double foot_speed;              // |dF / d theta_i|: length units per radian of crank
+  Status status;                  // singular if J could not be solved (a toggle position)
+};
+
 class JansenLeg {
  public:
   explicit JansenLeg(JansenLengths lengths = {}, JansenFootLengths foot = {});
@@ -45,6 +53,10 @@ class JansenLeg {
   std::optional<JansenJoints> closed_form_joints(double crank_angle) const;
   // The angles of those joints, each within pi of `near` (so they follow a sweep continuously).
   static JansenAngles angles_of(const JansenJoints& joints, const JansenAngles& near);
+
+  // Angular rates and the foot's velocity at a solved pose: differentiating f(theta; theta_i) = 0
+  // gives J d(theta)/d(theta_i) = -df/d(theta_i), one more solve with the Jacobian at hand.
+  JansenRates rates(double crank_angle, const JansenAngles& theta) const;
 
   // The eleven fixed distances: nine links plus the two rigid triangles' third sides (P1-C, E-F).
   const std::array<JansenLink, 11>& links() const { return links_; }
