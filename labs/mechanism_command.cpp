@@ -48,13 +48,13 @@ void print_csv(std::ostream& out, JansenModel model, const mechanisms::JansenSwe
   out << "crank_deg";
   for (const std::string& name : mechanisms::jansen_angle_names(model)) out << ',' << name;
   for (std::string_view joint : mechanisms::jansen_joint_names) out << ",x_" << joint << ",y_" << joint;
-  out << ",foot_speed,iterations,residual_inf,status\n";
+  out << ",iterations,residual_inf,status,foot_speed\n";  // design/cli.md's columns, then ours
   for (const auto& pose : sweep.poses) {
     out << fmt::format("{:.10g}", pose.crank_deg);
     for (double angle : pose.angles) out << fmt::format(",{:.17g}", angle);
     for (const auto& joint : pose.joints) out << fmt::format(",{:.17g},{:.17g}", joint.x(), joint.y());
-    out << fmt::format(",{:.10g},{},{:.6g},{}\n", foot_speed(model, pose), pose.outcome.iterations, pose.outcome.residual_inf,
-                       to_string(pose.outcome.status));
+    out << fmt::format(",{},{:.6g},{},{:.10g}\n", pose.outcome.iterations, pose.outcome.residual_inf,
+                       to_string(pose.outcome.status), foot_speed(model, pose));
   }
 }
 
