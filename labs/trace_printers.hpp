@@ -11,52 +11,45 @@
 
 namespace numlab::cli {
 
+// What every tracer holds: where text goes (nullptr: collect JSON records instead), whether to
+// pause after each record (--step), and the records collected.
+class TraceOutput {
+ public:
+  TraceOutput(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
+  const nlohmann::ordered_json& records() const { return records_; }
+
+ protected:
+  std::ostream* text_out_;
+  bool step_;
+  bool header_printed_ = false;
+  nlohmann::ordered_json records_ = nlohmann::ordered_json::array();
+};
+
 // Matrices larger than this are summarised in traces rather than printed whole.
 constexpr int max_traced_matrix_size = 12;
 
 // Seed 001's verbose mode, made readable: the augmented matrix [A | b] after each row swap and
 // each elimination, then each back-substituted value (all indices 1-based).
-class EliminationTracer : public linalg::GaussEliminationObserver<Eigen::Dynamic> {
+class EliminationTracer : public linalg::GaussEliminationObserver<Eigen::Dynamic>, public TraceOutput {
  public:
-  // text_out == nullptr collects JSON records instead of printing.
-  EliminationTracer(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
+  using TraceOutput::TraceOutput;
   void on_step(const linalg::GaussElimination<Eigen::Dynamic>& state, const linalg::EliminationRecord& record) override;
-  const nlohmann::ordered_json& records() const { return records_; }
-
- private:
-  std::ostream* text_out_;
-  bool step_;
-  nlohmann::ordered_json records_ = nlohmann::ordered_json::array();
 };
 
 // One row per sweep: k, ||dx||_inf, ||b - A x||_inf of the original system.
-class SweepTracer : public linalg::GaussSeidelObserver<Eigen::Dynamic> {
+class SweepTracer : public linalg::GaussSeidelObserver<Eigen::Dynamic>, public TraceOutput {
  public:
-  SweepTracer(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
+  using TraceOutput::TraceOutput;
   void on_sweep(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) override;
-  const nlohmann::ordered_json& records() const { return records_; }
-
- private:
-  std::ostream* text_out_;
-  bool step_;
-  bool header_printed_ = false;
-  nlohmann::ordered_json records_ = nlohmann::ordered_json::array();
 };
 
 // One row per Newton iteration: k, ||f||_inf, ||f||_2, ||dx||_inf, the inner linear solve's status
 // and iteration count (pivot columns for GEPP, sweeps for Gauss-Seidel), the damping factor and
 // the time since the start.
-class NewtonTracer : public nonlinear::NewtonObserver<Eigen::Dynamic> {
+class NewtonTracer : public nonlinear::NewtonObserver<Eigen::Dynamic>, public TraceOutput {
  public:
-  NewtonTracer(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
+  using TraceOutput::TraceOutput;
   void on_iteration(const nonlinear::NewtonRecord& record) override;
-  const nlohmann::ordered_json& records() const { return records_; }
-
- private:
-  std::ostream* text_out_;
-  bool step_;
-  bool header_printed_ = false;
-  nlohmann::ordered_json records_ = nlohmann::ordered_json::array();
 };
 
 // Prints [M | c] with aligned columns, each line indented.

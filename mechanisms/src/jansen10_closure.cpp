@@ -40,14 +40,4 @@ void Jansen10Closure::residual_and_jacobian(const Vector& theta, Vector& f, Matr
   }
 }
 
-void Jansen10Closure::residual(const Vector& theta, Vector& f) const {
-  Matrix unused;
-  residual_and_jacobian(theta, f, unused);
-}
-
-void Jansen10Closure::jacobian(const Vector& theta, Matrix& J) const {
-  Vector unused;
-  residual_and_jacobian(theta, unused, J);
-}
-
 }  // namespace numlab::mechanisms

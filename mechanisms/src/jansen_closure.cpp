@@ -38,16 +38,6 @@ void JansenClosure::residual_and_jacobian(const Vector& theta, Vector& f, Matrix
   J(7, 0) = -L.l1 * s(0); J(7, 2) = -L.l3 * s(2); J(7, 4) = -L.l5 * s(4); J(7, 6) = L.l7 * s(6);  J(7, 7) = L.l8 * s(7);
 }
 
-void JansenClosure::residual(const Vector& theta, Vector& f) const {
-  Matrix unused;
-  residual_and_jacobian(theta, f, unused);
-}
-
-void JansenClosure::jacobian(const Vector& theta, Matrix& J) const {
-  Vector unused;
-  residual_and_jacobian(theta, unused, J);
-}
-
 JansenClosure::Vector JansenClosure::seed_estimates() {
   Vector theta;
   theta << 2.62, 1.40, 3.73, 2.90, 5.26, 4.12, 5.14, 2.81;

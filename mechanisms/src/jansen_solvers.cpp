@@ -48,7 +48,7 @@ class FullNewton final : public JansenPoseSolver {
 };
 
 // One of seed 000's blocks: k + p u(alpha) - q u(beta) = 0 in (alpha, beta), sine row first.
-struct DyadClosure {
+struct DyadClosure : nonlinear::EvaluatesTogether<DyadClosure, 2> {
   static constexpr int size = 2;
   Eigen::Vector2d known;  // (k_y, k_x): the part already solved
   double p = 0.0, q = 0.0;
@@ -57,14 +57,6 @@ struct DyadClosure {
     const double ca = std::cos(x(0)), sa = std::sin(x(0)), cb = std::cos(x(1)), sb = std::sin(x(1));
     f << known(0) + p * sa - q * sb, known(1) + p * ca - q * cb;
     J << p * ca, -q * cb, -p * sa, q * sb;
-  }
-  void residual(const Eigen::Vector2d& x, Eigen::Vector2d& f) const {
-    Eigen::Matrix2d unused;
-    residual_and_jacobian(x, f, unused);
-  }
-  void jacobian(const Eigen::Vector2d& x, Eigen::Matrix2d& J) const {
-    Eigen::Vector2d unused;
-    residual_and_jacobian(x, unused, J);
   }
 };
 
@@ -77,7 +69,9 @@ class SequentialEight final : public JansenPoseSolver {
     const Eigen::Vector2d crank(L.a + L.crank * std::sin(crank_angle), L.b + L.crank * std::cos(crank_angle));
     PoseOutcome total;
     auto block = [&](const Eigen::Vector2d& known, double p, double q, int alpha, int beta) {
-      dyad_ = {known, p, q};
+      dyad_.known = known;
+      dyad_.p = p;
+      dyad_.q = q;
       const auto result = newton_.solve(Eigen::Vector2d(theta(alpha), theta(beta)));
       theta(alpha) = result.x(0);
       theta(beta) = result.x(1);

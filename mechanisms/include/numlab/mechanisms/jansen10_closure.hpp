@@ -33,7 +33,7 @@ void jansen10_residual(double crank_x, double crank_y, const Eigen::Matrix<Scala
   f(9) = 36.7 * sin(x(6)) + 49.0 * sin(x(8)) + 65.7 * sin(x(9));
 }
 
-class Jansen10Closure {
+class Jansen10Closure : public nonlinear::EvaluatesTogether<Jansen10Closure, 10> {
  public:
   static constexpr int size = 10;
   using Vector = linalg::Vector<10>;
@@ -42,8 +42,6 @@ class Jansen10Closure {
   explicit Jansen10Closure(double crank_angle) { set_crank_angle(crank_angle); }
   void set_crank_angle(double crank_angle);
   int dimension() const { return size; }
-  void residual(const Vector& theta, Vector& f) const;
-  void jacobian(const Vector& theta, Matrix& J) const;
   void residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const;
   double crank_x() const { return crank_x_; }
   double crank_y() const { return crank_y_; }

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "numlab/linalg/linear_result.hpp"
+#include "numlab/nonlinear/system.hpp"
 
 namespace numlab::mechanisms {
 
@@ -22,7 +23,7 @@ struct JansenLengths {
   double b = 38.0;  // and b to its left
 };
 
-class JansenClosure {
+class JansenClosure : public nonlinear::EvaluatesTogether<JansenClosure, 8> {
  public:
   static constexpr int size = 8;
   using Vector = linalg::Vector<8>;
@@ -32,8 +33,6 @@ class JansenClosure {
 
   void set_crank_angle(double crank_angle);
   int dimension() const { return size; }
-  void residual(const Vector& theta, Vector& f) const;
-  void jacobian(const Vector& theta, Matrix& J) const;
   void residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const;
 
   // Seed 000 Table 3: theta1 ... theta8 at theta_i = 1.57 rad, the start of the seed's branch.

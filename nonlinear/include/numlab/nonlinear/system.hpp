@@ -32,6 +32,21 @@ template <typename S>
 concept SharesEvaluation = requires(const S& system, const Vector<S::size>& x, Vector<S::size>& f,
                                     Matrix<S::size>& J) { system.residual_and_jacobian(x, f, J); };
 
+// For a system that computes f and J together: residual() and jacobian() from
+// Derived::residual_and_jacobian(), each discarding the other half.
+template <typename Derived, int N>
+class EvaluatesTogether {
+ public:
+  void residual(const Vector<N>& x, Vector<N>& f) const {
+    Matrix<N> unused = linalg::zero_or_empty<Matrix<N>>();
+    static_cast<const Derived&>(*this).residual_and_jacobian(x, f, unused);
+  }
+  void jacobian(const Vector<N>& x, Matrix<N>& J) const {
+    Vector<N> unused = linalg::zero_or_empty<Vector<N>>();
+    static_cast<const Derived&>(*this).residual_and_jacobian(x, unused, J);
+  }
+};
+
 // f(x) and J(x), in one call when the system offers it.
 template <NonlinearSystem S>
 void evaluate(const S& system, const Vector<S::size>& x, Vector<S::size>& f, Matrix<S::size>& J) {
