@@ -6,21 +6,13 @@
 #include <cctype>
 #include <stdexcept>
 
+#include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 
 namespace numlab::cli {
 
 namespace {
-
-// A DynamicSystem seen through Newton's compile-time interface.
-struct SystemReference {
-  static constexpr int size = Eigen::Dynamic;
-  const nonlinear::DynamicSystem& system;
-  int dimension() const { return system.dimension(); }
-  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const { system.residual(x, f); }
-  void jacobian(const Eigen::VectorXd& x, Eigen::MatrixXd& J) const { system.jacobian(x, J); }
-};
 
 std::string gsl_termination(const nonlinear::GslMultirootResult& result, const nonlinear::NewtonOptions& options) {
   std::string word(to_string(result.status));
@@ -45,34 +37,24 @@ const std::vector<std::string>& nonlinear_method_names() {
 NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::DynamicSystem& system,
                                   const Eigen::VectorXd& x0, const NonlinearSettings& settings,
                                   nonlinear::NewtonObserver<Eigen::Dynamic>* observer) {
-  NonlinearRun run;
+  // Newton's and GSL's results share their fields; only the termination line is written differently.
+  auto run_of = [](const auto& result, std::string termination) {
+    return NonlinearRun{result.x,          result.status,
+                        result.iterations, result.residual_norm,
+                        result.step_norm,  result.function_evaluations,
+                        result.jacobian_evaluations, std::move(termination)};
+  };
   if (method == "newton") {
-    const SystemReference reference{system};
-    nonlinear::Newton<SystemReference, nonlinear::RuntimeLinearStep> newton(
+    const nonlinear::DynamicReference reference{system};
+    nonlinear::Newton<nonlinear::DynamicReference, nonlinear::RuntimeLinearStep> newton(
         reference, settings.options, nonlinear::RuntimeLinearStep(settings.linear, system.dimension()));
     newton.set_observer(observer);
     const auto result = newton.solve(x0);
-    run = {result.x,
-           result.status,
-           result.iterations,
-           result.residual_norm,
-           result.step_norm,
-           result.function_evaluations,
-           result.jacobian_evaluations,
-           nonlinear::termination_line(result, settings.options)};
-    return run;
+    return run_of(result, nonlinear::termination_line(result, settings.options));
   }
   if (method.starts_with("gsl-")) {
     const auto result = nonlinear::gsl_multiroot_solve(system, x0, method.substr(4), settings.options, observer);
-    run = {result.x,
-           result.status,
-           result.iterations,
-           result.residual_norm,
-           result.step_norm,
-           result.function_evaluations,
-           result.jacobian_evaluations,
-           gsl_termination(result, settings.options)};
-    return run;
+    return run_of(result, gsl_termination(result, settings.options));
   }
   throw std::invalid_argument("unknown nonlinear method '" + method + "'");
 }

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/newton.hpp"
@@ -14,14 +15,7 @@ using namespace numlab::test;
 
 namespace {
 
-// A DynamicSystem seen through Newton's compile-time interface.
-struct Dynamic {
-  static constexpr int size = Eigen::Dynamic;
-  const DynamicSystem& system;
-  int dimension() const { return system.dimension(); }
-  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const { system.residual(x, f); }
-  void jacobian(const Eigen::VectorXd& x, Eigen::MatrixXd& J) const { system.jacobian(x, J); }
-};
+using Dynamic = DynamicReference;
 
 NewtonOptions strict_options() {
   NewtonOptions options;

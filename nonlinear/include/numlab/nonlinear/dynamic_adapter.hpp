@@ -34,4 +34,14 @@ class AsDynamicSystem final : public DynamicSystem {
   const S& system_;
 };
 
+// The other way round: a DynamicSystem seen through Newton's compile-time interface, evaluating f
+// and J separately (as the system's own residual() and jacobian() do).
+struct DynamicReference {
+  static constexpr int size = Eigen::Dynamic;
+  const DynamicSystem& system;
+  int dimension() const { return system.dimension(); }
+  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const { system.residual(x, f); }
+  void jacobian(const Eigen::VectorXd& x, Eigen::MatrixXd& J) const { system.jacobian(x, J); }
+};
+
 }  // namespace numlab::nonlinear
