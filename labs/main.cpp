@@ -7,6 +7,7 @@
 
 #include "bench_linear.hpp"
 #include "cli_common.hpp"
+#include "fit_command.hpp"
 #include "labs_command.hpp"
 #include "mechanism_command.hpp"
 #include "solve_linear.hpp"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
   const LabsCommand labs(app);
   const BenchCommand bench(app);
   const MechanismCommand mechanism(app);
+  const FitCommand fit(app);
 
   try {
     app.parse(argc, argv);
@@ -54,6 +56,7 @@ int main(int argc, char** argv) {
     if (labs.lab_selected()) return labs.run();
     if (bench.selected()) return bench.run();
     if (mechanism.selected()) return mechanism.run();
+    if (fit.selected()) return fit.run();
     return run_main_job();
   } catch (const std::invalid_argument& error) {
     std::cerr << "numlab: error: " << error.what() << '\n';

@@ -1,0 +1,65 @@
+#pragma once
+// Least-squares polynomial fits y ~ b0 + b1 x + ... + bD x^D, by four methods (design/cli.md):
+//
+//   normal         seed 001's curve_fit: the normal equations (V^T V) b = V^T y built from power
+//                  sums, solved by the hand-written GEPP (or Gauss-Seidel);
+//   normal-scaled  the same on t = (x - c) / s, with c the middle and s the half-width of the
+//                  data's x range (so t fills [-1, 1]); the coefficients are then mapped back
+//                  exactly to powers of the original x;
+//   gsl            gsl_multifit_linear (SVD of the column-balanced Vandermonde matrix V);
+//   eigen-qr       Eigen's Householder QR of V.
+//
+// Coefficients always come out in increasing powers of the original x.
+
+#include <Eigen/Core>
+#include <string>
+#include <string_view>
+
+#include "numlab/status.hpp"
+
+namespace numlab::fitting {
+
+enum class FitMethod { normal, normal_scaled, gsl, eigen_qr };
+
+// The linear solver for the normal equations (normal and normal-scaled only).
+enum class NormalSolver { gepp, gauss_seidel };
+
+std::string_view to_string(FitMethod method);
+std::string_view to_string(NormalSolver solver);
+// Throws std::invalid_argument listing the known names.
+FitMethod fit_method_from_string(std::string_view name);
+NormalSolver normal_solver_from_string(std::string_view name);
+
+struct FitOptions {
+  FitMethod method = FitMethod::normal;
+  int degree = 1;
+  NormalSolver solver = NormalSolver::gepp;
+  int max_sweeps = 100000;  // Gauss-Seidel's limit
+  double sweep_tolerance = 1e-14;  // Gauss-Seidel's relative step test
+};
+
+struct PolynomialFit {
+  FitMethod method = FitMethod::normal;
+  int degree = 0;
+  Eigen::VectorXd coefficients;  // b0 ... bD; empty when status is singular or non_finite
+  Status status = Status::converged;
+  int iterations = 0;                     // GEPP pivot columns or Gauss-Seidel sweeps; 1 for gsl/eigen-qr
+  double residual_sd = 0.0;               // sqrt(RSS / (n - D - 1)); 0 when n = D + 1
+  double r_squared = 0.0;                 // 1 - RSS / sum (y - mean y)^2; NaN when every y is equal
+  // kappa of the matrix the method actually solved (see condition_of), with its columns scaled to
+  // unit size first: elimination and QR give the same digits after such a scaling, so this is the
+  // number that predicts the digits lost. condition_unscaled is kappa of the matrix as it stands.
+  double condition_estimate = 0.0;
+  double condition_unscaled = 0.0;
+  std::string condition_of;               // which matrix that is, in words
+  std::string warning;                    // empty, or why the coefficients cannot be trusted
+};
+
+// Throws std::invalid_argument for: a negative degree, degree >= number of points, x and y of
+// different lengths, or a NaN or infinity in x or y. A method that fails returns a status instead.
+PolynomialFit fit_polynomial(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const FitOptions& options);
+
+// p(x) by Horner's rule, coefficients in increasing powers.
+double evaluate_polynomial(const Eigen::VectorXd& coefficients, double x);
+
+}  // namespace numlab::fitting
