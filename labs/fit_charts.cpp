@@ -57,33 +57,43 @@ void draw_fit_chart(const ChartFiles& files, const std::string& title, const std
 
 void draw_degree_sweep_chart(const ChartFiles& files, const std::string& title, const std::vector<DegreeSweepRow>& rows) {
   std::vector<std::string> methods;
+  std::vector<int> degrees;
   for (const auto& row : rows) {
     if (std::find(methods.begin(), methods.end(), row.method) == methods.end()) methods.push_back(row.method);
+    if (std::find(degrees.begin(), degrees.end(), row.degree) == degrees.end()) degrees.push_back(row.degree);
   }
-  std::string csv = "method,degree,digits,residual_sd\n";
-  for (const auto& row : rows) {
-    csv += fmt::format("{},{},{:.4g},{}\n", row.method, row.degree, row.digits,
-                       std::isfinite(row.residual_sd) ? fmt::format("{:.6g}", row.residual_sd) : "");
+  // Wide CSV: degree, then digits and residual sd per method; an empty cell where a method gave no fit.
+  std::string csv = "degree";
+  for (const auto& method : methods) csv += fmt::format(",digits {0},residual_sd {0}", method);
+  csv += '\n';
+  for (int degree : degrees) {
+    csv += std::to_string(degree);
+    for (const auto& method : methods) {
+      const auto row = std::find_if(rows.begin(), rows.end(),
+                                    [&](const DegreeSweepRow& r) { return r.method == method && r.degree == degree; });
+      const bool has_fit = row != rows.end() && std::isfinite(row->residual_sd);
+      csv += has_fit ? fmt::format(",{:.4g},{:.6g}", row->digits, row->residual_sd) : ",,";
+    }
+    csv += '\n';
   }
   std::string digits_plot, residual_plot;
   for (std::size_t m = 0; m < methods.size(); ++m) {
-    const std::string colour = line_colours()[m % line_colours().size()];
-    const std::string select = fmt::format("'{}' using 2:(strcol(1) eq '{}' ? ${{}} : 1/0) skip 1", files.data, methods[m]);
     const std::string style = fmt::format(" with linespoints lw 2 pt {} lc rgb '{}' title '{}'", 5 + 2 * static_cast<int>(m),
-                                          colour, methods[m]);
+                                          line_colours()[m % line_colours().size()], methods[m]);
     if (m > 0) {
       digits_plot += ", ";
       residual_plot += ", ";
     }
-    digits_plot += fmt::format(fmt::runtime(select), 3) + style;
-    residual_plot += fmt::format(fmt::runtime(select), 4) + style;
+    digits_plot += fmt::format("'{}' using 1:{} skip 1", files.data, 2 + 2 * m) + style;
+    residual_plot += fmt::format("'{}' using 1:{} skip 1", files.data, 3 + 2 * m) + style;
   }
-  std::string script = "# Digits and residual against the polynomial degree, one line per method (numlab lab fit).\n";
+  std::string script = "# Digits and residual against the polynomial degree, one line per method (numlab lab fit).\n"
+                       "# A gap means the method gave no coefficients at that degree (e.g. GEPP found V^T V singular).\n";
   script += gnuplot_output_lines(files);
   script += fmt::format(
-      "set datafile separator ','\nset grid\nset multiplot layout 1,2 title '{}'\n"
-      "set xlabel 'degree'\nset ylabel 'correct digits (min LRE of the coefficients)'\nset yrange [0:16]\n"
-      "set key bottom left box opaque\nplot {}\n"
+      "set datafile separator ','\nset datafile missing ''\nset grid\nset multiplot layout 1,2 title '{}'\n"
+      "set xlabel 'degree'\nset ylabel 'correct digits (weighted coefficients vs long-double reference)'\n"
+      "set yrange [0:16]\nset key bottom left box opaque\nplot {}\n"
       "set ylabel 'residual standard deviation'\nset autoscale y\nset logscale y\nset format y '10^{{%T}}'\n"
       "set key top right box opaque\nplot {}\nunset multiplot\n",
       title, digits_plot, residual_plot);
