@@ -11,14 +11,42 @@
 
 namespace numlab::cli {
 
+LabSession::LabSession(std::ostream& out, bool step, std::string folder, std::string title, std::string summary)
+    : out_(out),
+      tee_buffer_(out.rdbuf()),
+      tee_(&tee_buffer_),
+      step_(step),
+      folder_(std::move(folder)),
+      report_(std::move(title), std::move(summary)) {}
+
+int LabSession::TeeBuffer::overflow(int c) {
+  if (c == traits_type::eof()) return traits_type::not_eof(c);
+  copy_ += static_cast<char>(c);
+  return terminal_->sputc(static_cast<char>(c));
+}
+
+std::streamsize LabSession::TeeBuffer::xsputn(const char* text, std::streamsize count) {
+  copy_.append(text, static_cast<std::size_t>(count));
+  return terminal_->sputn(text, count);
+}
+
+void LabSession::flush_free_text() {
+  tee_.flush();
+  report_.add_preformatted(tee_buffer_.take());
+}
+
 void LabSession::begin_step(const std::string& title, const std::string& explanation) {
+  flush_free_text();
   if (step_number_ > 0) pause_if_stepping(step_);
   ++step_number_;
   out_ << fmt::format("\nStep {}: {}\n", step_number_, title) << std::string(title.size() + 8, '=') << '\n';
+  report_.add_step(step_number_, title);
   say(explanation);
 }
 
 void LabSession::say(const std::string& paragraph) {
+  flush_free_text();
+  report_.add_paragraph(paragraph);
   std::istringstream words(paragraph);
   std::string word;
   std::string line = "  ";
@@ -27,18 +55,35 @@ void LabSession::say(const std::string& paragraph) {
       out_ << line << '\n';
       line = "  ";
     }
-    line += (line.size() > 2 ? " " : "") + word;
+    if (line.size() > 2) line += ' ';
+    line += word;
   }
   if (line.size() > 2) out_ << line << '\n';
   out_ << '\n';
 }
 
 void LabSession::show(const Table& table, const std::string& name) {
+  flush_free_text();
   table.print(out_);
   ensure_directory(folder_);
   const std::string path = fmt::format("{}/step{}-{}.csv", folder_, step_number_, name);
   write_file_atomically(path, table.csv());
   out_ << "  (table saved as " << path << ")\n\n";
+  report_.add_table(table, path);
+}
+
+void LabSession::figure(const std::string& path, const std::string& caption) {
+  flush_free_text();
+  out_ << "  Figure: " << path << "\n\n";
+  report_.add_figure(path, caption);
+}
+
+std::string LabSession::finish() {
+  flush_free_text();
+  ensure_directory(folder_);
+  const std::string path = folder_ + "/report.html";
+  write_file_atomically(path, report_.html());
+  return path;
 }
 
 const std::vector<Lab>& all_labs() {

@@ -7,14 +7,19 @@
 #include <string>
 #include <vector>
 
+#include <streambuf>
+#include <utility>
+
+#include "lab_report.hpp"
 #include "table.hpp"
 
 namespace numlab::cli {
 
 class LabSession {
  public:
-  // Tables are also saved as CSV files in `folder` (created on first use).
-  LabSession(std::ostream& out, bool step, std::string folder) : out_(out), step_(step), folder_(std::move(folder)) {}
+  // Tables are also saved as CSV files in `folder` (created on first use); finish() writes the
+  // whole session as FOLDER/report.html.
+  LabSession(std::ostream& out, bool step, std::string folder, std::string title = "", std::string summary = "");
 
   // Starts the next step: pauses first (with --step, after step 1), then prints its title and explanation.
   void begin_step(const std::string& title, const std::string& explanation);
@@ -22,16 +27,44 @@ class LabSession {
   void say(const std::string& paragraph);
   // Prints the table and saves it as FOLDER/stepK-NAME.csv.
   void show(const Table& table, const std::string& name);
+  // A figure the lab has written (SVG or PNG): named in the output, embedded in the report.
+  void figure(const std::string& path, const std::string& caption);
+  // Writes FOLDER/report.html (whole or not at all) and returns its path.
+  std::string finish();
 
-  std::ostream& out() { return out_; }
+  // Free-form output; it goes to the terminal and, as preformatted text, into the report.
+  std::ostream& out() { return tee_; }
   const std::string& folder() const { return folder_; }
   int steps_taken() const { return step_number_; }
+  const LabReport& report() const { return report_; }
 
  private:
+  // A stream buffer that writes to the terminal's buffer and keeps a copy for the report.
+  class TeeBuffer : public std::streambuf {
+   public:
+    explicit TeeBuffer(std::streambuf* terminal) : terminal_(terminal) {}
+    std::string take() { return std::exchange(copy_, std::string()); }
+
+   protected:
+    int overflow(int c) override;
+    std::streamsize xsputn(const char* text, std::streamsize count) override;
+    int sync() override { return terminal_->pubsync(); }
+
+   private:
+    std::streambuf* terminal_;
+    std::string copy_;
+  };
+
+  // Moves free-form output written since the last structured item into the report.
+  void flush_free_text();
+
   std::ostream& out_;
+  TeeBuffer tee_buffer_;
+  std::ostream tee_;
   bool step_;
   std::string folder_;
   int step_number_ = 0;
+  LabReport report_;
 };
 
 struct Lab {

@@ -188,11 +188,12 @@ void foot_path_step(LabSession& session) {
   ensure_directory(session.folder());
   const ChartFiles files = chart_files(session.folder() + "/figure3.svg");
   draw_fit_chart(files, "Jansen foot path: upper and lower arcs with degree-5 fits", series);
+  session.figure(files.chart, "seed 001's Figure 3: the foot path's arcs and their degree-5 fits (normal-scaled)");
   session.say(fmt::format(
-      "Chart: {}. The plain normal equations agree with GSL to {:.1f} digits or more, about 16 - log10(kappa) as "
+      "The plain normal equations agree with GSL to {:.1f} digits or more, about 16 - log10(kappa) as "
       "the condition predicts; the scaled ones to {:.1f} or more. A degree-5 polynomial follows each arc to within "
       "the residual sd above: good enough to draw, not to replace the linkage.",
-      files.chart, fewest_normal, fewest_scaled));
+      fewest_normal, fewest_scaled));
 }
 
 void degree_sweep_step(LabSession& session, const std::string& title, const std::string& name,
@@ -221,7 +222,8 @@ void degree_sweep_step(LabSession& session, const std::string& title, const std:
   ensure_directory(session.folder());
   const ChartFiles files = chart_files(session.folder() + "/degree-sweep-" + name + ".svg");
   draw_degree_sweep_chart(files, title, rows);
-  session.say("Chart: " + files.chart + " (! = the fit carries a warning).");
+  session.figure(files.chart, title + " (a gap: no coefficients at that degree)");
+  session.say("(! in the table = the fit carries a warning.)");
 }
 
 }  // namespace

@@ -132,7 +132,8 @@ int run_jansen_lab(LabSession& session) {
                                   "(open either in a browser).");
   const std::string still = saved_file(session, "leg.svg", jansen_pose_svg(cycle, 0));
   const std::string animated = saved_file(session, "leg-animated.svg", jansen_animation_svg(cycle, 4.0));
-  session.say(fmt::format("Written: {} and {}.", still, animated));
+  session.figure(still, "the leg at crank angle 0, with the foot's path over the cycle");
+  session.figure(animated, "one crank cycle, animated (4 s per turn)");
   return 0;
 }
 
@@ -181,6 +182,7 @@ int run_jansen_sequential_lab(LabSession& session) {
                         "x with lines dt 2 lc rgb 'gray40' title 'y = tolerance'\n",
                         files.data);
   draw_chart(files, csv, script);
+  session.figure(files.chart, "seed 000's Figure 4 redrawn: foot RMSE, sequential vs full, against the tolerance");
   session.say(fmt::format("Chart: {} (data {}, script {}). The RMSE falls with the tolerance, as seed 000 found, "
                           "and so does each method's own distance from the exact pose: both converge to the same "
                           "root, and their difference is the stopping tolerance.",
@@ -217,8 +219,10 @@ int run_beest_lab(LabSession& session) {
   const std::string animated = saved_file(session, "beest-animated.svg", beest_svg(cycle, 4.0));
   int iterations = 0;
   for (const auto& pose : cycle.poses) iterations += pose.outcome.iterations;
-  session.say(fmt::format("Solved: {} poses ({} Newton iterations, worst joint error {:.2g}). Written: {} and {}.",
-                          cycle.poses.size(), iterations, cycle.worst_closed_form_distance, still, animated));
+  session.say(fmt::format("Solved: {} poses ({} Newton iterations, worst joint error {:.2g}).", cycle.poses.size(),
+                          iterations, cycle.worst_closed_form_distance));
+  session.figure(still, "the beest at crank angle 0");
+  session.figure(animated, "the beest walking, animated (4 s per turn)");
   return 0;
 }
 

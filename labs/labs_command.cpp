@@ -37,8 +37,10 @@ int run_lab(const std::string& name, bool step, const std::string& out_dir) {
     if (lab.name != name) continue;
     std::cout << fmt::format("numlab lab {}: {}\n", lab.name, lab.summary);
     if (step) std::cout << "(--step: press Enter after each step)\n";
-    LabSession session(std::cout, step, out_dir + "/lab-" + lab.name);
-    return lab.run(session);
+    LabSession session(std::cout, step, out_dir + "/lab-" + lab.name, lab.name, lab.summary);
+    const int exit_code = lab.run(session);
+    std::cout << "Report: " << session.finish() << " (steps, tables and figures in one page)\n";
+    return exit_code;
   }
   throw std::invalid_argument("unknown lab '" + name + "' (see numlab labs)");
 }

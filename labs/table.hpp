@@ -14,6 +14,8 @@ class Table {
   void print(std::ostream& out) const;
   // The same cells as CSV (header line, then rows; cells with commas or quotes are quoted).
   std::string csv() const;
+  const std::vector<std::string>& header() const { return header_; }
+  const std::vector<std::vector<std::string>>& rows() const { return rows_; }
 
  private:
   std::vector<std::string> header_;

@@ -16,6 +16,51 @@ using numlab::test::run_numlab;
 using numlab::test::temporary_folder;
 using Catch::Matchers::Contains;
 
+namespace {
+
+std::string file_text(const std::string& path) {
+  std::ifstream file(path);
+  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+}
+
+// A lab's report.html: a whole HTML page with every step the lab printed, every table it saved,
+// and every figure (SVG or PNG) in the lab's folder, named in a caption and embedded.
+void check_report(const std::string& lab_folder, const std::string& printed) {
+  const std::string path = lab_folder + "/report.html";
+  INFO(path);
+  REQUIRE(std::filesystem::exists(path));
+  CHECK_THAT(printed, Contains("Report: " + path));
+  const std::string html = file_text(path);
+  CHECK(html.starts_with("<!DOCTYPE html>"));
+  CHECK_THAT(html, Contains("</html>"));
+  // No external references: the page reads offline.
+  CHECK(html.find("src=\"http") == std::string::npos);
+  CHECK(html.find("href=\"http") == std::string::npos);
+  for (int step = 1; printed.find("Step " + std::to_string(step) + ":") != std::string::npos; ++step) {
+    CHECK_THAT(html, Contains("<h2 id=\"step" + std::to_string(step) + "\">Step " + std::to_string(step) + ":"));
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(lab_folder)) {
+    const std::string name = entry.path().filename().string();
+    const std::string extension = entry.path().extension().string();
+    INFO(name);
+    if (extension == ".svg" || extension == ".png") {
+      CHECK_THAT(html, Contains("<figcaption><code>" + name + "</code>"));
+    } else if (extension == ".csv" && name.starts_with("step")) {
+      CHECK_THAT(html, Contains("Table saved as <code>" + name + "</code>"));
+    }
+  }
+  // Every embedded figure is inline: as many <figure>s as pictures in the folder.
+  std::size_t figures = 0, pictures = 0;
+  for (std::size_t at = html.find("<figure>"); at != std::string::npos; at = html.find("<figure>", at + 1)) ++figures;
+  for (const auto& entry : std::filesystem::directory_iterator(lab_folder)) {
+    const std::string extension = entry.path().extension().string();
+    if (extension == ".svg" || extension == ".png") ++pictures;
+  }
+  CHECK(figures == pictures);
+}
+
+}  // namespace
+
 TEST_CASE("numlab labs lists the labs", "[cli][labs]") {
   const auto run = run_numlab("labs");
   CHECK(run.exit_code == 0);
@@ -49,6 +94,7 @@ TEST_CASE("Each lab runs its steps with --step without blocking, and ends with t
     std::getline(csv, header);
     CHECK(header == comparison.second);
     CHECK_THAT(run.out, Contains("(table saved as " + saved + ")"));
+    check_report(folder + "/lab-" + lab, run.out);
     std::filesystem::remove_all(folder);
   }
   const auto gauss = run_numlab("lab gauss");
@@ -68,7 +114,8 @@ TEST_CASE("numlab with no arguments runs the main job: the Jansen lab, with its 
   const auto run = run_numlab("");
   CHECK(run.exit_code == 0);
   CHECK_THAT(run.out, Contains("main job: the Jansen leg lab") && Contains("Step 4:") && Contains("gsl-newton") &&
-                          Contains("Written: out/lab-jansen/leg.svg"));
+                          Contains("Figure: out/lab-jansen/leg.svg"));
+  check_report("out/lab-jansen", run.out);
   CHECK(std::filesystem::file_size("out/lab-jansen/leg.svg") > 1000);
   CHECK(std::filesystem::file_size("out/lab-jansen/leg-animated.svg") > 10000);
 }
@@ -79,9 +126,11 @@ TEST_CASE("The jansen-sequential lab draws Figure 4 and the beest lab draws four
   CHECK(sequential.exit_code == 0);
   CHECK(std::filesystem::file_size(folder + "/lab-jansen-sequential/figure4.svg") > 1000);
   CHECK(std::filesystem::exists(folder + "/lab-jansen-sequential/figure4.gp"));
+  check_report(folder + "/lab-jansen-sequential", sequential.out);
   const auto beest = run_numlab("lab beest --out " + folder);
   CHECK(beest.exit_code == 0);
   CHECK_THAT(beest.out, Contains("Solved: 360 poses"));
+  check_report(folder + "/lab-beest", beest.out);
   std::ifstream drawing(folder + "/lab-beest/beest-animated.svg");
   const std::string svg((std::istreambuf_iterator<char>(drawing)), std::istreambuf_iterator<char>());
   CHECK(svg.find("<animate") != std::string::npos);
