@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "chart.hpp"
+#include "fit_degree_sweep.hpp"
 
 namespace numlab::cli {
 
@@ -18,13 +19,6 @@ struct FitSeries {
 
 // Points and curves; the CSV holds series, x, y and the fitted value at each point.
 void draw_fit_chart(const ChartFiles& files, const std::string& title, const std::vector<FitSeries>& series);
-
-struct DegreeSweepRow {
-  std::string method;
-  int degree;
-  double digits;       // min LRE of the coefficients against the reference (0 when there is no fit)
-  double residual_sd;  // NaN when there is no fit
-};
 
 // Two panels: digits against degree, and residual standard deviation against degree.
 void draw_degree_sweep_chart(const ChartFiles& files, const std::string& title, const std::vector<DegreeSweepRow>& rows);

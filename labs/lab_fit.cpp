@@ -198,25 +198,20 @@ void foot_path_step(LabSession& session) {
 
 void degree_sweep_step(LabSession& session, const std::string& title, const std::string& name,
                        const Eigen::VectorXd& x, const Eigen::VectorXd& y, int max_degree) {
-  std::vector<DegreeSweepRow> rows;
+  const std::vector<DegreeSweepRow> rows = fit_degree_sweep(x, y, max_degree);
+  const std::vector<std::string> methods = {"normal", "normal-scaled", "gsl", "eigen-qr"};
   Table table({"degree", "normal", "normal-scaled", "gsl", "eigen-qr", "kappa normal", "kappa scaled"});
-  for (int degree = 1; degree <= max_degree; ++degree) {
-    const Eigen::VectorXd reference = fitting::extended_precision_fit(x, y, degree);
-    std::vector<std::string> row = {std::to_string(degree)};
-    double kappa_normal = 0.0, kappa_scaled = 0.0;
-    for (const auto& m : lab_methods()) {
-      if (m.solver == NormalSolver::gauss_seidel) continue;
-      const fitting::PolynomialFit fit = fit_by(m, x, y, degree);
-      const double digits = fit.coefficients.size() > 0 ? fitting::weighted_coefficient_digits(fit.coefficients, reference, x) : 0.0;
-      const bool has_fit = fit.coefficients.size() > 0;
-      rows.push_back({m.label, degree, digits, has_fit ? fit.residual_sd : std::nan("")});
-      row.push_back(has_fit ? fmt::format("{:.1f}{}", digits, fit.warning.empty() ? "" : " !") : std::string(to_string(fit.status)));
-      if (m.method == FitMethod::normal) kappa_normal = fit.condition_estimate;
-      if (m.method == FitMethod::normal_scaled) kappa_scaled = fit.condition_estimate;
+  for (std::size_t first = 0; first < rows.size(); first += methods.size()) {
+    // rows[first .. first + 3] are the four methods at one degree, in the order above.
+    std::vector<std::string> cells = {std::to_string(rows[first].degree)};
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      const DegreeSweepRow& row = rows[first + m];
+      cells.push_back(std::isfinite(row.residual_sd) ? fmt::format("{:.1f}{}", row.digits, row.warned ? " !" : "")
+                                                     : std::string(to_string(row.status)));
     }
-    row.push_back(scientific(kappa_normal));
-    row.push_back(scientific(kappa_scaled));
-    table.add_row(row);
+    cells.push_back(scientific(rows[first].condition));
+    cells.push_back(scientific(rows[first + 1].condition));
+    table.add_row(cells);
   }
   session.show(table, "degree-sweep-" + name);
   ensure_directory(session.folder());
