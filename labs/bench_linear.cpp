@@ -17,6 +17,7 @@
 #include "numlab/linalg/gsl_reference.hpp"
 #include "numlab/linalg/measures.hpp"
 #include "numlab/linalg/test_matrices.hpp"
+#include "bench_all.hpp"
 #include "table.hpp"
 #include "timing.hpp"
 
@@ -113,6 +114,10 @@ std::string chart_data(const std::vector<BenchRow>& rows, const std::vector<int>
 
 }  // namespace
 
+void draw_linear_chart(const ChartFiles& files, const std::vector<BenchRow>& rows, const std::vector<int>& sizes) {
+  draw_chart(files, chart_data(rows, sizes), chart_script(files, rows, sizes));
+}
+
 std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick) {
   const TimingPlan plan = quick ? TimingPlan{3, 50, 0.002} : TimingPlan{5, 100000, 0.3};
   std::vector<BenchRow> rows;
@@ -131,18 +136,21 @@ std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick) {
 
 BenchCommand::BenchCommand(CLI::App& app) {
   command_ = app.add_subcommand("bench", "Measure speed: median of repeated in-process runs, as ratios");
-  command_->add_option("what", what_, "What to measure: linear or jansen")->check(CLI::IsMember({"linear", "jansen"}));
-  command_->add_option("--chart", chart_, "Chart file (.svg or .png); default OUT/bench-linear.svg");
+  command_->add_option("what", what_, "What to measure: all (default), linear or jansen")
+      ->check(CLI::IsMember({"all", "linear", "jansen"}));
+  command_->add_option("--chart", chart_,
+                       "Main chart (.svg or .png); default OUT/work-precision.svg (all) or OUT/bench-linear.svg");
   command_->add_option("--sizes", sizes_, "Sizes n, comma-separated")->delimiter(',')->check(CLI::Range(1, 4096));
   command_->add_flag("--quick", quick_, "Fewer repetitions (a smoke run, not a measurement)");
   add_common_options(*command_, common_);
 }
 
 int BenchCommand::run() const {
+  if (what_ == "all") return run_bench_all(common_, chart_, quick_);
   if (what_ == "jansen") return run_jansen();
   const ChartFiles files = chart_files(chart_.empty() ? common_.out_dir + "/bench-linear.svg" : chart_);
   const std::vector<BenchRow> rows = bench_linear(sizes_, quick_);
-  draw_chart(files, chart_data(rows, sizes_), chart_script(files, rows, sizes_));
+  draw_linear_chart(files, rows, sizes_);
 
   if (common_.format == Format::json) {
     nlohmann::ordered_json out = {{"benchmark", "linear"}, {"chart", files.chart}, {"rows", nlohmann::ordered_json::array()}};

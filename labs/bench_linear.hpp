@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "chart.hpp"
 #include "cli_common.hpp"
 
 namespace numlab::cli {
@@ -20,6 +21,9 @@ struct BenchRow {
 // Times every linear solver at each size (fixed-size code at n = 2 and 8).
 std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick);
 
+// Time per solve against n, log-log, with an n^3 guide; CSV and gnuplot script beside it.
+void draw_linear_chart(const ChartFiles& files, const std::vector<BenchRow>& rows, const std::vector<int>& sizes);
+
 class BenchCommand {
  public:
   explicit BenchCommand(CLI::App& app);
@@ -30,7 +34,7 @@ class BenchCommand {
   int run_jansen() const;
   CLI::App* command_;
   CommonOptions common_;
-  std::string what_ = "linear";
+  std::string what_ = "all";
   std::string chart_;
   std::vector<int> sizes_ = {2, 8, 64, 256, 512, 1024};
   bool quick_ = false;

@@ -165,3 +165,45 @@ TEST_CASE("numlab bench linear: JSON rows, a chart, and its data and script besi
   CHECK(bad_chart.exit_code == 2);
   CHECK_THAT(bad_chart.err, Contains(".svg or .png"));
 }
+
+TEST_CASE("numlab bench with no argument: work-precision rows for every Jansen solver, and every chart",
+          "[cli][bench]") {
+  const std::string folder = temporary_folder();
+  const auto run = run_numlab("bench --quick --format json --out " + folder + " --chart " + folder + "/wp.svg");
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const auto out = nlohmann::json::parse(run.out);
+  CHECK(out["benchmark"] == "all");
+  // Jansen rows: each solver at every tolerance of the sweep (quick: 1e-2, 1e-6, 1e-10, 1e-13), the closed form once.
+  std::map<std::string, std::set<double>> tolerances;
+  std::set<std::string> benches;
+  for (const auto& row : out["rows"]) {
+    for (const char* field : {"solver", "tolerance", "time_s", "error"}) CHECK(row.contains(field));
+    CHECK(row["time_s"].get<double>() > 0.0);
+    benches.insert(row["bench"].get<std::string>());
+    if (row["bench"] == "jansen") tolerances[row["solver"]].insert(row["tolerance"].get<double>());
+    if (row["bench"] == "linear" || row["bench"] == "seidel" || row["bench"] == "fit") CHECK(row.contains("n"));
+  }
+  CHECK(benches == std::set<std::string>{"jansen", "linear", "seidel", "fit"});
+  CHECK(tolerances.at("analytic").size() == 1);
+  for (const char* solver : {"full", "full-gauss-seidel", "full-gsl-lu", "full-eigen-lu", "sequential", "gsl-newton"}) {
+    INFO(solver);
+    CHECK(tolerances.at(solver) == std::set<double>{1e-2, 1e-6, 1e-10, 1e-13});
+  }
+  // Precision follows the tolerance: full Newton's worst joint error at 1e-13 is below its error at 1e-2.
+  double loose = 0.0, tight = 0.0;
+  for (const auto& row : out["rows"]) {
+    if (row["bench"] != "jansen" || row["solver"] != "full") continue;
+    if (row["tolerance"].get<double>() == 1e-2) loose = row["error"].get<double>();
+    if (row["tolerance"].get<double>() == 1e-13) tight = row["error"].get<double>();
+  }
+  CHECK(tight < 1e-10);
+  CHECK(loose > 1e3 * tight);
+  // Every chart, with its CSV and gnuplot script beside it; --chart names the work-precision diagram.
+  REQUIRE(out["charts"].size() == 4);
+  CHECK(out["charts"][0]["chart"] == folder + "/wp.svg");
+  for (const auto& chart : out["charts"]) {
+    for (const char* file : {"chart", "data", "script"}) CHECK(std::filesystem::exists(chart[file].get<std::string>()));
+  }
+  std::filesystem::remove_all(folder);
+}

@@ -1,0 +1,247 @@
+#include "bench_all.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "bench_jansen.hpp"
+#include "bench_linear.hpp"
+#include "chart.hpp"
+#include "fit_charts.hpp"
+#include "fit_degree_sweep.hpp"
+#include "linear_methods.hpp"
+#include "numlab/fitting/data_set.hpp"
+#include "numlab/linalg/measures.hpp"
+#include "numlab/linalg/test_matrices.hpp"
+#include "table.hpp"
+#include "timing.hpp"
+
+namespace numlab::cli {
+
+namespace {
+
+void progress(const std::string& message) {
+  if (isatty(STDERR_FILENO) != 0) std::cerr << "\r\033[K" << message << std::flush;
+}
+
+// --- Jansen: the work-precision diagram ---
+
+std::vector<double> tolerance_sweep(bool quick) {
+  if (quick) return {1e-2, 1e-6, 1e-10, 1e-13};
+  std::vector<double> tolerances;
+  for (int exponent = 2; exponent <= 13; ++exponent) tolerances.push_back(std::pow(10.0, -exponent));
+  return tolerances;
+}
+
+std::vector<JansenBenchRow> work_precision_rows(bool quick) {
+  std::vector<JansenBenchRow> rows;
+  for (double tolerance : tolerance_sweep(quick)) {
+    progress(fmt::format("bench: Jansen cycle at tolerance {:g}", tolerance));
+    for (const JansenBenchRow& row : bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick)) {
+      // The closed form does not depend on the tolerance: one point.
+      const bool repeat = row.solver == "analytic" &&
+                          std::any_of(rows.begin(), rows.end(), [](const auto& r) { return r.solver == "analytic"; });
+      if (!repeat) rows.push_back(row);
+    }
+  }
+  // Each solver's rows together, loosest tolerance first, so each draws as one line.
+  std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.solver < b.solver; });
+  return rows;
+}
+
+void draw_work_precision(const ChartFiles& files, const std::vector<JansenBenchRow>& rows) {
+  constexpr double floor = 1e-17;  // an exact match still needs a place on a log axis
+  std::string csv = "solver,tolerance,time_s,error\n";
+  std::vector<std::string> solvers;
+  for (const auto& row : rows) {
+    csv += fmt::format("{},{:g},{:.6g},{:.6g}\n", row.solver, row.tolerance, row.time_s, std::max(row.error, floor));
+    if (std::find(solvers.begin(), solvers.end(), row.solver) == solvers.end()) solvers.push_back(row.solver);
+  }
+  std::string plots;
+  for (std::size_t s = 0; s < solvers.size(); ++s) {
+    const bool point = solvers[s] == "analytic";
+    plots += fmt::format("{}'{}' using (strcol(1) eq '{}' ? $4 : 1/0):3 skip 1 {} title '{}'", s ? ", " : "",
+                         files.data, solvers[s],
+                         point ? "with points pt 7 ps 2.5 lc rgb 'black'" : fmt::format("with linespoints lw 2 pt {}", 4 + s),
+                         point ? "closed form (circle intersections)" : solvers[s]);
+  }
+  std::string script = "# Work-precision diagram (numlab bench): median time per 360-pose Jansen cycle against the\n"
+                       "# worst joint error vs the closed form, one line per solver over Newton tolerances 1e-2..1e-13.\n";
+  script += gnuplot_output_lines(files);
+  script += "set datafile separator ','\nset logscale xy\nset grid\nset key outside right box opaque\n"
+            "set xlabel 'worst joint error vs the closed form (length units)'\nset ylabel 'median time per cycle (s)'\n"
+            "set format x '10^{%T}'\nset format y '10^{%T}'\n"
+            "set title 'Jansen leg, 360-pose cycle: work against precision (lower left is better)'\n";
+  script += "plot " + plots + "\n";
+  draw_chart(files, csv, script);
+}
+
+// --- Gauss-Seidel: sweeps against kappa ---
+
+struct SeidelRow {
+  double kappa;
+  int sweeps;
+  double time_s;
+  double error;
+};
+
+std::vector<SeidelRow> seidel_rows(bool quick) {
+  std::vector<SeidelRow> rows;
+  constexpr int n = 8;
+  for (double kappa : {2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0}) {
+    progress(fmt::format("bench: Gauss-Seidel at kappa {:g}", kappa));
+    const Eigen::MatrixXd A = linalg::matrix_with_condition(n, kappa, 7);
+    const Eigen::VectorXd exact = Eigen::VectorXd::Ones(n);
+    const Eigen::VectorXd b = A * exact;
+    LinearSettings settings;
+    settings.max_iterations = 10000000;
+    const DynamicResult result = run_linear_method("gauss-seidel", A, b, settings);
+    const TimingPlan plan = quick ? TimingPlan{3, 5, 0.0} : TimingPlan{5, 200, 0.1};
+    const double seconds = median_time([&] { run_linear_method("gauss-seidel", A, b, settings); }, plan);
+    rows.push_back({kappa, result.iterations, seconds, linalg::forward_error(result.x, exact)});
+  }
+  return rows;
+}
+
+void draw_seidel_chart(const ChartFiles& files, const std::vector<SeidelRow>& rows) {
+  std::string csv = "kappa,sweeps,time_s,forward_error\n";
+  for (const auto& row : rows) csv += fmt::format("{:g},{},{:.6g},{:.3g}\n", row.kappa, row.sweeps, row.time_s, row.error);
+  const double anchor = rows.back().sweeps / (rows.back().kappa * rows.back().kappa);
+  std::string script = "# Gauss-Seidel on the normal equations: sweeps to converge against kappa(A) (numlab bench).\n";
+  script += gnuplot_output_lines(files);
+  script += fmt::format(
+      "set datafile separator ','\nset logscale xy\nset grid\nset key top left box opaque\n"
+      "set xlabel 'kappa_2(A)'\nset ylabel 'sweeps to tolerance 1e-9'\n"
+      "set title 'Gauss-Seidel on A^T A x = A^T b (n = 8): sweeps grow like kappa^2'\n"
+      "plot '{}' using 1:2 skip 1 with linespoints lw 2 pt 7 title 'sweeps', "
+      "{:.6g} * x**2 with lines dt 2 lc rgb 'gray40' title 'kappa^2 guide'\n",
+      files.data, anchor);
+  draw_chart(files, csv, script);
+}
+
+// --- Fitting: digits against degree ---
+
+struct FitBenchRow {
+  DegreeSweepRow sweep;
+  std::string data;
+  double time_s;
+};
+
+std::vector<FitBenchRow> fit_rows(const std::string& data_name, const fitting::DataSet& data, int max_degree,
+                                  bool quick, std::vector<DegreeSweepRow>& sweep) {
+  progress("bench: fitting degree sweep on " + data_name);
+  sweep = fit_degree_sweep(data.x, data.y, max_degree);
+  std::vector<FitBenchRow> rows;
+  const TimingPlan plan = quick ? TimingPlan{3, 5, 0.0} : TimingPlan{5, 200, 0.02};
+  for (const DegreeSweepRow& row : sweep) {
+    fitting::FitOptions options;
+    options.method = fitting::fit_method_from_string(row.method);
+    options.degree = row.degree;
+    const double seconds = median_time([&] { fitting::fit_polynomial(data.x, data.y, options); }, plan);
+    rows.push_back({row, data_name, seconds});
+  }
+  return rows;
+}
+
+}  // namespace
+
+int run_bench_all(const CommonOptions& common, const std::string& chart, bool quick) {
+  // 1. Every file name is checked before any measuring starts.
+  const ChartFiles work_precision = chart_files(chart.empty() ? common.out_dir + "/work-precision.svg" : chart);
+  const ChartFiles linear_chart = chart_files(common.out_dir + "/bench-linear.svg");
+  const ChartFiles seidel_chart = chart_files(common.out_dir + "/bench-seidel.svg");
+  const ChartFiles fit_chart = chart_files(common.out_dir + "/bench-fit.svg");
+  const fitting::DataSet wampler = fitting::read_nist_data(std::string(NUMLAB_NIST_DIR) + "/Wampler4.dat");
+
+  // 2. Measure: warm-up, repeated runs, medians (timing.hpp).
+  const std::vector<JansenBenchRow> jansen = work_precision_rows(quick);
+  const std::vector<int> sizes = quick ? std::vector<int>{2, 8, 64} : std::vector<int>{2, 8, 64, 256, 512, 1024};
+  const std::vector<BenchRow> linear = bench_linear(sizes, quick);
+  const std::vector<SeidelRow> seidel = seidel_rows(quick);
+  std::vector<DegreeSweepRow> sweep;
+  const std::vector<FitBenchRow> fits = fit_rows("Wampler4", wampler, 12, quick, sweep);
+  progress("");
+
+  // 3. Draw.
+  draw_work_precision(work_precision, jansen);
+  draw_linear_chart(linear_chart, linear, sizes);
+  draw_seidel_chart(seidel_chart, seidel);
+  draw_degree_sweep_chart(fit_chart, "NIST Wampler4: digits and residual against degree", sweep);
+  const std::vector<ChartFiles> charts = {work_precision, linear_chart, seidel_chart, fit_chart};
+
+  // 4. Report.
+  if (common.format == Format::json) {
+    nlohmann::ordered_json out = {{"benchmark", "all"}, {"charts", nlohmann::ordered_json::array()},
+                                  {"rows", nlohmann::ordered_json::array()}};
+    for (const auto& files : charts) out["charts"].push_back({{"chart", files.chart}, {"data", files.data}, {"script", files.script}});
+    for (const auto& row : jansen) {
+      out["rows"].push_back({{"bench", "jansen"}, {"solver", row.solver}, {"tolerance", row.tolerance},
+                             {"time_s", row.time_s}, {"error", number_or_null(row.error)}, {"iterations", row.iterations}});
+    }
+    for (const auto& row : linear) {
+      out["rows"].push_back({{"bench", "linear"}, {"solver", row.solver}, {"tolerance", nullptr}, {"time_s", row.time_s},
+                             {"error", number_or_null(row.error)}, {"n", row.n}});
+    }
+    for (const auto& row : seidel) {
+      out["rows"].push_back({{"bench", "seidel"}, {"solver", "gauss-seidel"}, {"tolerance", 1e-9}, {"time_s", row.time_s},
+                             {"error", number_or_null(row.error)}, {"n", 8}, {"kappa", row.kappa}, {"sweeps", row.sweeps}});
+    }
+    for (const auto& row : fits) {
+      out["rows"].push_back({{"bench", "fit"}, {"solver", row.sweep.method}, {"tolerance", nullptr},
+                             {"time_s", row.time_s},
+                             // error: the relative coefficient error behind the digits (10^-digits)
+                             {"error", std::isfinite(row.sweep.residual_sd) ? number_or_null(std::pow(10.0, -row.sweep.digits))
+                                                                            : nlohmann::ordered_json()},
+                             {"n", wampler.x.size()}, {"data", row.data}, {"degree", row.sweep.degree},
+                             {"digits", row.sweep.digits}, {"status", std::string(to_string(row.sweep.status))}});
+    }
+    std::cout << out.dump(2) << '\n';
+    return exit_success;
+  }
+  // The ratio table at tolerance 1e-10, the closed form last (it has no tolerance).
+  std::vector<JansenBenchRow> at_1e10;
+  for (const auto& row : jansen) {
+    if (row.tolerance == 1e-10 && row.solver != "analytic") at_1e10.push_back(row);
+  }
+  for (const auto& row : jansen) {
+    if (row.solver == "analytic") at_1e10.push_back(row);
+  }
+  print_jansen_bench(std::cout, at_1e10);
+  std::cout << "\nWork-precision: median time per cycle (and worst joint error) at each Newton tolerance.\n";
+  std::vector<std::string> header = {"solver"};
+  const std::vector<double> tolerances = tolerance_sweep(quick);
+  for (double tolerance : tolerances) header.push_back(fmt::format("{:g}", tolerance));
+  Table table(header);
+  for (std::size_t first = 0; first < jansen.size();) {
+    std::vector<std::string> cells = {jansen[first].solver};
+    std::size_t next = first;
+    for (double tolerance : tolerances) {
+      const bool here = next < jansen.size() && jansen[next].solver == jansen[first].solver &&
+                        jansen[next].tolerance == tolerance;
+      cells.push_back(here ? fmt::format("{:.3g} ms ({:.0e})", jansen[next].time_s * 1e3, jansen[next].error) : "");
+      if (here) ++next;
+    }
+    if (next == first) ++next;  // the closed form's single point
+    first = next;
+    table.add_row(cells);
+  }
+  table.print(std::cout);
+  std::cout << "\nGauss-Seidel on the normal equations (n = 8): sweeps against kappa(A)\n";
+  Table sweeps({"kappa", "sweeps", "sweeps / kappa^2", "time", "forward error"});
+  for (const auto& row : seidel) {
+    sweeps.add_row({fmt::format("{:g}", row.kappa), std::to_string(row.sweeps),
+                    fmt::format("{:.2f}", row.sweeps / (row.kappa * row.kappa)), fmt::format("{:.3g} s", row.time_s),
+                    scientific(row.error)});
+  }
+  sweeps.print(std::cout);
+  std::cout << "\nCharts (each with its CSV and gnuplot script beside it):\n";
+  for (const auto& files : charts) std::cout << "  " << files.chart << '\n';
+  return exit_success;
+}
+
+}  // namespace numlab::cli
