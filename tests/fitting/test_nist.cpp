@@ -45,6 +45,7 @@ const std::vector<Method> methods = {{"normal", FitMethod::normal, NormalSolver:
 std::map<std::string, std::map<std::string, double>> lre_table(const DataSet& (*load)(const std::string&),
                                                               const char* format) {
   std::map<std::string, std::map<std::string, double>> digits;
+  std::map<std::string, std::string> per_coefficient;  // set -> one line per method: LRE of b0 .. bD
   std::printf("\nLRE (correct digits, min over coefficients) against NIST's certified values, %s input:\n", format);
   std::printf("%-9s %-3s", "data", "D");
   for (const Method& m : methods) std::printf(" %13s", m.label.c_str());
@@ -62,10 +63,20 @@ std::map<std::string, std::map<std::string, double>> lre_table(const DataSet& (*
       const PolynomialFit fit = fit_polynomial(data.x, data.y, options);
       digits[name][m.label] = fit.coefficients.size() > 0 ? min_log_relative_error(fit.coefficients, certified) : 0.0;
       std::printf(" %13.1f", digits[name][m.label]);
+      std::string& line = per_coefficient[name];
+      line += "    " + m.label + ":";
+      for (Eigen::Index k = 0; k < fit.coefficients.size(); ++k) {
+        char cell[16];
+        std::snprintf(cell, sizeof cell, " %.1f", log_relative_error(fit.coefficients(k), certified(k)));
+        line += cell;
+      }
+      line += "\n";
     }
     digits[name]["long-double"] = min_log_relative_error(extended_precision_fit(data.x, data.y, degree), certified);
     std::printf(" %13.1f\n", digits[name]["long-double"]);
   }
+  std::printf("LRE of each coefficient b0 .. bD:\n");
+  for (const std::string& name : polynomial_sets) std::printf("  %s\n%s", name.c_str(), per_coefficient[name].c_str());
   return digits;
 }
 
