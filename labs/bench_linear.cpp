@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_jansen.hpp"
+#include "bench_mustang.hpp"
 #include "chart.hpp"
 #include "numlab/linalg/eigen_reference.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
@@ -131,7 +132,8 @@ std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick) {
 
 BenchCommand::BenchCommand(CLI::App& app) {
   command_ = app.add_subcommand("bench", "Measure speed: median of repeated in-process runs, as ratios");
-  command_->add_option("what", what_, "What to measure: linear or jansen")->check(CLI::IsMember({"linear", "jansen"}));
+  command_->add_option("what", what_, "What to measure: linear, jansen or mustang")
+      ->check(CLI::IsMember({"linear", "jansen", "mustang"}));
   command_->add_option("--chart", chart_, "Chart file (.svg or .png); default OUT/bench-linear.svg");
   command_->add_option("--sizes", sizes_, "Sizes n, comma-separated")->delimiter(',')->check(CLI::Range(1, 4096));
   command_->add_flag("--quick", quick_, "Fewer repetitions (a smoke run, not a measurement)");
@@ -140,6 +142,7 @@ BenchCommand::BenchCommand(CLI::App& app) {
 
 int BenchCommand::run() const {
   if (what_ == "jansen") return run_jansen();
+  if (what_ == "mustang") return run_mustang_bench(common_, quick_);
   const ChartFiles files = chart_files(chart_.empty() ? common_.out_dir + "/bench-linear.svg" : chart_);
   const std::vector<BenchRow> rows = bench_linear(sizes_, quick_);
   draw_chart(files, chart_data(rows, sizes_), chart_script(files, rows, sizes_));

@@ -20,7 +20,7 @@ TEST_CASE("numlab labs lists the labs", "[cli][labs]") {
   const auto run = run_numlab("labs");
   CHECK(run.exit_code == 0);
   CHECK_THAT(run.out, Contains("gauss") && Contains("seidel") && Contains("inverse2x2") && Contains("newton") &&
-                          Contains("jansen-sequential") && Contains("beest"));
+                          Contains("jansen-sequential") && Contains("beest") && Contains("mustang"));
 }
 
 TEST_CASE("Each lab runs its steps with --step without blocking, and ends with the GSL comparison", "[cli][labs]") {
@@ -31,7 +31,8 @@ TEST_CASE("Each lab runs its steps with --step without blocking, and ends with t
       {"inverse2x2", {"step4-comparison.csv", "method,status,x_1,x_n,relative residual,forward error,time (median)"}},
       {"newton", {"step3-rosenbrock.csv", "method,status,iterations,||f||_inf,distance,f evals,J evals,time"}},
       {"jansen-sequential",
-       {"step3-costs.csv", "model / solver,time per cycle,iterations,worst error"}}};
+       {"step3-costs.csv", "model / solver,time per cycle,iterations,worst error"}},
+      {"mustang", {"step7-solvers.csv", "solver,time per sweep (s),x full,iterations,error"}}};
   for (const auto& [lab, comparison] : comparisons) {
     const std::string folder = temporary_folder();
     const auto run = run_numlab("lab " + lab + " --step --out " + folder);
