@@ -116,6 +116,17 @@ MustangAngles MustangLinkage::angles_of(const MustangJoints& p, const MustangAng
   return x;
 }
 
+bool MustangLinkage::on_seed_branch(const MustangJoints& p) {
+  // Loops 1-3: each dyad on its side of the line through its circles' centres.
+  if (side_of(p[1], p[4], p[3]) != side_P3 || side_of(p[0], p[6], p[5]) != side_P5 || side_of(p[8], p[7], p[10]) != side_P10) {
+    return false;
+  }
+  // Loop 4: the open kite, P11 = P8 mirrored in the line 9-10.
+  const Eigen::Vector2d along = (p[10] - p[9]).normalized(), from9 = p[8] - p[9];
+  const Eigen::Vector2d mirrored = p[9] + 2.0 * from9.dot(along) * along - from9;
+  return (p[11] - mirrored).norm() < (p[11] - p[8]).norm();
+}
+
 double MustangLinkage::loop_margin(int k, const MustangJoints& p) const {
   const MustangLengths& L = lengths_;
   struct Dyad {

@@ -6,19 +6,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "numlab/mechanisms/circle_intersection.hpp"
 
 namespace numlab::mechanisms {
 
 namespace {
 
 constexpr double degrees = std::numbers::pi / 180.0;
-
-// The seed's branch: each dyad of loops 1-3 on its side (loop 4 is checked by the closed form).
-bool on_branch(const MustangJoints& p) {
-  return side_of(p[1], p[4], p[3]) == MustangLinkage::side_P3 && side_of(p[0], p[6], p[5]) == MustangLinkage::side_P5 &&
-         side_of(p[8], p[7], p[10]) == MustangLinkage::side_P10;
-}
 
 double smallest_margin(const MustangLinkage& linkage, const MustangJoints& p) {
   double margin = linkage.loop_margin(0, p);
@@ -78,7 +71,7 @@ class March {
     if (predict && has_previous_) trial += (x_ - previous_) * ((next - deg_) / previous_step_);
     outcome = solver_.solve(next * degrees, trial);
     const bool converged = outcome.status == Status::converged && trial.allFinite();
-    const bool ok = converged && on_branch(linkage_.joints(next * degrees, trial));
+    const bool ok = converged && MustangLinkage::on_seed_branch(linkage_.joints(next * degrees, trial));
     if (options_.trace) {
       const bool finite = trial.allFinite();
       sweep_.trace.push_back({next, next - deg_, outcome,

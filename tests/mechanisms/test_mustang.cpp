@@ -201,3 +201,25 @@ TEST_CASE("Mustang: seed 003's method as written fails inside the range; fixed, 
     x = pose.x;
   }
 }
+
+TEST_CASE("Mustang: near loop 4's crossing (43.15 deg) a single angle stays on the open kite", "[mechanisms][mustang]") {
+  const MustangLinkage linkage;
+  for (const std::string solver : {"full", "sequential"}) {
+    for (const double crank : {43.14, 43.15, 43.1533, 43.16, 30.0}) {
+      INFO(solver << " at " << crank);
+      const MustangSweep sweep = sweep_with(solver, crank, crank, 1.0);
+      REQUIRE(sweep.status == Status::converged);
+      REQUIRE(sweep.poses.size() == 1);
+      const MustangPose& pose = sweep.poses[0];
+      CHECK(pose.closed_form_distance <= std::max(1e-11, 1e-11 * pose.condition));
+      CHECK(MustangLinkage::on_seed_branch(pose.joints));
+    }
+  }
+  // The folded kite (P11 on P8) closes loop 4 too, and is not the seed's branch.
+  MustangJoints folded = linkage.closed_form(43.0 * degrees).joints;
+  CHECK(MustangLinkage::on_seed_branch(folded));
+  folded[11] = folded[8];
+  CHECK(std::abs((folded[11] - folded[9]).norm() - 1.0) <= 1e-12);
+  CHECK(std::abs((folded[11] - folded[10]).norm() - 4.0 / 3.0) <= 1e-12);
+  CHECK_FALSE(MustangLinkage::on_seed_branch(folded));
+}

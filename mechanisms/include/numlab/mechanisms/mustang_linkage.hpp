@@ -72,6 +72,11 @@ class MustangLinkage {
 
   const MustangLengths& lengths() const { return lengths_; }
 
+  // Whether a pose is on the seed's branch: P3, P5, P10 on the sides below, and loop 4 open
+  // (P11 nearer to P8 mirrored in the line 9-10 than to P8 itself). A geometric test, so it
+  // holds through loop 4's crossing, where the folded and the open kite meet.
+  static bool on_seed_branch(const MustangJoints& joints);
+
   // The sides of the seed's branch (verified against Newton from the seed's start by a test):
   // P3 relative to the line P1 -> P4, P5 to P0 -> P6, P10 to P8 -> P7 (+1 left, -1 right).
   static constexpr int side_P3 = -1, side_P5 = -1, side_P10 = 1;

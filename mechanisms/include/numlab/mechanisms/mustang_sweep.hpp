@@ -6,8 +6,8 @@
 //  2. March up through the requested angles above 45 deg and down through those below, each
 //     solve starting from a prediction (the last two poses extrapolated). No step is larger than
 //     the requested step or 1 deg.
-//  3. A step fails when the solver does not converge or the pose left the branch (a dyad
-//     flipped to its other side). A failed step is retried from the last pose, then halved.
+//  3. A step fails when the solver does not converge or the pose left the branch (a dyad flipped
+//     to its other side, or loop 4's kite folded). A failed step is retried from the last pose, then halved.
 //  4. Halving near a limit is a bisection on theta: it stops when the step is below the
 //     resolution (0.01 deg). If the linkage cannot close `resolution` beyond the last pose that
 //     assembled (the dyad's circles no longer meet), that is the assembly limit, and the loop is
