@@ -150,12 +150,14 @@ void print_text(std::ostream& out, const MustangRequest& request, const MustangS
     out << fmt::format("assembly range     [{}, {}] deg (the last angles that assembled, to 0.01 deg)\n", end(range[0]), end(range[1]));
   }
   out << fmt::format("lower end          {}\n", limit_text(sweep.lower))
-      << fmt::format("upper end          {}\n", limit_text(sweep.upper))
-      << fmt::format("checks             worst joint distance from the closed form {:.2g}; worst link-length error "
+      << fmt::format("upper end          {}\n", limit_text(sweep.upper));
+  if (!sweep.poses.empty()) {
+    out << fmt::format("checks             worst joint distance from the closed form {:.2g}; worst link-length error "
                      "{:.2g}; rigid bodies {:.2g}; fixed points {:.2g}; branch {}\n",
                      sweep.worst_closed_form_distance, sweep.worst_length_error, sweep.worst_rigid_error,
-                     sweep.worst_fixed_error, sweep.branch_kept ? "kept" : "NOT KEPT")
-      << fmt::format("time               {:.3g} s\n", time_s);
+                     sweep.worst_fixed_error, sweep.branch_kept ? "kept" : "NOT KEPT");
+  }
+  out << fmt::format("time               {:.3g} s\n", time_s);
 }
 
 }  // namespace
