@@ -17,17 +17,15 @@ SeedMethodPose seed_method_pose(double theta, const SeedMethodOptions& options, 
   pose.x = options.restart ? MustangClosure::seed_guess() : previous;
   for (int k = 0; k < MustangClosure::loops; ++k) {
     SeedLoopRun& run = pose.loops[static_cast<std::size_t>(k)];
-    LoopTerms t = closure.loop(k, pose.x);
-    if (options.rounded && k == 1) t.known += rounding;
-    Eigen::Vector2d v = pose.x.segment<2>(2 * k);
-    auto f_of = [&](const Eigen::Vector2d& w) {
-      return Eigen::Vector2d(t.known.x() + t.a.x() * std::cos(w(0)) + t.b.x() * std::cos(w(1)),
-                             t.known.y() + t.a.y() * std::sin(w(0)) + t.b.y() * std::sin(w(1)));
+    MustangLoop loop;
+    loop.terms = closure.loop(k, pose.x);
+    if (options.rounded && k == 1) loop.terms.known += rounding;
+    Eigen::Vector2d v = pose.x.segment<2>(2 * k), f;
+    Eigen::Matrix2d J;
+    auto test_of = [&](const Eigen::Vector2d& values) {
+      return options.sum_test ? std::abs(values(0) + values(1)) : values.lpNorm<Eigen::Infinity>();
     };
-    auto test_of = [&](const Eigen::Vector2d& f) {
-      return options.sum_test ? std::abs(f(0) + f(1)) : f.lpNorm<Eigen::Infinity>();
-    };
-    Eigen::Vector2d f = f_of(v);
+    loop.residual_and_jacobian(v, f, J);
     while (true) {
       // 1. The seed's test: stop when it is at or below 0.001.
       run.test_value = test_of(f);
@@ -41,9 +39,7 @@ SeedMethodPose seed_method_pose(double theta, const SeedMethodOptions& options, 
         run.status = Status::max_iterations;
         break;
       }
-      // 2. The Jacobian, as the seed wrote it or corrected.
-      Eigen::Matrix2d J;
-      J << -t.a.x() * std::sin(v(0)), -t.b.x() * std::sin(v(1)), t.a.y() * std::cos(v(0)), t.b.y() * std::cos(v(1));
+      // 2. The Jacobian (evaluated with f), as the seed wrote it or corrected.
       if (options.seed_jacobian && k == 2) J.row(1) *= -1.0;                  // Df3_j, both signs flipped
       if (options.seed_jacobian && k == 3) J(1, 1) = -std::cos(pose.x(3));    // Df4_j(2) = -cos(D)
       // 3. The closed-form inverse and the Newton step v <- v - J^-1 f.
@@ -53,7 +49,7 @@ SeedMethodPose seed_method_pose(double theta, const SeedMethodOptions& options, 
         break;
       }
       v -= inverse.inverse * f;
-      f = f_of(v);
+      loop.residual_and_jacobian(v, f, J);
       ++run.iterations;
     }
     pose.x.segment<2>(2 * k) = v;

@@ -24,18 +24,6 @@ double residual_inf(const MustangClosure& closure, const MustangAngles& x) {
   return f.lpNorm<Eigen::Infinity>();
 }
 
-// One of seed 003's loops as a 2x2 system in (alpha, beta), the loops before it held fixed.
-struct LoopSystem : nonlinear::EvaluatesTogether<LoopSystem, 2> {
-  static constexpr int size = 2;
-  LoopTerms terms;
-  int dimension() const { return 2; }
-  void residual_and_jacobian(const Eigen::Vector2d& v, Eigen::Vector2d& f, Eigen::Matrix2d& J) const {
-    const double ca = std::cos(v(0)), sa = std::sin(v(0)), cb = std::cos(v(1)), sb = std::sin(v(1));
-    f << terms.known.x() + terms.a.x() * ca + terms.b.x() * cb, terms.known.y() + terms.a.y() * sa + terms.b.y() * sb;
-    J << -terms.a.x() * sa, -terms.b.x() * sb, terms.a.y() * ca, terms.b.y() * cb;
-  }
-};
-
 // Sequential Newton: loop 1, 2, 3, 4 in turn, each a 2x2 Newton with the closed-form inverse.
 class Sequential final : public MustangPoseSolver {
  public:
@@ -61,8 +49,8 @@ class Sequential final : public MustangPoseSolver {
 
  private:
   MustangClosure closure_;
-  LoopSystem loop_;
-  nonlinear::Newton<LoopSystem, linalg::ClosedForm2x2> newton_;
+  MustangLoop loop_;
+  nonlinear::Newton<MustangLoop, linalg::ClosedForm2x2> newton_;
 };
 
 // Full Newton on all eight equations with a compile-time linear solver.
@@ -152,7 +140,7 @@ MustangStart mustang_seed_start(double residual_tolerance) {
   const Eigen::Vector2d guess = MustangClosure::seed_guess().head<2>();
   MustangStart start;
   start.x = MustangClosure::seed_guess();
-  LoopSystem loop;
+  MustangLoop loop;
   nonlinear::NewtonOptions plain;
   plain.residual_tolerance = residual_tolerance;
   plain.max_iterations = 100;

@@ -28,6 +28,7 @@
 // the same roots.
 
 #include <Eigen/Core>
+#include <cmath>
 #include <numbers>
 
 #include "numlab/linalg/linear_result.hpp"
@@ -77,6 +78,19 @@ class MustangClosure : public nonlinear::EvaluatesTogether<MustangClosure, 8> {
   MustangLengths lengths_;
   double theta_ = 0.0;
   Eigen::Vector2d input_, bent_;  // u(theta), u(theta + bend)
+};
+
+// One loop as a 2x2 system in its own pair (alpha, beta), the loops before it held fixed in
+// `terms`: what sequential Newton solves, four times in order.
+struct MustangLoop : nonlinear::EvaluatesTogether<MustangLoop, 2> {
+  static constexpr int size = 2;
+  LoopTerms terms;
+  int dimension() const { return 2; }
+  void residual_and_jacobian(const Eigen::Vector2d& v, Eigen::Vector2d& f, Eigen::Matrix2d& J) const {
+    const double ca = std::cos(v(0)), sa = std::sin(v(0)), cb = std::cos(v(1)), sb = std::sin(v(1));
+    f << terms.known.x() + terms.a.x() * ca + terms.b.x() * cb, terms.known.y() + terms.a.y() * sa + terms.b.y() * sb;
+    J << -terms.a.x() * sa, -terms.b.x() * sb, terms.a.y() * ca, terms.b.y() * cb;
+  }
 };
 
 }  // namespace numlab::mechanisms
