@@ -23,7 +23,7 @@ std::string loop_name(int loop) {
 
 // "loop 2 (C, D: ...) cannot close beyond -41.42 deg (fails at -41.43)" or the solver's failure.
 std::string limit_text(const MustangLimit& limit) {
-  if (!limit.reached) return "not reached (the sweep ended first)";
+  if (!limit.reached) return "not reached in this sweep";
   if (limit.status == Status::cannot_assemble) {
     return fmt::format("{:.4f} deg assembles, {:.4f} deg does not: {} cannot close", limit.last_assembled_deg,
                        limit.failed_deg, loop_name(limit.loop));
@@ -41,6 +41,12 @@ nlohmann::ordered_json limit_json(const MustangLimit& limit) {
           {"loop_name", loop_name(limit.loop)},
           {"solver_failed_in_loop", limit.solver_loop == 0 ? nlohmann::ordered_json(nullptr)
                                                            : nlohmann::ordered_json(limit.solver_loop)}};
+}
+
+// Whether the sweep ran into the end of the assembly range in either direction.
+bool reached_a_limit(const MustangSweep& sweep) {
+  return (sweep.lower.reached && sweep.lower.status == Status::cannot_assemble) ||
+         (sweep.upper.reached && sweep.upper.status == Status::cannot_assemble);
 }
 
 nlohmann::ordered_json assembly_range(const MustangSweep& sweep) {
@@ -83,7 +89,7 @@ nlohmann::ordered_json json_of(const MustangRequest& request, const MustangSweep
                             {"condition", number_or_null(pose.condition)}});
   }
   out["status"] = std::string(to_string(sweep.status));
-  if (sweep.lower.reached || sweep.upper.reached) out["assembly_range_deg"] = assembly_range(sweep);
+  if (reached_a_limit(sweep)) out["assembly_range_deg"] = assembly_range(sweep);
   out["limits"] = {{"lower", limit_json(sweep.lower)}, {"upper", limit_json(sweep.upper)}};
   out["worst_closed_form_distance"] = number_or_null(sweep.worst_closed_form_distance);
   out["worst_length_error"] = number_or_null(sweep.worst_length_error);
@@ -144,7 +150,7 @@ void print_text(std::ostream& out, const MustangRequest& request, const MustangS
                    std::string(to_string(pose.outcome.status))});
   }
   if (!sweep.poses.empty()) table.print(out);
-  if (sweep.lower.reached || sweep.upper.reached) {
+  if (reached_a_limit(sweep)) {
     const auto range = assembly_range(sweep);
     auto end = [](const nlohmann::ordered_json& value) { return value.is_null() ? std::string("-") : fmt::format("{:.4f}", value.get<double>()); };
     out << fmt::format("assembly range     [{}, {}] deg (the last angles that assembled, to 0.01 deg)\n", end(range[0]), end(range[1]));

@@ -121,3 +121,10 @@ TEST_CASE("bench mustang: JSON rows as ratios to full Newton", "[cli][bench][mus
     CHECK(row["error"].get<double>() <= 1e-7);
   }
 }
+
+TEST_CASE("mechanism mustang: a solver that fails inside the range is not reported as a limit", "[cli][mustang]") {
+  const auto out = run_json("mechanism mustang", "--crank 10 --max-iter 1", 1);
+  CHECK(out["status"] == "max_iterations");
+  CHECK_FALSE(out.contains("assembly_range_deg"));
+  CHECK(out["limits"]["lower"]["status"] == "max_iterations");
+}
