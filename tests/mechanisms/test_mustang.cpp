@@ -58,7 +58,7 @@ MustangClosedForm closed_form_limit(double inside_deg, double outside_deg, doubl
 }
 }  // namespace
 
-TEST_CASE("Mustang: the hand-derived 8x8 Jacobian agrees with finite differences and AutoDiff", "[mechanisms][mustang]") {
+TEST_CASE("Mustang: the hand-derived 8x8 Jacobian agrees with central finite differences", "[mechanisms][mustang]") {
   for (const double theta : {-30.0, 10.0, 45.0, 58.0}) {
     const MustangClosure closure(theta * degrees);
     Eigen::VectorXd x(8);
@@ -222,4 +222,20 @@ TEST_CASE("Mustang: near loop 4's crossing (43.15 deg) a single angle stays on t
   CHECK(std::abs((folded[11] - folded[9]).norm() - 1.0) <= 1e-12);
   CHECK(std::abs((folded[11] - folded[10]).norm() - 4.0 / 3.0) <= 1e-12);
   CHECK_FALSE(MustangLinkage::on_seed_branch(folded));
+}
+
+TEST_CASE("Mustang: the seed's loop-3 Jacobian row is what stops its Newton, from the seed's own guess",
+          "[mechanisms][mustang][seed]") {
+  for (const double deg : {35.0, 45.0, 55.0}) {
+    INFO(deg);
+    SeedMethodOptions as_written;
+    const SeedMethodPose seed = seed_method_pose(deg * degrees, as_written);
+    CHECK(seed.loops[2].status == Status::max_iterations);  // the flipped row: no convergence
+    SeedMethodOptions corrected = as_written;
+    corrected.seed_jacobian = false;
+    corrected.sum_test = false;
+    const SeedMethodPose fixed = seed_method_pose(deg * degrees, corrected);
+    CHECK(fixed.loops[2].status == Status::converged);      // the same guess, the right Jacobian
+    CHECK(fixed.loops[2].residual_inf <= 1e-3);
+  }
 }
