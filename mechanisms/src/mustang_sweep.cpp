@@ -24,14 +24,17 @@ class March {
  public:
   March(MustangPoseSolver& solver, const MustangSweepOptions& options, MustangSweep& sweep, const MustangAngles& start,
         double start_deg, int direction)
-      : solver_(solver), options_(options), sweep_(sweep), x_(start), deg_(start_deg), direction_(direction) {}
+      : solver_(solver), options_(options), sweep_(sweep), x_(start), previous_(MustangAngles::Zero()), deg_(start_deg),
+        direction_(direction) {}
 
   // Moves to target_deg; false (with the limit filled in) if the sweep had to stop before it.
   bool advance_to(double target_deg, MustangOutcome& last, MustangLimit& limit) {
     double step = std::min(options_.max_step_deg, std::abs(target_deg - deg_));
     if (step == 0.0) {  // already there: refine once, for the pose's own outcome
       last = solver_.solve(deg_ * degrees, x_);
-      return last.status == Status::converged;
+      if (last.status == Status::converged) return true;
+      limit = diagnose(deg_, last);
+      return false;
     }
     while (deg_ != target_deg) {
       // 1. The next angle: one step on, or the target when it is that close.
@@ -169,10 +172,7 @@ MustangSweep mustang_sweep(MustangPoseSolver& solver, double start_deg, double s
     MustangLimit& limit = direction > 0 ? sweep.upper : sweep.lower;
     for (const double target : direction > 0 ? up : down) {
       MustangOutcome outcome;
-      if (!march.advance_to(target, outcome, limit)) {
-        if (limit.status == Status::converged) limit.status = outcome.status;
-        break;
-      }
+      if (!march.advance_to(target, outcome, limit)) break;
       poses.push_back(checked_pose(linkage, target, march.x(), outcome, options.checks));
     }
   }
