@@ -18,15 +18,12 @@ using namespace numlab::mechanisms;
 namespace {
 constexpr double degrees = std::numbers::pi / 180.0;
 
-nonlinear::NewtonOptions tight() {
+// A sweep with Newton stopping at ||f||_inf <= 1e-12 (the CLI's default).
+MustangSweep sweep_with(const std::string& solver, double start, double stop, double step) {
   nonlinear::NewtonOptions options;
   options.residual_tolerance = 1e-12;
   options.max_iterations = 50;
-  return options;
-}
-
-MustangSweep sweep_with(const std::string& solver, double start, double stop, double step) {
-  const auto pose_solver = make_mustang_solver(solver, "gepp", tight());
+  const auto pose_solver = make_mustang_solver(solver, "gepp", options);
   return mustang_sweep(*pose_solver, start, stop, step);
 }
 
