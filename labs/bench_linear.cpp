@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_jansen.hpp"
+#include "bench_mustang.hpp"
 #include "chart.hpp"
 #include "numlab/linalg/eigen_reference.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
@@ -136,8 +137,8 @@ std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick) {
 
 BenchCommand::BenchCommand(CLI::App& app) {
   command_ = app.add_subcommand("bench", "Measure speed: median of repeated in-process runs, as ratios");
-  command_->add_option("what", what_, "What to measure: all (default), linear or jansen")
-      ->check(CLI::IsMember({"all", "linear", "jansen"}));
+  command_->add_option("what", what_, "What to measure: all (default), linear, jansen or mustang")
+      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang"}));
   command_->add_option("--chart", chart_,
                        "Main chart (.svg or .png); default OUT/work-precision.svg (all) or OUT/bench-linear.svg");
   command_->add_option("--sizes", sizes_, "Sizes n, comma-separated")->delimiter(',')->check(CLI::Range(1, 4096));
@@ -148,6 +149,7 @@ BenchCommand::BenchCommand(CLI::App& app) {
 int BenchCommand::run() const {
   if (what_ == "all") return run_bench_all(common_, chart_, quick_);
   if (what_ == "jansen") return run_jansen();
+  if (what_ == "mustang") return run_mustang_bench(common_, quick_);
   const ChartFiles files = chart_files(chart_.empty() ? common_.out_dir + "/bench-linear.svg" : chart_);
   const std::vector<BenchRow> rows = bench_linear(sizes_, quick_);
   draw_linear_chart(files, rows, sizes_);

@@ -3,9 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 #include <vector>
+
+#include "svg_canvas.hpp"
 
 namespace numlab::cli {
 
@@ -24,44 +25,11 @@ constexpr std::pair<JansenJoint, JansenJoint> bars[] = {
 
 std::size_t at(JansenJoint joint) { return static_cast<std::size_t>(joint); }
 
-// Model coordinates (y up) to SVG (y down), through a view box that holds every point.
-struct Frame {
-  double min_x, max_x, min_y, max_y;
-  std::string header(double pixel_width) const {
-    const double margin = 12.0, top = 20.0;  // the caption sits in the extra room at the top
-    const double width = max_x - min_x + 2 * margin, height = max_y - min_y + margin + top;
-    return fmt::format(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{:.2f} {:.2f} {:.2f} {:.2f}\" width=\"{:.0f}\" "
-        "height=\"{:.0f}\" font-family=\"Helvetica, Arial, sans-serif\">\n"
-        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"white\"/>\n",
-        min_x - margin, -max_y - top, width, height, pixel_width, pixel_width * height / width, min_x - margin,
-        -max_y - top, width, height);
-  }
-};
-
-Frame frame_of(const std::vector<Point>& points) {
-  Frame frame{std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-              std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()};
-  for (const Point& p : points) {
-    frame.min_x = std::min(frame.min_x, p.x());
-    frame.max_x = std::max(frame.max_x, p.x());
-    frame.min_y = std::min(frame.min_y, p.y());
-    frame.max_y = std::max(frame.max_y, p.y());
-  }
-  return frame;
-}
-
-std::string xy(const Point& p) { return fmt::format("{:.3f},{:.3f}", p.x(), -p.y()); }
-
 std::string foot_path(const std::vector<Point>& feet, const std::string& colour) {
   std::string points;
   for (const Point& p : feet) points += xy(p) + " ";
   return fmt::format("<polygon points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"0.8\" stroke-dasharray=\"2 1.5\"/>\n",
                      points, colour);
-}
-
-std::string fixed_pivot(const Point& p) {
-  return fmt::format("<path d=\"M {:.3f} {:.3f} l -3.5 6 l 7 0 z\" fill=\"#666\"/>\n", p.x(), -p.y());
 }
 
 // One leg's bars and joints at `joints`; with `frames` (one JansenJoints per time step) they move.
@@ -121,11 +89,6 @@ std::vector<Point> feet(const std::vector<JansenJoints>& frames) {
   std::vector<Point> path;
   for (const auto& joints : frames) path.push_back(joints[at(JansenJoint::F)]);
   return path;
-}
-
-std::string caption(const Frame& frame, const std::string& text) {
-  return fmt::format("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"4.5\" fill=\"#333\">{}</text>\n", frame.min_x,
-                     -frame.max_y - 10.0, text);
 }
 
 }  // namespace

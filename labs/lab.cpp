@@ -101,6 +101,8 @@ const std::vector<Lab>& all_labs() {
       {"jansen-sequential", "Sequential vs full Newton: seed 000's Figure 4 done right, timing, over-modelling",
        run_jansen_sequential_lab},
       {"beest", "Seed 000's four-legged beest, drawn and animated from one solved cycle", run_beest_lab},
+      {"mustang", "The Mustang roof linkage: the seed's method and why it fails, the assembly range, the scenes",
+       run_mustang_lab},
       {"fit", "Least squares: the normal equations against NIST's certified digits, scaling, the foot path's arcs",
        run_fit_lab},
   };

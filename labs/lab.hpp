@@ -87,6 +87,7 @@ int run_newton_lab(LabSession& session);
 int run_jansen_lab(LabSession& session);
 int run_jansen_sequential_lab(LabSession& session);
 int run_beest_lab(LabSession& session);
+int run_mustang_lab(LabSession& session);
 int run_fit_lab(LabSession& session);
 
 }  // namespace numlab::cli

@@ -13,6 +13,7 @@
 #include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "jansen_scene.hpp"
+#include "mustang_command.hpp"
 #include "table.hpp"
 
 namespace numlab::cli {
@@ -135,7 +136,7 @@ SweepRange parse_sweep(const std::string& text) {
 
 MechanismCommand::MechanismCommand(CLI::App& app) {
   command_ = app.add_subcommand("mechanism", "Solve a linkage at one crank angle or over a sweep");
-  command_->add_option("name", name_, "jansen (seed 000, 8 equations), jansen10 (seed 001, 10 equations)")
+  command_->add_option("name", name_, "jansen (seed 000, 8 equations), jansen10 (seed 001, 10 equations), mustang (seed 003)")
       ->required()
       ->check(CLI::IsMember({"jansen", "jansen10", "mustang"}));
   auto* crank = command_->add_option("--crank", crank_, "One crank angle (degrees)");
@@ -153,10 +154,13 @@ MechanismCommand::MechanismCommand(CLI::App& app) {
 }
 
 int MechanismCommand::run() const {
-  if (name_ == "mustang") throw std::invalid_argument("mechanism 'mustang' is not available yet");
   if (!crank_ && sweep_.empty()) throw std::invalid_argument("give --crank DEG or --sweep START:STOP:STEP");
   if (crank_ && !std::isfinite(*crank_)) throw std::invalid_argument("--crank must be a finite number of degrees");
   const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : parse_sweep(sweep_);
+  if (name_ == "mustang") {
+    if (!beest_.empty()) throw std::invalid_argument("--beest draws the Jansen leg's beest, not the mustang");
+    return run_mustang({range.start, range.stop, range.step, solver_, linear_, common_, svg_, animate_});
+  }
   const JansenModel model = name_ == "jansen" ? JansenModel::eight_equations : JansenModel::ten_equations;
 
   nonlinear::NewtonOptions options;

@@ -65,7 +65,8 @@ TEST_CASE("numlab labs lists the labs", "[cli][labs]") {
   const auto run = run_numlab("labs");
   CHECK(run.exit_code == 0);
   CHECK_THAT(run.out, Contains("gauss") && Contains("seidel") && Contains("inverse2x2") && Contains("newton") &&
-                          Contains("jansen-sequential") && Contains("beest") && Contains("fit"));
+                          Contains("jansen-sequential") && Contains("beest") && Contains("mustang") &&
+                          Contains("fit"));
 }
 
 TEST_CASE("Each lab runs its steps with --step without blocking, and ends with the GSL comparison", "[cli][labs]") {
@@ -77,6 +78,7 @@ TEST_CASE("Each lab runs its steps with --step without blocking, and ends with t
       {"newton", {"step3-rosenbrock.csv", "method,status,iterations,||f||_inf,distance,f evals,J evals,time"}},
       {"jansen-sequential",
        {"step3-costs.csv", "model / solver,time per cycle,iterations,worst error"}},
+      {"mustang", {"step7-solvers.csv", "solver,time per sweep (s),x full,iterations,error"}},
       {"fit",
        {"step2-nist-lre.csv",
         "data,D,normal,normal (Gauss-Seidel),normal-scaled,gsl,eigen-qr,kappa normal,kappa scaled,kappa gsl"}}};

@@ -1,7 +1,7 @@
 // Heap allocations inside the solve loops, counted two ways:
 //  - Eigen's own (EIGEN_RUNTIME_NO_MALLOC: every Eigen heap allocation asks is_malloc_allowed());
 //  - everything else, through a counting global operator new (release build; see below for ASan).
-// This file is its own executable and compiles inverse2x2.cpp itself, so that every Eigen function
+// This file is its own executable and compiles inverse2x2.cpp (and the closures) itself, so that every Eigen function
 // it runs is built with the hook (the library is not linked); count_eigen_allocations.hpp is
 // force-included into both.
 
@@ -39,6 +39,7 @@ void operator delete[](void* memory, std::size_t) noexcept { std::free(memory); 
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
+#include "numlab/mechanisms/mustang_closure.hpp"
 #include "numlab/nonlinear/newton.hpp"
 #include "../nonlinear/small_systems.hpp"
 
@@ -164,6 +165,33 @@ TEST_CASE("Fixed-size Newton allocates nothing, in solve() or per iteration", "[
     for (int repeat = 0; repeat < 20; ++repeat) {
       result8 = full.solve(start);
       result2 = two_by_two.solve(test::Vector2(-1.2, 1.0));
+    }
+  });
+  REQUIRE(result8.status == Status::converged);
+  REQUIRE(result8.iterations >= 2);
+  REQUIRE(result2.status == Status::converged);
+  CHECK(counted.eigen == 0);
+  if (counts_operator_new) CHECK(counted.other == 0);
+}
+
+TEST_CASE("Mustang: full 8x8 Newton and a loop's 2x2 Newton allocate nothing", "[allocations][newton][mustang]") {
+  using numlab::mechanisms::MustangClosure;
+  const MustangClosure closure(0.5);
+  MustangClosure::Vector start;  // near the pose at 0.5 rad on the seed's branch
+  start << 0.16, 1.51, 1.14, 0.98, 0.77, 1.04, 0.22, 0.62;
+  nonlinear::NewtonOptions options;
+  options.residual_tolerance = 1e-12;
+  nonlinear::Newton<MustangClosure> full(closure, options);  // GEPP<8>
+  // Loop 1 as its own 2x2 system, solved with the closed-form inverse (as sequential Newton does).
+  numlab::mechanisms::MustangLoop loop;
+  loop.terms = closure.loop(0, start);
+  nonlinear::Newton<numlab::mechanisms::MustangLoop, linalg::ClosedForm2x2> two_by_two(loop, options);
+  nonlinear::NewtonResult<8> result8;
+  nonlinear::NewtonResult<2> result2;
+  const AllocationCount counted = allocations_during([&] {
+    for (int repeat = 0; repeat < 20; ++repeat) {
+      result8 = full.solve(start);
+      result2 = two_by_two.solve(Eigen::Vector2d(0.16, 1.51));
     }
   });
   REQUIRE(result8.status == Status::converged);
