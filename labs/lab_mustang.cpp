@@ -209,7 +209,8 @@ int run_mustang_lab(LabSession& session) {
   while (at45 + 1 < scene.poses.size() && scene.poses[at45].crank_deg < 45.0) ++at45;
   const std::string still = write_lab_file(session, "mustang.svg", mustang_pose_svg(scene, at45));
   const std::string moving = write_lab_file(session, "mustang-animated.svg", mustang_animation_svg(scene, 8.0));
-  session.say(fmt::format("Written: {} and {}.", still, moving));
+  session.figure(still, "the roof linkage at 45 deg, the three major links heavy, with the path of the roof tip P12");
+  session.figure(moving, "the sweep over the assembly range, animated forth and back");
 
   session.begin_step("Every solver over the range", "One sweep -41:56:0.5 per solver (median of repeated runs, "
                                                     "tolerance 1e-10), as ratios to full Newton:");
