@@ -11,6 +11,7 @@
 
 #include "bench_jansen.hpp"
 #include "bench_linear.hpp"
+#include "bench_mustang.hpp"
 #include "chart.hpp"
 #include "fit_charts.hpp"
 #include "fit_degree_sweep.hpp"
@@ -29,7 +30,16 @@ void progress(const std::string& message) {
   if (isatty(STDERR_FILENO) != 0) std::cerr << "\r\033[K" << message << std::flush;
 }
 
-// --- Jansen: the work-precision diagram ---
+// --- Jansen and Mustang: work-precision diagrams ---
+
+// One solver at one Newton tolerance: median time per cycle or sweep, and the worst joint error.
+struct WorkPrecisionPoint {
+  std::string solver;
+  double tolerance;
+  double time_s;
+  double error;
+  int iterations;
+};
 
 std::vector<double> tolerance_sweep(bool quick) {
   if (quick) return {1e-2, 1e-6, 1e-10, 1e-13};
@@ -38,47 +48,68 @@ std::vector<double> tolerance_sweep(bool quick) {
   return tolerances;
 }
 
-std::vector<JansenBenchRow> work_precision_rows(bool quick) {
-  std::vector<JansenBenchRow> rows;
+// Runs `bench_at(tolerance)` over the sweep. The closed form does not depend on the tolerance:
+// it is kept once. Each solver's rows end up together, loosest tolerance first.
+template <typename BenchAt>
+std::vector<WorkPrecisionPoint> work_precision_points(const std::string& what, bool quick, BenchAt bench_at) {
+  std::vector<WorkPrecisionPoint> points;
   for (double tolerance : tolerance_sweep(quick)) {
-    progress(fmt::format("bench: Jansen cycle at tolerance {:g}", tolerance));
-    for (const JansenBenchRow& row : bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick)) {
-      // The closed form does not depend on the tolerance: one point.
+    progress(fmt::format("bench: {} at tolerance {:g}", what, tolerance));
+    for (const auto& row : bench_at(tolerance)) {
       const bool repeat = row.solver == "analytic" &&
-                          std::any_of(rows.begin(), rows.end(), [](const auto& r) { return r.solver == "analytic"; });
-      if (!repeat) rows.push_back(row);
+                          std::any_of(points.begin(), points.end(), [](const auto& p) { return p.solver == "analytic"; });
+      if (!repeat) points.push_back({row.solver, row.tolerance, row.time_s, row.error, row.iterations});
     }
   }
-  // Each solver's rows together, loosest tolerance first, so each draws as one line.
-  std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.solver < b.solver; });
-  return rows;
+  std::stable_sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.solver < b.solver; });
+  return points;
 }
 
-void draw_work_precision(const ChartFiles& files, const std::vector<JansenBenchRow>& rows) {
+void draw_work_precision(const ChartFiles& files, const std::string& title, const std::vector<WorkPrecisionPoint>& points) {
   constexpr double floor = 1e-17;  // an exact match still needs a place on a log axis
   std::string csv = "solver,tolerance,time_s,error\n";
   std::vector<std::string> solvers;
-  for (const auto& row : rows) {
-    csv += fmt::format("{},{:g},{:.6g},{:.6g}\n", row.solver, row.tolerance, row.time_s, std::max(row.error, floor));
-    if (std::find(solvers.begin(), solvers.end(), row.solver) == solvers.end()) solvers.push_back(row.solver);
+  for (const auto& point : points) {
+    csv += fmt::format("{},{:g},{:.6g},{:.6g}\n", point.solver, point.tolerance, point.time_s, std::max(point.error, floor));
+    if (std::find(solvers.begin(), solvers.end(), point.solver) == solvers.end()) solvers.push_back(point.solver);
   }
   std::string plots;
   for (std::size_t s = 0; s < solvers.size(); ++s) {
-    const bool point = solvers[s] == "analytic";
+    const bool closed_form = solvers[s] == "analytic";
     plots += fmt::format("{}'{}' using (strcol(1) eq '{}' ? $4 : 1/0):3 skip 1 {} title '{}'", s ? ", " : "",
                          files.data, solvers[s],
-                         point ? "with points pt 7 ps 2.5 lc rgb 'black'" : fmt::format("with linespoints lw 2 pt {}", 4 + s),
-                         point ? "closed form (circle intersections)" : solvers[s]);
+                         closed_form ? "with points pt 7 ps 2.5 lc rgb 'black'" : fmt::format("with linespoints lw 2 pt {}", 4 + s),
+                         closed_form ? "closed form (circle intersections)" : solvers[s]);
   }
-  std::string script = "# Work-precision diagram (numlab bench): median time per 360-pose Jansen cycle against the\n"
-                       "# worst joint error vs the closed form, one line per solver over Newton tolerances 1e-2..1e-13.\n";
+  std::string script = "# Work-precision diagram (numlab bench): median time per run against the worst joint error\n"
+                       "# vs the closed form, one line per solver over Newton tolerances 1e-2..1e-13.\n";
   script += gnuplot_output_lines(files);
   script += "set datafile separator ','\nset logscale xy\nset grid\nset key outside right box opaque\n"
-            "set xlabel 'worst joint error vs the closed form (length units)'\nset ylabel 'median time per cycle (s)'\n"
-            "set format x '10^{%T}'\nset format y '10^{%T}'\n"
-            "set title 'Jansen leg, 360-pose cycle: work against precision (lower left is better)'\n";
-  script += "plot " + plots + "\n";
+            "set xlabel 'worst joint error vs the closed form (length units)'\nset ylabel 'median time per run (s)'\n"
+            "set format x '10^{%T}'\nset format y '10^{%T}'\n";
+  script += fmt::format("set title '{} (lower left is better)'\nplot {}\n", title, plots);
   draw_chart(files, csv, script);
+}
+
+// Rows: solvers; columns: tolerances; cells: time (error). The closed form fills its first column only.
+Table work_precision_table(const std::vector<WorkPrecisionPoint>& points, const std::vector<double>& tolerances) {
+  std::vector<std::string> header = {"solver"};
+  for (double tolerance : tolerances) header.push_back(fmt::format("{:g}", tolerance));
+  Table table(header);
+  for (std::size_t first = 0; first < points.size();) {
+    std::vector<std::string> cells = {points[first].solver};
+    std::size_t next = first;
+    for (double tolerance : tolerances) {
+      const bool here = next < points.size() && points[next].solver == points[first].solver &&
+                        points[next].tolerance == tolerance;
+      cells.push_back(here ? fmt::format("{:.3g} ms ({:.0e})", points[next].time_s * 1e3, points[next].error) : "");
+      if (here) ++next;
+    }
+    if (next == first) ++next;  // the closed form: one point, at the first tolerance
+    first = next;
+    table.add_row(cells);
+  }
+  return table;
 }
 
 // --- Gauss-Seidel: sweeps against kappa ---
@@ -156,10 +187,23 @@ int run_bench_all(const CommonOptions& common, const std::string& chart, bool qu
   const ChartFiles linear_chart = chart_files(common.out_dir + "/bench-linear.svg");
   const ChartFiles seidel_chart = chart_files(common.out_dir + "/bench-seidel.svg");
   const ChartFiles fit_chart = chart_files(common.out_dir + "/bench-fit.svg");
+  const ChartFiles mustang_chart = chart_files(common.out_dir + "/work-precision-mustang.svg");
   const fitting::DataSet wampler = fitting::read_nist_data(std::string(NUMLAB_NIST_DIR) + "/Wampler4.dat");
 
   // 2. Measure: warm-up, repeated runs, medians (timing.hpp).
-  const std::vector<JansenBenchRow> jansen = work_precision_rows(quick);
+  // The rows at tolerance 1e-10 are kept whole for the ratio tables.
+  std::vector<JansenBenchRow> jansen_at_1e10;
+  std::vector<MustangBenchRow> mustang_at_1e10;
+  const std::vector<WorkPrecisionPoint> jansen = work_precision_points("Jansen cycle", quick, [&](double tolerance) {
+    auto rows = bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick);
+    if (tolerance == 1e-10) jansen_at_1e10 = rows;
+    return rows;
+  });
+  const std::vector<WorkPrecisionPoint> mustang = work_precision_points("Mustang sweep", quick, [&](double tolerance) {
+    auto rows = bench_mustang(tolerance, quick);
+    if (tolerance == 1e-10) mustang_at_1e10 = rows;
+    return rows;
+  });
   const std::vector<int> sizes = quick ? std::vector<int>{2, 8, 64} : std::vector<int>{2, 8, 64, 256, 512, 1024};
   const std::vector<BenchRow> linear = bench_linear(sizes, quick);
   const std::vector<SeidelRow> seidel = seidel_rows(quick);
@@ -168,20 +212,24 @@ int run_bench_all(const CommonOptions& common, const std::string& chart, bool qu
   progress("");
 
   // 3. Draw.
-  draw_work_precision(work_precision, jansen);
+  draw_work_precision(work_precision, "Jansen leg, 360-pose cycle", jansen);
+  draw_work_precision(mustang_chart, "Mustang roof linkage, 195-pose sweep over its assembly range", mustang);
   draw_linear_chart(linear_chart, linear, sizes);
   draw_seidel_chart(seidel_chart, seidel);
   draw_degree_sweep_chart(fit_chart, "NIST Wampler4: digits and residual against degree", sweep);
-  const std::vector<ChartFiles> charts = {work_precision, linear_chart, seidel_chart, fit_chart};
+  const std::vector<ChartFiles> charts = {work_precision, mustang_chart, linear_chart, seidel_chart, fit_chart};
 
   // 4. Report.
   if (common.format == Format::json) {
     nlohmann::ordered_json out = {{"benchmark", "all"}, {"charts", nlohmann::ordered_json::array()},
                                   {"rows", nlohmann::ordered_json::array()}};
     for (const auto& files : charts) out["charts"].push_back({{"chart", files.chart}, {"data", files.data}, {"script", files.script}});
-    for (const auto& row : jansen) {
-      out["rows"].push_back({{"bench", "jansen"}, {"solver", row.solver}, {"tolerance", row.tolerance},
-                             {"time_s", row.time_s}, {"error", number_or_null(row.error)}, {"iterations", row.iterations}});
+    for (const auto& [bench, points] : {std::pair{"jansen", &jansen}, std::pair{"mustang", &mustang}}) {
+      for (const auto& point : *points) {
+        out["rows"].push_back({{"bench", bench}, {"solver", point.solver}, {"tolerance", point.tolerance},
+                               {"time_s", point.time_s}, {"error", number_or_null(point.error)},
+                               {"iterations", point.iterations}});
+      }
     }
     for (const auto& row : linear) {
       out["rows"].push_back({{"bench", "linear"}, {"solver", row.solver}, {"tolerance", nullptr}, {"time_s", row.time_s},
@@ -203,34 +251,13 @@ int run_bench_all(const CommonOptions& common, const std::string& chart, bool qu
     std::cout << out.dump(2) << '\n';
     return exit_success;
   }
-  // The ratio table at tolerance 1e-10, the closed form last (it has no tolerance).
-  std::vector<JansenBenchRow> at_1e10;
-  for (const auto& row : jansen) {
-    if (row.tolerance == 1e-10 && row.solver != "analytic") at_1e10.push_back(row);
-  }
-  for (const auto& row : jansen) {
-    if (row.solver == "analytic") at_1e10.push_back(row);
-  }
-  print_jansen_bench(std::cout, at_1e10);
-  std::cout << "\nWork-precision: median time per cycle (and worst joint error) at each Newton tolerance.\n";
-  std::vector<std::string> header = {"solver"};
-  const std::vector<double> tolerances = tolerance_sweep(quick);
-  for (double tolerance : tolerances) header.push_back(fmt::format("{:g}", tolerance));
-  Table table(header);
-  for (std::size_t first = 0; first < jansen.size();) {
-    std::vector<std::string> cells = {jansen[first].solver};
-    std::size_t next = first;
-    for (double tolerance : tolerances) {
-      const bool here = next < jansen.size() && jansen[next].solver == jansen[first].solver &&
-                        jansen[next].tolerance == tolerance;
-      cells.push_back(here ? fmt::format("{:.3g} ms ({:.0e})", jansen[next].time_s * 1e3, jansen[next].error) : "");
-      if (here) ++next;
-    }
-    if (next == first) ++next;  // the closed form's single point
-    first = next;
-    table.add_row(cells);
-  }
-  table.print(std::cout);
+  print_jansen_bench(std::cout, jansen_at_1e10);
+  std::cout << "\nJansen work-precision: median time per cycle (worst joint error) at each Newton tolerance.\n";
+  work_precision_table(jansen, tolerance_sweep(quick)).print(std::cout);
+  std::cout << '\n';
+  print_mustang_bench(std::cout, mustang_at_1e10);
+  std::cout << "\nMustang work-precision: median time per sweep (worst joint error) at each Newton tolerance.\n";
+  work_precision_table(mustang, tolerance_sweep(quick)).print(std::cout);
   std::cout << "\nGauss-Seidel on the normal equations (n = 8): sweeps against kappa(A)\n";
   Table sweeps({"kappa", "sweeps", "sweeps / kappa^2", "time", "forward error"});
   for (const auto& row : seidel) {

@@ -186,8 +186,13 @@ TEST_CASE("numlab bench with no argument: work-precision rows for every Jansen s
     if (row["bench"] == "jansen") tolerances[row["solver"]].insert(row["tolerance"].get<double>());
     if (row["bench"] == "linear" || row["bench"] == "seidel" || row["bench"] == "fit") CHECK(row.contains("n"));
   }
-  CHECK(benches == std::set<std::string>{"jansen", "linear", "seidel", "fit"});
+  CHECK(benches == std::set<std::string>{"jansen", "mustang", "linear", "seidel", "fit"});
   CHECK(tolerances.at("analytic").size() == 1);
+  std::set<double> mustang_tolerances;
+  for (const auto& row : out["rows"]) {
+    if (row["bench"] == "mustang" && row["solver"] == "sequential") mustang_tolerances.insert(row["tolerance"].get<double>());
+  }
+  CHECK(mustang_tolerances == std::set<double>{1e-2, 1e-6, 1e-10, 1e-13});
   for (const char* solver : {"full", "full-gauss-seidel", "full-gsl-lu", "full-eigen-lu", "sequential", "gsl-newton"}) {
     INFO(solver);
     CHECK(tolerances.at(solver) == std::set<double>{1e-2, 1e-6, 1e-10, 1e-13});
@@ -202,7 +207,7 @@ TEST_CASE("numlab bench with no argument: work-precision rows for every Jansen s
   CHECK(tight < 1e-10);
   CHECK(loose > 1e3 * tight);
   // Every chart, with its CSV and gnuplot script beside it; --chart names the work-precision diagram.
-  REQUIRE(out["charts"].size() == 4);
+  REQUIRE(out["charts"].size() == 5);
   CHECK(out["charts"][0]["chart"] == folder + "/wp.svg");
   for (const auto& chart : out["charts"]) {
     for (const char* file : {"chart", "data", "script"}) CHECK(std::filesystem::exists(chart[file].get<std::string>()));
