@@ -250,21 +250,20 @@ std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const st
   throw std::invalid_argument("unknown solver '" + solver + "' (expected full, sequential, analytic or gsl-<type>)");
 }
 
-JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
-                        double step_deg, SweepChecks checks) {
+JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
+                                    double step_deg) {
   if (!(step_deg != 0.0) || !std::isfinite(start_deg) || !std::isfinite(stop_deg) || !std::isfinite(step_deg) ||
       (stop_deg - start_deg) * step_deg < 0.0) {
     throw std::invalid_argument("sweep " + std::to_string(start_deg) + ":" + std::to_string(stop_deg) + ":" +
                                 std::to_string(step_deg) + " does not step from its start towards its stop");
   }
-  const JansenLeg leg;
-  JansenSweep sweep;
-  Eigen::VectorXd angles = jansen_seed_estimates(model, leg);
+  JansenSweepAngles sweep;
+  Eigen::VectorXd angles = jansen_seed_estimates(model, JansenLeg());
   double current_deg = JansenClosure::seed_crank_angle / degrees;
 
   // Moves from current_deg to target_deg: tries the whole step; when a solve fails, halves the
   // step and tries again from the last pose that solved (at most 20 halvings in all).
-  Eigen::VectorXd trial = angles;  // buffers reused from pose to pose (no allocation per pose)
+  Eigen::VectorXd trial = angles;  // buffer reused from pose to pose (no allocation per pose)
   auto advance_to = [&](double target_deg) -> PoseOutcome {
     double reached = current_deg, step = target_deg - current_deg;
     int halvings = 0;
@@ -306,45 +305,60 @@ JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double star
     ++sweep.walk_in_poses;
   }
 
+  // Storage for every pose, allocated once: the loop below allocates nothing.
   const int count = static_cast<int>(std::floor((stop_deg - start_deg) / step_deg + 1e-9)) + 1;
-  Eigen::VectorXd previous = angles, last = angles;
-  sweep.poses.reserve(static_cast<std::size_t>(count));
+  sweep.angles.resize(angles.size(), count);
+  sweep.crank_deg.reserve(static_cast<std::size_t>(count));
+  sweep.outcomes.reserve(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) {
     const double target = start_deg + i * step_deg;
     if (i > 0) {
       // Predictor: extrapolate along the path from the last two poses (equal steps), so the
       // corrector starts O(step^2) away from the new pose instead of O(step).
-      last = angles;
-      if (i > 1) angles = 2.0 * last - previous;
-      previous = last;
+      const auto p1 = sweep.angles.col(i - 1);
+      if (i >= 2) angles = 2.0 * p1 - sweep.angles.col(i - 2);
       outcome = advance_to(target);
       if (outcome.status != Status::converged && i > 1) {  // a bad prediction: retry from the last pose
-        angles = last;
+        angles = p1;
         outcome = advance_to(target);
       }
     } else {
       outcome = solver.solve(target * degrees, angles);  // refine at the start itself
-      previous = angles;
     }
     if (outcome.status != Status::converged) {
       sweep.status = outcome.status;
       break;
     }
     current_deg = target;
+    sweep.angles.col(i) = angles;
+    sweep.crank_deg.push_back(target);
+    sweep.outcomes.push_back(outcome);
+  }
+  return sweep;
+}
+
+JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
+                        double step_deg) {
+  const JansenSweepAngles solved = solve_crank_sweep(model, solver, start_deg, stop_deg, step_deg);
+  const JansenLeg leg;
+  JansenSweep sweep;
+  sweep.status = solved.status;
+  sweep.step_halvings = solved.step_halvings;
+  sweep.walk_in_poses = solved.walk_in_poses;
+  for (std::size_t i = 0; i < solved.outcomes.size(); ++i) {
+    // Each solved pose: its joints, link lengths, orientation and distance from the closed form.
     JansenPose pose;
-    pose.crank_deg = target;
-    pose.angles = angles;
-    pose.outcome = outcome;
-    pose.joints = jansen_joints(model, leg, target * degrees, angles);
-    if (checks == SweepChecks::none) {
-      sweep.poses.push_back(std::move(pose));
-      continue;
-    }
+    pose.crank_deg = solved.crank_deg[i];
+    pose.angles = solved.angles.col(static_cast<Eigen::Index>(i));
+    pose.outcome = solved.outcomes[i];
+    pose.joints = jansen_joints(model, leg, pose.crank_deg * degrees, pose.angles);
     pose.length_error = leg.worst_length_error(pose.joints);
-    if (const auto exact = leg.closed_form_joints(target * degrees)) {
+    if (const auto exact = leg.closed_form_joints(pose.crank_deg * degrees)) {
       for (int j = 0; j < jansen_joint_count; ++j) {
         pose.closed_form_distance = std::max(pose.closed_form_distance, (pose.joints[j] - (*exact)[j]).norm());
       }
+    } else {
+      pose.closed_form_distance = std::numeric_limits<double>::infinity();
     }
     if (JansenLeg::triangle_orientation(pose.joints) != 1) sweep.orientation_kept = false;
     sweep.worst_closed_form_distance = std::max(sweep.worst_closed_form_distance, pose.closed_form_distance);
@@ -352,17 +366,6 @@ JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double star
     sweep.poses.push_back(std::move(pose));
   }
   return sweep;
-}
-
-double worst_closed_form_distance(const JansenSweep& sweep) {
-  const JansenLeg leg;
-  double worst = 0.0;
-  for (const JansenPose& pose : sweep.poses) {
-    const auto exact = leg.closed_form_joints(pose.crank_deg * degrees);
-    if (!exact) return std::numeric_limits<double>::infinity();
-    for (int j = 0; j < jansen_joint_count; ++j) worst = std::max(worst, (pose.joints[j] - (*exact)[j]).norm());
-  }
-  return worst;
 }
 
 }  // namespace numlab::mechanisms
