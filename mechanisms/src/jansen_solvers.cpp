@@ -154,6 +154,21 @@ class Analytic final : public JansenPoseSolver {
   JansenLeg leg_;
 };
 
+// Predictor for pose `next` of a sweep with equal steps: the polynomial through the last m solved
+// poses (columns next-m ... next-1, m = 5 at most: degree 4), extrapolated one step. Setting its
+// m-th difference to zero gives x_next = sum_{j=1..m} (-1)^(j+1) C(m, j) x_{next-j}; the error is
+// O(step^m), so the corrector usually needs a single Newton step.
+void predict_next_pose(const Eigen::MatrixXd& poses, int next, Eigen::VectorXd& prediction) {
+  constexpr int most_points = 5;
+  const int m = std::min(next, most_points);
+  prediction.setZero();
+  double binomial = 1.0;
+  for (int j = 1; j <= m; ++j) {
+    binomial = binomial * (m - j + 1) / j;  // C(m, j)
+    prediction += (j % 2 == 1 ? binomial : -binomial) * poses.col(next - j);
+  }
+}
+
 template <typename Closure>
 std::unique_ptr<JansenPoseSolver> make_full(const std::string& linear, const nonlinear::NewtonOptions& options) {
   constexpr int N = Closure::size;
@@ -313,13 +328,10 @@ JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver,
   for (int i = 0; i < count; ++i) {
     const double target = start_deg + i * step_deg;
     if (i > 0) {
-      // Predictor: extrapolate along the path from the last two poses (equal steps), so the
-      // corrector starts O(step^2) away from the new pose instead of O(step).
-      const auto p1 = sweep.angles.col(i - 1);
-      if (i >= 2) angles = 2.0 * p1 - sweep.angles.col(i - 2);
+      predict_next_pose(sweep.angles, i, angles);  // from the poses solved so far
       outcome = advance_to(target);
       if (outcome.status != Status::converged && i > 1) {  // a bad prediction: retry from the last pose
-        angles = p1;
+        angles = sweep.angles.col(i - 1);
         outcome = advance_to(target);
       }
     } else {
