@@ -10,6 +10,7 @@
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/nonlinear/block_order.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
@@ -48,31 +49,46 @@ class FullNewton final : public JansenPoseSolver {
 };
 
 // One of seed 000's blocks: k + p u(alpha) - q u(beta) = 0 in (alpha, beta), sine row first.
+// Each block keeps its own sines and cosines, anchored from pose to pose (anchored_sincos.hpp).
 struct DyadClosure : nonlinear::EvaluatesTogether<DyadClosure, 2> {
   static constexpr int size = 2;
   Eigen::Vector2d known;  // (k_y, k_x): the part already solved
   double p = 0.0, q = 0.0;
   int dimension() const { return 2; }
   void residual_and_jacobian(const Eigen::Vector2d& x, Eigen::Vector2d& f, Eigen::Matrix2d& J) const {
-    const double ca = std::cos(x(0)), sa = std::sin(x(0)), cb = std::cos(x(1)), sb = std::sin(x(1));
-    f << known(0) + p * sa - q * sb, known(1) + p * ca - q * cb;
-    J << p * ca, -q * cb, -p * sa, q * sb;
+    Eigen::Vector2d c, s;
+    sines.evaluate(x, c, s);
+    f << known(0) + p * s(0) - q * s(1), known(1) + p * c(0) - q * c(1);
+    J << p * c(0), -q * c(1), -p * s(0), q * s(1);
   }
+  // (sin, cos) of alpha (which = 0) or beta (1) at x: the (y, x) direction a later block needs.
+  Eigen::Vector2d swapped_unit(const Eigen::Vector2d& x, int which) const {
+    Eigen::Vector2d c, s;
+    sines.evaluate(x, c, s);  // at the point just solved: a rotation from the anchor, no library call
+    return {s(which), c(which)};
+  }
+  mutable AnchoredSinCos<2> sines;  // a cache (agrees with std::cos, std::sin to a few ulp)
 };
 
-// Seed 000's sequential solve: (theta1, theta2), (theta3, theta4), (theta6, theta7), (theta5, theta8).
+// Seed 000's sequential solve: (theta1, theta2), (theta3, theta4), (theta6, theta7), (theta5, theta8),
+// each block by its own fixed-size Newton with the closed-form 2x2 inverse. A later block's known
+// part uses the directions of the blocks already solved, not new sines and cosines.
 class SequentialEight final : public JansenPoseSolver {
  public:
-  explicit SequentialEight(const nonlinear::NewtonOptions& options) : newton_(dyad_, options) {}
+  explicit SequentialEight(const nonlinear::NewtonOptions& options)
+      : newtons_{Block(dyads_[0], options), Block(dyads_[1], options), Block(dyads_[2], options),
+                 Block(dyads_[3], options)} {}
   PoseOutcome solve(double crank_angle, Eigen::VectorXd& theta) override {
     const JansenLengths L;
     const Eigen::Vector2d crank(L.a + L.crank * std::sin(crank_angle), L.b + L.crank * std::cos(crank_angle));
     PoseOutcome total;
-    auto block = [&](const Eigen::Vector2d& known, double p, double q, int alpha, int beta) {
-      dyad_.known = known;
-      dyad_.p = p;
-      dyad_.q = q;
-      const auto result = newton_.solve(Eigen::Vector2d(theta(alpha), theta(beta)));
+    Eigen::Vector2d solved[4];  // each block's (alpha, beta)
+    auto block = [&](int b, const Eigen::Vector2d& known, double p, double q, int alpha, int beta) {
+      dyads_[b].known = known;
+      dyads_[b].p = p;
+      dyads_[b].q = q;
+      const auto result = newtons_[b].solve(Eigen::Vector2d(theta(alpha), theta(beta)));
+      solved[b] = result.x;
       theta(alpha) = result.x(0);
       theta(beta) = result.x(1);
       total.iterations += result.iterations;
@@ -82,19 +98,21 @@ class SequentialEight final : public JansenPoseSolver {
       if (result.status != Status::converged && total.status == Status::converged) total.status = result.status;
       return result.status == Status::converged;
     };
-    auto swapped = [](const Eigen::Vector2d& v) { return Eigen::Vector2d(v(1), v(0)); };  // (y, x)
-    const bool ok = block(crank, L.l1, L.l2, 0, 1) &&
-                    block(crank + swapped(L.l1 * unit(theta(0))), L.l3, L.l4, 2, 3) &&
-                    block(crank, L.l6, L.l7, 5, 6) &&
-                    block(crank + swapped(L.l1 * unit(theta(0)) + L.l3 * unit(theta(2)) - L.l7 * unit(theta(6))), L.l5,
+    // u(theta1), u(theta3), u(theta7) in (y, x) order, from the blocks that solved them.
+    auto direction = [&](int b, int which) { return dyads_[b].swapped_unit(solved[b], which); };
+    const bool ok = block(0, crank, L.l1, L.l2, 0, 1) &&
+                    block(1, crank + L.l1 * direction(0, 0), L.l3, L.l4, 2, 3) &&
+                    block(2, crank, L.l6, L.l7, 5, 6) &&
+                    block(3, crank + L.l1 * direction(0, 0) + L.l3 * direction(1, 0) - L.l7 * direction(2, 1), L.l5,
                           L.l8, 4, 7);
     (void)ok;  // a failed block has set total.status
     return total;
   }
 
  private:
-  DyadClosure dyad_;
-  nonlinear::Newton<DyadClosure, linalg::ClosedForm2x2> newton_;
+  using Block = nonlinear::Newton<DyadClosure, linalg::ClosedForm2x2>;
+  DyadClosure dyads_[4];
+  Block newtons_[4];
 };
 
 // Generic sequential Newton over blocks derived from the pattern (used for the 10-equation model).
