@@ -137,23 +137,24 @@ class SequentialDerived final : public JansenPoseSolver {
   std::vector<nonlinear::Block> blocks_;
 };
 
+// One of GSL's solvers, allocated once and reused for every pose (as FullNewton's Newton is).
 template <typename Closure>
 class GslSolver final : public JansenPoseSolver {
  public:
-  GslSolver(std::string type, const nonlinear::NewtonOptions& options)
-      : type_(std::move(type)), options_(options), closure_(0.0), dynamic_(closure_) {}
+  GslSolver(const std::string& type, const nonlinear::NewtonOptions& options)
+      : options_(options), closure_(0.0), dynamic_(closure_), gsl_(dynamic_, type) {}
   PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
     closure_.set_crank_angle(crank_angle);
-    const auto result = nonlinear::gsl_multiroot_solve(dynamic_, angles, type_, options_);
+    const auto result = gsl_.solve(angles, options_);
     angles = result.x;
     return {result.status, result.iterations, result.residual_norm};
   }
 
  private:
-  std::string type_;
   nonlinear::NewtonOptions options_;
   Closure closure_;
   nonlinear::AsDynamicSystem<Closure> dynamic_;
+  nonlinear::GslMultiroot gsl_;
 };
 
 // The closed form, producing the same outputs (the angles) as the iterative solvers.
