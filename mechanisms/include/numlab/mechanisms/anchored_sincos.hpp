@@ -27,12 +27,12 @@ class AnchoredSinCos {
   // c_k = cos theta_k and s_k = sin theta_k for every k.
   void evaluate(const linalg::Vector<N>& theta, linalg::Vector<N>& c, linalg::Vector<N>& s) {
     for (int k = 0; k < N; ++k) {
-      const double d = theta(k) - anchor_(k);
+      const double t = theta(k), d = t - anchor_(k);
       // 1. Too far from the anchor (or no anchor yet): the library, and a new anchor.
       if (!(std::abs(d) <= largest_offset)) {
-        anchor_(k) = theta(k);
-        anchor_cos_(k) = std::cos(theta(k));
-        anchor_sin_(k) = std::sin(theta(k));
+        anchor_(k) = t;
+        anchor_cos_(k) = std::cos(t);  // one argument for both: the compiler makes one sincos call
+        anchor_sin_(k) = std::sin(t);
         c(k) = anchor_cos_(k);
         s(k) = anchor_sin_(k);
         continue;
