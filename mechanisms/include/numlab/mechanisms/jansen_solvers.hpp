@@ -88,6 +88,7 @@ JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver,
                                     double step_deg);
 
 // solve_crank_sweep(), then each pose's joints and its checks against the closed form.
-JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg, double step_deg);
+JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
+                        double step_deg);
 
 }  // namespace numlab::mechanisms
