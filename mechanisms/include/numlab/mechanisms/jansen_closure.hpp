@@ -8,7 +8,8 @@
 //   (7,8)  E:  O -> A -> B -> C -> E  = P1 -> D -> E            (theta1, theta3, theta5, theta7, theta8)
 // Its Jacobian is block lower-triangular in the pairs (1,2), (3,4), (6,7), (5,8).
 // residual_and_jacobian() computes each sine and cosine once for both, and from the previous
-// evaluation's when the angles moved little (anchored_sincos.hpp).
+// evaluation's when the angles moved little (anchored_sincos.hpp). That cache is why one closure
+// must not be evaluated from two threads at once (numlab runs none).
 
 #include <Eigen/Core>
 
