@@ -12,10 +12,7 @@ void JansenClosure::set_crank_angle(double crank_angle) {
 void JansenClosure::residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const {
   const JansenLengths& L = lengths_;
   Vector c, s;  // cos theta_k, sin theta_k, once each
-  for (int k = 0; k < 8; ++k) {
-    c(k) = std::cos(theta(k));
-    s(k) = std::sin(theta(k));
-  }
+  sines_.evaluate(theta, c, s);
   // Sine rows (odd equations) and cosine rows (even equations) of seed 000 eqs (1)-(8).
   f(0) = crank_y_ + L.l1 * s(0) - L.l2 * s(1);
   f(1) = crank_x_ + L.l1 * c(0) - L.l2 * c(1);

@@ -10,6 +10,7 @@
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/nonlinear/block_order.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
@@ -48,31 +49,46 @@ class FullNewton final : public JansenPoseSolver {
 };
 
 // One of seed 000's blocks: k + p u(alpha) - q u(beta) = 0 in (alpha, beta), sine row first.
+// Each block keeps its own sines and cosines, anchored from pose to pose (anchored_sincos.hpp).
 struct DyadClosure : nonlinear::EvaluatesTogether<DyadClosure, 2> {
   static constexpr int size = 2;
   Eigen::Vector2d known;  // (k_y, k_x): the part already solved
   double p = 0.0, q = 0.0;
   int dimension() const { return 2; }
   void residual_and_jacobian(const Eigen::Vector2d& x, Eigen::Vector2d& f, Eigen::Matrix2d& J) const {
-    const double ca = std::cos(x(0)), sa = std::sin(x(0)), cb = std::cos(x(1)), sb = std::sin(x(1));
-    f << known(0) + p * sa - q * sb, known(1) + p * ca - q * cb;
-    J << p * ca, -q * cb, -p * sa, q * sb;
+    Eigen::Vector2d c, s;
+    sines.evaluate(x, c, s);
+    f << known(0) + p * s(0) - q * s(1), known(1) + p * c(0) - q * c(1);
+    J << p * c(0), -q * c(1), -p * s(0), q * s(1);
   }
+  // (sin, cos) of alpha (which = 0) or beta (1) at x: the (y, x) direction a later block needs.
+  Eigen::Vector2d swapped_unit(const Eigen::Vector2d& x, int which) const {
+    Eigen::Vector2d c, s;
+    sines.evaluate(x, c, s);  // at the point just solved: a rotation from the anchor, no library call
+    return {s(which), c(which)};
+  }
+  mutable AnchoredSinCos<2> sines;  // a cache (agrees with std::cos, std::sin to a few ulp)
 };
 
-// Seed 000's sequential solve: (theta1, theta2), (theta3, theta4), (theta6, theta7), (theta5, theta8).
+// Seed 000's sequential solve: (theta1, theta2), (theta3, theta4), (theta6, theta7), (theta5, theta8),
+// each block by its own fixed-size Newton with the closed-form 2x2 inverse. A later block's known
+// part uses the directions of the blocks already solved, not new sines and cosines.
 class SequentialEight final : public JansenPoseSolver {
  public:
-  explicit SequentialEight(const nonlinear::NewtonOptions& options) : newton_(dyad_, options) {}
+  explicit SequentialEight(const nonlinear::NewtonOptions& options)
+      : newtons_{Block(dyads_[0], options), Block(dyads_[1], options), Block(dyads_[2], options),
+                 Block(dyads_[3], options)} {}
   PoseOutcome solve(double crank_angle, Eigen::VectorXd& theta) override {
     const JansenLengths L;
     const Eigen::Vector2d crank(L.a + L.crank * std::sin(crank_angle), L.b + L.crank * std::cos(crank_angle));
     PoseOutcome total;
-    auto block = [&](const Eigen::Vector2d& known, double p, double q, int alpha, int beta) {
-      dyad_.known = known;
-      dyad_.p = p;
-      dyad_.q = q;
-      const auto result = newton_.solve(Eigen::Vector2d(theta(alpha), theta(beta)));
+    Eigen::Vector2d solved[4];  // each block's (alpha, beta)
+    auto block = [&](int b, const Eigen::Vector2d& known, double p, double q, int alpha, int beta) {
+      dyads_[b].known = known;
+      dyads_[b].p = p;
+      dyads_[b].q = q;
+      const auto result = newtons_[b].solve(Eigen::Vector2d(theta(alpha), theta(beta)));
+      solved[b] = result.x;
       theta(alpha) = result.x(0);
       theta(beta) = result.x(1);
       total.iterations += result.iterations;
@@ -82,19 +98,21 @@ class SequentialEight final : public JansenPoseSolver {
       if (result.status != Status::converged && total.status == Status::converged) total.status = result.status;
       return result.status == Status::converged;
     };
-    auto swapped = [](const Eigen::Vector2d& v) { return Eigen::Vector2d(v(1), v(0)); };  // (y, x)
-    const bool ok = block(crank, L.l1, L.l2, 0, 1) &&
-                    block(crank + swapped(L.l1 * unit(theta(0))), L.l3, L.l4, 2, 3) &&
-                    block(crank, L.l6, L.l7, 5, 6) &&
-                    block(crank + swapped(L.l1 * unit(theta(0)) + L.l3 * unit(theta(2)) - L.l7 * unit(theta(6))), L.l5,
+    // u(theta1), u(theta3), u(theta7) in (y, x) order, from the blocks that solved them.
+    auto direction = [&](int b, int which) { return dyads_[b].swapped_unit(solved[b], which); };
+    const bool ok = block(0, crank, L.l1, L.l2, 0, 1) &&
+                    block(1, crank + L.l1 * direction(0, 0), L.l3, L.l4, 2, 3) &&
+                    block(2, crank, L.l6, L.l7, 5, 6) &&
+                    block(3, crank + L.l1 * direction(0, 0) + L.l3 * direction(1, 0) - L.l7 * direction(2, 1), L.l5,
                           L.l8, 4, 7);
     (void)ok;  // a failed block has set total.status
     return total;
   }
 
  private:
-  DyadClosure dyad_;
-  nonlinear::Newton<DyadClosure, linalg::ClosedForm2x2> newton_;
+  using Block = nonlinear::Newton<DyadClosure, linalg::ClosedForm2x2>;
+  DyadClosure dyads_[4];
+  Block newtons_[4];
 };
 
 // Generic sequential Newton over blocks derived from the pattern (used for the 10-equation model).
@@ -119,23 +137,24 @@ class SequentialDerived final : public JansenPoseSolver {
   std::vector<nonlinear::Block> blocks_;
 };
 
+// One of GSL's solvers, allocated once and reused for every pose (as FullNewton's Newton is).
 template <typename Closure>
 class GslSolver final : public JansenPoseSolver {
  public:
-  GslSolver(std::string type, const nonlinear::NewtonOptions& options)
-      : type_(std::move(type)), options_(options), closure_(0.0), dynamic_(closure_) {}
+  GslSolver(const std::string& type, const nonlinear::NewtonOptions& options)
+      : options_(options), closure_(0.0), dynamic_(closure_), gsl_(dynamic_, type) {}
   PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
     closure_.set_crank_angle(crank_angle);
-    const auto result = nonlinear::gsl_multiroot_solve(dynamic_, angles, type_, options_);
+    const auto result = gsl_.solve(angles, options_);
     angles = result.x;
     return {result.status, result.iterations, result.residual_norm};
   }
 
  private:
-  std::string type_;
   nonlinear::NewtonOptions options_;
   Closure closure_;
   nonlinear::AsDynamicSystem<Closure> dynamic_;
+  nonlinear::GslMultiroot gsl_;
 };
 
 // The closed form, producing the same outputs (the angles) as the iterative solvers.
@@ -153,6 +172,21 @@ class Analytic final : public JansenPoseSolver {
   JansenModel model_;
   JansenLeg leg_;
 };
+
+// Predictor for pose `next` of a sweep with equal steps: the polynomial through the last m solved
+// poses (columns next-m ... next-1, m = 5 at most: degree 4), extrapolated one step. Setting its
+// m-th difference to zero gives x_next = sum_{j=1..m} (-1)^(j+1) C(m, j) x_{next-j}; the error is
+// O(step^m), so the corrector usually needs a single Newton step.
+void predict_next_pose(const Eigen::MatrixXd& poses, int next, Eigen::VectorXd& prediction) {
+  constexpr int most_points = 5;
+  const int m = std::min(next, most_points);
+  prediction.setZero();
+  double binomial = 1.0;
+  for (int j = 1; j <= m; ++j) {
+    binomial = binomial * (m - j + 1) / j;  // C(m, j)
+    prediction += (j % 2 == 1 ? binomial : -binomial) * poses.col(next - j);
+  }
+}
 
 template <typename Closure>
 std::unique_ptr<JansenPoseSolver> make_full(const std::string& linear, const nonlinear::NewtonOptions& options) {
@@ -250,21 +284,20 @@ std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const st
   throw std::invalid_argument("unknown solver '" + solver + "' (expected full, sequential, analytic or gsl-<type>)");
 }
 
-JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
-                        double step_deg, SweepChecks checks) {
+JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
+                                    double step_deg) {
   if (!(step_deg != 0.0) || !std::isfinite(start_deg) || !std::isfinite(stop_deg) || !std::isfinite(step_deg) ||
       (stop_deg - start_deg) * step_deg < 0.0) {
     throw std::invalid_argument("sweep " + std::to_string(start_deg) + ":" + std::to_string(stop_deg) + ":" +
                                 std::to_string(step_deg) + " does not step from its start towards its stop");
   }
-  const JansenLeg leg;
-  JansenSweep sweep;
-  Eigen::VectorXd angles = jansen_seed_estimates(model, leg);
+  JansenSweepAngles sweep;
+  Eigen::VectorXd angles = jansen_seed_estimates(model, JansenLeg());
   double current_deg = JansenClosure::seed_crank_angle / degrees;
 
   // Moves from current_deg to target_deg: tries the whole step; when a solve fails, halves the
   // step and tries again from the last pose that solved (at most 20 halvings in all).
-  Eigen::VectorXd trial = angles;  // buffers reused from pose to pose (no allocation per pose)
+  Eigen::VectorXd trial = angles;  // buffer reused from pose to pose (no allocation per pose)
   auto advance_to = [&](double target_deg) -> PoseOutcome {
     double reached = current_deg, step = target_deg - current_deg;
     int halvings = 0;
@@ -306,45 +339,57 @@ JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double star
     ++sweep.walk_in_poses;
   }
 
+  // Storage for every pose, allocated once: the loop below allocates nothing.
   const int count = static_cast<int>(std::floor((stop_deg - start_deg) / step_deg + 1e-9)) + 1;
-  Eigen::VectorXd previous = angles, last = angles;
-  sweep.poses.reserve(static_cast<std::size_t>(count));
+  sweep.angles.resize(angles.size(), count);
+  sweep.crank_deg.reserve(static_cast<std::size_t>(count));
+  sweep.outcomes.reserve(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) {
     const double target = start_deg + i * step_deg;
     if (i > 0) {
-      // Predictor: extrapolate along the path from the last two poses (equal steps), so the
-      // corrector starts O(step^2) away from the new pose instead of O(step).
-      last = angles;
-      if (i > 1) angles = 2.0 * last - previous;
-      previous = last;
+      predict_next_pose(sweep.angles, i, angles);  // from the poses solved so far
       outcome = advance_to(target);
       if (outcome.status != Status::converged && i > 1) {  // a bad prediction: retry from the last pose
-        angles = last;
+        angles = sweep.angles.col(i - 1);
         outcome = advance_to(target);
       }
     } else {
       outcome = solver.solve(target * degrees, angles);  // refine at the start itself
-      previous = angles;
     }
     if (outcome.status != Status::converged) {
       sweep.status = outcome.status;
       break;
     }
     current_deg = target;
+    sweep.angles.col(i) = angles;
+    sweep.crank_deg.push_back(target);
+    sweep.outcomes.push_back(outcome);
+  }
+  return sweep;
+}
+
+JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
+                        double step_deg) {
+  const JansenSweepAngles solved = solve_crank_sweep(model, solver, start_deg, stop_deg, step_deg);
+  const JansenLeg leg;
+  JansenSweep sweep;
+  sweep.status = solved.status;
+  sweep.step_halvings = solved.step_halvings;
+  sweep.walk_in_poses = solved.walk_in_poses;
+  for (std::size_t i = 0; i < solved.outcomes.size(); ++i) {
+    // Each solved pose: its joints, link lengths, orientation and distance from the closed form.
     JansenPose pose;
-    pose.crank_deg = target;
-    pose.angles = angles;
-    pose.outcome = outcome;
-    pose.joints = jansen_joints(model, leg, target * degrees, angles);
-    if (checks == SweepChecks::none) {
-      sweep.poses.push_back(std::move(pose));
-      continue;
-    }
+    pose.crank_deg = solved.crank_deg[i];
+    pose.angles = solved.angles.col(static_cast<Eigen::Index>(i));
+    pose.outcome = solved.outcomes[i];
+    pose.joints = jansen_joints(model, leg, pose.crank_deg * degrees, pose.angles);
     pose.length_error = leg.worst_length_error(pose.joints);
-    if (const auto exact = leg.closed_form_joints(target * degrees)) {
+    if (const auto exact = leg.closed_form_joints(pose.crank_deg * degrees)) {
       for (int j = 0; j < jansen_joint_count; ++j) {
         pose.closed_form_distance = std::max(pose.closed_form_distance, (pose.joints[j] - (*exact)[j]).norm());
       }
+    } else {
+      pose.closed_form_distance = std::numeric_limits<double>::infinity();
     }
     if (JansenLeg::triangle_orientation(pose.joints) != 1) sweep.orientation_kept = false;
     sweep.worst_closed_form_distance = std::max(sweep.worst_closed_form_distance, pose.closed_form_distance);
@@ -352,17 +397,6 @@ JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double star
     sweep.poses.push_back(std::move(pose));
   }
   return sweep;
-}
-
-double worst_closed_form_distance(const JansenSweep& sweep) {
-  const JansenLeg leg;
-  double worst = 0.0;
-  for (const JansenPose& pose : sweep.poses) {
-    const auto exact = leg.closed_form_joints(pose.crank_deg * degrees);
-    if (!exact) return std::numeric_limits<double>::infinity();
-    for (int j = 0; j < jansen_joint_count; ++j) worst = std::max(worst, (pose.joints[j] - (*exact)[j]).norm());
-  }
-  return worst;
 }
 
 }  // namespace numlab::mechanisms

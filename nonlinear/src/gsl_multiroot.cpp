@@ -95,10 +95,12 @@ Status status_for(int gsl_status) {
   }
 }
 
-// The two GSL solver kinds behind one interface: set, iterate, and read x, f, dx.
+// The two GSL solver kinds behind one interface: allocated once, then set (to start from a
+// point) and iterated any number of times; read x, f, dx.
 class Solver {
  public:
   virtual ~Solver() = default;
+  virtual int set(gsl_vector* x0) = 0;
   virtual int iterate() = 0;
   virtual const gsl_vector* x() const = 0;
   virtual const gsl_vector* f() const = 0;
@@ -107,39 +109,27 @@ class Solver {
 
 class DerivativeFreeSolver final : public Solver {
  public:
-  DerivativeFreeSolver(const gsl_multiroot_fsolver_type* type, CallbackState& state, const Eigen::VectorXd& x0)
-      : solver_(gsl_multiroot_fsolver_alloc(type, x0.size())) {
-    function_ = {&residual_callback, static_cast<std::size_t>(x0.size()), &state};
-    set_status_ = gsl_multiroot_fsolver_set(solver_, &function_, start_vector(x0).get());
-  }
+  DerivativeFreeSolver(const gsl_multiroot_fsolver_type* type, CallbackState& state, std::size_t n)
+      : solver_(gsl_multiroot_fsolver_alloc(type, n)), function_{&residual_callback, n, &state} {}
   ~DerivativeFreeSolver() override { gsl_multiroot_fsolver_free(solver_); }
-  int set_status() const { return set_status_; }
+  int set(gsl_vector* x0) override { return gsl_multiroot_fsolver_set(solver_, &function_, x0); }
   int iterate() override { return gsl_multiroot_fsolver_iterate(solver_); }
   const gsl_vector* x() const override { return solver_->x; }
   const gsl_vector* f() const override { return solver_->f; }
   const gsl_vector* dx() const override { return solver_->dx; }
 
-  static std::unique_ptr<gsl_vector, void (*)(gsl_vector*)> start_vector(const Eigen::VectorXd& x0) {
-    std::unique_ptr<gsl_vector, void (*)(gsl_vector*)> v(gsl_vector_alloc(x0.size()), gsl_vector_free);
-    view(v.get()) = x0;
-    return v;
-  }
-
  private:
   gsl_multiroot_fsolver* solver_;
-  gsl_multiroot_function function_{};
-  int set_status_ = GSL_SUCCESS;
+  gsl_multiroot_function function_;
 };
 
 class JacobianSolver final : public Solver {
  public:
-  JacobianSolver(const gsl_multiroot_fdfsolver_type* type, CallbackState& state, const Eigen::VectorXd& x0)
-      : solver_(gsl_multiroot_fdfsolver_alloc(type, x0.size())) {
-    function_ = {&residual_callback, &jacobian_callback, &both_callback, static_cast<std::size_t>(x0.size()), &state};
-    set_status_ = gsl_multiroot_fdfsolver_set(solver_, &function_, DerivativeFreeSolver::start_vector(x0).get());
-  }
+  JacobianSolver(const gsl_multiroot_fdfsolver_type* type, CallbackState& state, std::size_t n)
+      : solver_(gsl_multiroot_fdfsolver_alloc(type, n)),
+        function_{&residual_callback, &jacobian_callback, &both_callback, n, &state} {}
   ~JacobianSolver() override { gsl_multiroot_fdfsolver_free(solver_); }
-  int set_status() const { return set_status_; }
+  int set(gsl_vector* x0) override { return gsl_multiroot_fdfsolver_set(solver_, &function_, x0); }
   int iterate() override { return gsl_multiroot_fdfsolver_iterate(solver_); }
   const gsl_vector* x() const override { return solver_->x; }
   const gsl_vector* f() const override { return solver_->f; }
@@ -147,8 +137,7 @@ class JacobianSolver final : public Solver {
 
  private:
   gsl_multiroot_fdfsolver* solver_;
-  gsl_multiroot_function_fdf function_{};
-  int set_status_ = GSL_SUCCESS;
+  gsl_multiroot_function_fdf function_;
 };
 
 }  // namespace
@@ -159,33 +148,48 @@ const std::vector<std::string>& gsl_multiroot_types() {
   return types;
 }
 
-GslMultirootResult gsl_multiroot_solve(const DynamicSystem& system, const Eigen::VectorXd& x0, const std::string& type,
-                                       const NewtonOptions& options, NewtonObserver<Eigen::Dynamic>* observer) {
-  gsl_set_error_handler_off();  // GSL's default handler aborts; numlab reports statuses instead
-  if (x0.size() != system.dimension()) {
-    throw std::invalid_argument("starting point has " + std::to_string(x0.size()) + " entries but the system has " +
-                                std::to_string(system.dimension()) + " unknowns");
-  }
-  linalg::require_finite(x0, "starting point");
-  CallbackState state{&system, {}, {}, {}};
-
+// Everything a solve needs, allocated once by the constructor.
+struct GslMultiroot::Workspace {
+  CallbackState state;
   std::unique_ptr<Solver> solver;
-  int set_status = GSL_SUCCESS;
+  std::unique_ptr<gsl_vector, void (*)(gsl_vector*)> start{nullptr, gsl_vector_free};
+};
+
+GslMultiroot::GslMultiroot(const DynamicSystem& system, const std::string& type)
+    : workspace_(std::make_unique<Workspace>()) {
+  gsl_set_error_handler_off();  // GSL's default handler aborts; numlab reports statuses instead
+  const auto n = static_cast<std::size_t>(system.dimension());
+  workspace_->state.system = &system;
   if (const auto* f_type = derivative_free_type(type)) {
-    auto derivative_free = std::make_unique<DerivativeFreeSolver>(f_type, state, x0);
-    set_status = derivative_free->set_status();
-    solver = std::move(derivative_free);
+    workspace_->solver = std::make_unique<DerivativeFreeSolver>(f_type, workspace_->state, n);
   } else if (const auto* fdf_type = jacobian_type(type)) {
-    auto with_jacobian = std::make_unique<JacobianSolver>(fdf_type, state, x0);
-    set_status = with_jacobian->set_status();
-    solver = std::move(with_jacobian);
+    workspace_->solver = std::make_unique<JacobianSolver>(fdf_type, workspace_->state, n);
   } else {
     throw std::invalid_argument("unknown GSL multiroot type '" + type +
                                 "' (expected hybrids, hybrid, dnewton, broyden, hybridsj, hybridj, newton or gnewton)");
   }
+  workspace_->start.reset(gsl_vector_alloc(n));
+}
+
+GslMultiroot::~GslMultiroot() = default;
+
+GslMultirootResult GslMultiroot::solve(const Eigen::VectorXd& x0, const NewtonOptions& options,
+                                       NewtonObserver<Eigen::Dynamic>* observer) {
+  CallbackState& state = workspace_->state;
+  if (x0.size() != state.system->dimension()) {
+    throw std::invalid_argument("starting point has " + std::to_string(x0.size()) + " entries but the system has " +
+                                std::to_string(state.system->dimension()) + " unknowns");
+  }
+  linalg::require_finite(x0, "starting point");
+  state.function_evaluations = 0;
+  state.jacobian_evaluations = 0;
+  Solver* solver = workspace_->solver.get();
+  view(workspace_->start.get()) = x0;
+  const int set_status = solver->set(workspace_->start.get());
 
   GslMultirootResult result;
-  const auto started = std::chrono::steady_clock::now();
+  // Only a trace needs the time: without an observer the clock is not read (as in numlab's Newton).
+  const auto started = observer != nullptr ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
   auto finish = [&](Status status) {
     result.status = status;
     result.x = view(solver->x());
@@ -225,6 +229,11 @@ GslMultirootResult gsl_multiroot_solve(const DynamicSystem& system, const Eigen:
     }
   }
   return finish(Status::max_iterations);
+}
+
+GslMultirootResult gsl_multiroot_solve(const DynamicSystem& system, const Eigen::VectorXd& x0, const std::string& type,
+                                       const NewtonOptions& options, NewtonObserver<Eigen::Dynamic>* observer) {
+  return GslMultiroot(system, type).solve(x0, options, observer);
 }
 
 }  // namespace numlab::nonlinear

@@ -7,7 +7,8 @@
 //   ||A||_F^2 / |det A| = sigma_1/sigma_2 + sigma_2/sigma_1 = kappa_2 + 1/kappa_2,
 // so |det A| <= eps * ||A||_F^2 means kappa_2(A) >= 1/eps: the matrix is singular to working
 // precision and the result is Status::singular. The same ratio gives kappa_2 exactly.
-// A is first scaled by a power of two (exact) so that a d and b c cannot overflow or underflow.
+// A is first scaled by a power of two (exact) so that a d and b c cannot overflow or underflow,
+// when its entries are large or small enough for that to be possible.
 
 #include <Eigen/Core>
 
@@ -32,6 +33,9 @@ LinearResult<2> solve2x2(const Eigen::Matrix2d& A, const Eigen::Vector2d& b);
 class ClosedForm2x2 {
  public:
   LinearResult<2> solve(const Eigen::Matrix2d& A, const Eigen::Vector2d& b) const { return solve2x2(A, b); }
+  // For a caller that has already checked A and b are finite (Newton's inner solve): the same
+  // x and singular test, without the input screens, kappa or the residual (not applicable).
+  LinearResult<2> solve_prechecked(const Eigen::Matrix2d& A, const Eigen::Vector2d& b) const;
 };
 
 }  // namespace numlab::linalg

@@ -7,11 +7,14 @@
 //   (5,6)  D:  O -> A -> D            = P1 -> D                 (theta6, theta7)
 //   (7,8)  E:  O -> A -> B -> C -> E  = P1 -> D -> E            (theta1, theta3, theta5, theta7, theta8)
 // Its Jacobian is block lower-triangular in the pairs (1,2), (3,4), (6,7), (5,8).
-// residual_and_jacobian() computes each sine and cosine once for both.
+// residual_and_jacobian() computes each sine and cosine once for both, and from the previous
+// evaluation's when the angles moved little (anchored_sincos.hpp). That cache is why one closure
+// must not be evaluated from two threads at once (numlab runs none).
 
 #include <Eigen/Core>
 
 #include "numlab/linalg/linear_result.hpp"
+#include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/nonlinear/system.hpp"
 
 namespace numlab::mechanisms {
@@ -42,6 +45,7 @@ class JansenClosure : public nonlinear::EvaluatesTogether<JansenClosure, 8> {
  private:
   JansenLengths lengths_;
   double crank_x_ = 0.0, crank_y_ = 0.0;  // A - P1 = (li cos theta_i + b, li sin theta_i + a)
+  mutable AnchoredSinCos<8> sines_;       // a cache (agrees with std::cos, std::sin to a few ulp)
 };
 
 }  // namespace numlab::mechanisms

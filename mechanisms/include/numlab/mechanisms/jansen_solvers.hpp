@@ -70,16 +70,25 @@ struct JansenSweep {
   bool orientation_kept = true;    // the rigid triangles never flipped
 };
 
-// Solves start, start + step, ... up to stop (degrees), warm-starting each pose from the one
-// before. The sweep begins with seed 000's estimates at 1.57 rad and, if `start` is elsewhere,
-// first walks there in steps no larger than `step`. A failed step is halved (up to 20 times)
-// before the sweep stops with that status.
-// With checks off (for timing), poses carry angles and joints only.
-enum class SweepChecks { against_closed_form, none };
-JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
-                        double step_deg, SweepChecks checks = SweepChecks::against_closed_form);
+// The solved angles of a sweep and nothing derived from them: what `numlab bench jansen` times.
+struct JansenSweepAngles {
+  Eigen::MatrixXd angles;           // column i: the angles of pose i (only the first outcomes.size() are solved)
+  std::vector<double> crank_deg;    // the crank angle of each solved pose
+  std::vector<PoseOutcome> outcomes;
+  Status status = Status::converged;
+  int step_halvings = 0;
+  int walk_in_poses = 0;
+};
 
-// The worst joint distance from the closed form over a sweep's poses (for sweeps run unchecked).
-double worst_closed_form_distance(const JansenSweep& sweep);
+// Solves start, start + step, ... up to stop (degrees), each pose starting from a prediction
+// extrapolated from the poses before. The sweep begins with seed 000's estimates at 1.57 rad and,
+// if `start` is elsewhere, first walks there in steps no larger than `step`. A failed step is
+// halved (up to 20 times) before the sweep stops with that status.
+JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
+                                    double step_deg);
+
+// solve_crank_sweep(), then each pose's joints and its checks against the closed form.
+JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
+                        double step_deg);
 
 }  // namespace numlab::mechanisms

@@ -8,6 +8,7 @@
 // gsl_multiroot_test_delta(dx, x, step_tolerance, step_tolerance).
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,23 @@ struct GslMultirootResult {
   int function_evaluations = 0;
   int jacobian_evaluations = 0;
   std::string gsl_message;  // GSL's own words when an iteration reported an error
+};
+
+// A GSL solver of one type for one system, allocated once and reused by every solve (as numlab's
+// Newton object is from pose to pose in a sweep). Throws std::invalid_argument for an unknown type.
+class GslMultiroot {
+ public:
+  GslMultiroot(const DynamicSystem& system, const std::string& type);
+  ~GslMultiroot();
+  GslMultiroot(const GslMultiroot&) = delete;
+  GslMultiroot& operator=(const GslMultiroot&) = delete;
+  // As gsl_multiroot_solve() below, with this solver.
+  GslMultirootResult solve(const Eigen::VectorXd& x0, const NewtonOptions& options = {},
+                           NewtonObserver<Eigen::Dynamic>* observer = nullptr);
+
+ private:
+  struct Workspace;
+  std::unique_ptr<Workspace> workspace_;
 };
 
 // Solves system from x0 with GSL type `type` (one of gsl_multiroot_types()). The observer, if

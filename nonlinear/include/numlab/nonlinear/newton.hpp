@@ -144,7 +144,7 @@ class Newton {
     if (!J_.allFinite()) return finish(Status::non_finite, StopReason::non_finite);
 
     // 2. The Newton step: solve J dx = -f.
-    const auto linear = linear_step_.solve(J_, -f_);
+    const auto linear = solve_for_step();
     if (linear.status == Status::singular) return finish(Status::singular, StopReason::singular_jacobian);
     if (linear.status == Status::non_finite || linear.status == Status::diverged || !linear.x.allFinite()) {
       return finish(Status::non_finite, StopReason::non_finite);
@@ -220,6 +220,16 @@ class Newton {
     } else {
       system_.residual(point, f);
       jacobian_fresh_ = false;
+    }
+  }
+
+  // J dx = -f by the linear step. J and f are finite here (checked above and after every
+  // evaluation), so a step that offers a path without its own input screens takes it.
+  linalg::LinearResult<N> solve_for_step() {
+    if constexpr (requires { linear_step_.solve_prechecked(J_, f_); }) {
+      return linear_step_.solve_prechecked(J_, -f_);
+    } else {
+      return linear_step_.solve(J_, -f_);
     }
   }
 
