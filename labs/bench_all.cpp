@@ -73,18 +73,25 @@ void draw_work_precision(const ChartFiles& files, const std::string& title, cons
     csv += fmt::format("{},{:g},{:.6g},{:.6g}\n", point.solver, point.tolerance, point.time_s, std::max(point.error, floor));
     if (std::find(solvers.begin(), solvers.end(), point.solver) == solvers.end()) solvers.push_back(point.solver);
   }
+  // Hand-written solvers solid, GSL's dashed; every line its own colour and marker.
+  static const std::vector<std::string> colours = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
+                                                   "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#000080", "#808000",
+                                                   "#800000", "#008080"};
   std::string plots;
   for (std::size_t s = 0; s < solvers.size(); ++s) {
     const bool closed_form = solvers[s] == "analytic";
+    const std::string style =
+        closed_form ? "with points pt 7 ps 2.5 lc rgb 'black'"
+                    : fmt::format("with linespoints lw 2 pt {} ps 1.2 dt {} lc rgb '{}'", 4 + s % 10,
+                                  solvers[s].starts_with("gsl-") ? 2 : 1, colours[s % colours.size()]);
     plots += fmt::format("{}'{}' using (strcol(1) eq '{}' ? $4 : 1/0):3 skip 1 {} title '{}'", s ? ", " : "",
-                         files.data, solvers[s],
-                         closed_form ? "with points pt 7 ps 2.5 lc rgb 'black'" : fmt::format("with linespoints lw 2 pt {}", 4 + s),
-                         closed_form ? "closed form (circle intersections)" : solvers[s]);
+                         files.data, solvers[s], style, closed_form ? "closed form" : solvers[s]);
   }
   std::string script = "# Work-precision diagram (numlab bench): median time per run against the worst joint error\n"
                        "# vs the closed form, one line per solver over Newton tolerances 1e-2..1e-13.\n";
-  script += gnuplot_output_lines(files);
+  script += gnuplot_output_lines(files, 1100, 650);
   script += "set datafile separator ','\nset logscale xy\nset grid\nset key outside right box opaque\n"
+            "set offsets graph 0.04, graph 0.04, graph 0.04, graph 0.04\n"
             "set xlabel 'worst joint error vs the closed form (length units)'\nset ylabel 'median time per run (s)'\n"
             "set format x '10^{%T}'\nset format y '10^{%T}'\n";
   script += fmt::format("set title '{} (lower left is better)'\nplot {}\n", title, plots);
@@ -258,6 +265,8 @@ int run_bench_all(const CommonOptions& common, const std::string& chart, bool qu
   print_mustang_bench(std::cout, mustang_at_1e10);
   std::cout << "\nMustang work-precision: median time per sweep (worst joint error) at each Newton tolerance.\n";
   work_precision_table(mustang, tolerance_sweep(quick)).print(std::cout);
+  std::cout << "\nLinear solvers: median time per solve (diagonally dominant A), and the ratio to GSL LU\n";
+  linear_bench_table(linear, sizes).print(std::cout);
   std::cout << "\nGauss-Seidel on the normal equations (n = 8): sweeps against kappa(A)\n";
   Table sweeps({"kappa", "sweeps", "sweeps / kappa^2", "time", "forward error"});
   for (const auto& row : seidel) {
@@ -266,6 +275,17 @@ int run_bench_all(const CommonOptions& common, const std::string& chart, bool qu
                     scientific(row.error)});
   }
   sweeps.print(std::cout);
+  std::cout << "\nFitting, NIST Wampler4: correct digits (weighted, vs a long-double reference) per degree\n";
+  Table digits({"degree", "normal", "normal-scaled", "gsl", "eigen-qr"});
+  for (std::size_t first = 0; first + 3 < sweep.size(); first += 4) {
+    std::vector<std::string> cells = {std::to_string(sweep[first].degree)};
+    for (std::size_t m = 0; m < 4; ++m) {
+      const DegreeSweepRow& row = sweep[first + m];
+      cells.push_back(std::isfinite(row.residual_sd) ? fmt::format("{:.1f}", row.digits) : std::string(to_string(row.status)));
+    }
+    digits.add_row(cells);
+  }
+  digits.print(std::cout);
   std::cout << "\nCharts (each with its CSV and gnuplot script beside it):\n";
   for (const auto& files : charts) std::cout << "  " << files.chart << '\n';
   return exit_success;

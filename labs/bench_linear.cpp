@@ -115,6 +115,22 @@ std::string chart_data(const std::vector<BenchRow>& rows, const std::vector<int>
 
 }  // namespace
 
+Table linear_bench_table(const std::vector<BenchRow>& rows, const std::vector<int>& sizes) {
+  std::vector<std::string> header = {"n"};
+  for (const std::string& solver : solvers) header.push_back(solver);
+  Table table(header);
+  for (int n : sizes) {
+    std::vector<std::string> cells = {std::to_string(n)};
+    const double reference = time_of(rows, "gsl-lu", n);
+    for (const std::string& solver : solvers) {
+      const double seconds = time_of(rows, solver, n);
+      cells.push_back(std::isnan(seconds) ? "-" : fmt::format("{:.3g} s ({:.2f}x)", seconds, seconds / reference));
+    }
+    table.add_row(cells);
+  }
+  return table;
+}
+
 void draw_linear_chart(const ChartFiles& files, const std::vector<BenchRow>& rows, const std::vector<int>& sizes) {
   draw_chart(files, chart_data(rows, sizes), chart_script(files, rows, sizes));
 }
@@ -173,19 +189,7 @@ int BenchCommand::run() const {
   } else {
     std::cout << "Median time per solve (diagonally dominant A, b = A * ones), and the ratio to GSL LU\n"
               << "(below 1 is faster than GSL). Gauss-Seidel runs to tolerance 1e-9; '-' = not measured.\n\n";
-    std::vector<std::string> header = {"n"};
-    for (const std::string& solver : solvers) header.push_back(solver);
-    Table table(header);
-    for (int n : sizes_) {
-      std::vector<std::string> cells = {std::to_string(n)};
-      const double reference = time_of(rows, "gsl-lu", n);
-      for (const std::string& solver : solvers) {
-        const double seconds = time_of(rows, solver, n);
-        cells.push_back(std::isnan(seconds) ? "-" : fmt::format("{:.3g} s ({:.2f}x)", seconds, seconds / reference));
-      }
-      table.add_row(cells);
-    }
-    table.print(std::cout);
+    linear_bench_table(rows, sizes_).print(std::cout);
     std::cout << "\nChart: " << files.chart << " (data " << files.data << ", script " << files.script << ")\n";
   }
   return exit_success;

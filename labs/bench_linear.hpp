@@ -8,6 +8,7 @@
 
 #include "chart.hpp"
 #include "cli_common.hpp"
+#include "table.hpp"
 
 namespace numlab::cli {
 
@@ -20,6 +21,9 @@ struct BenchRow {
 
 // Times every linear solver at each size (fixed-size code at n = 2 and 8).
 std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick);
+
+// Median time per solve, and the ratio to GSL LU, per size (rows) and solver (columns).
+Table linear_bench_table(const std::vector<BenchRow>& rows, const std::vector<int>& sizes);
 
 // Time per solve against n, log-log, with an n^3 guide; CSV and gnuplot script beside it.
 void draw_linear_chart(const ChartFiles& files, const std::vector<BenchRow>& rows, const std::vector<int>& sizes);

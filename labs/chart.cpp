@@ -19,10 +19,11 @@ ChartFiles chart_files(const std::string& chart_path) {
   return {chart_path, stem.string() + ".csv", stem.string() + ".gp"};
 }
 
-std::string gnuplot_output_lines(const ChartFiles& files) {
+std::string gnuplot_output_lines(const ChartFiles& files, int width, int height) {
   const bool svg = files.chart.ends_with(".svg");
-  const std::string terminal = svg ? "set terminal svg size 900,600 dynamic enhanced font 'Helvetica,13' background rgb 'white'"
-                                   : "set terminal pngcairo size 900,600 enhanced font 'Helvetica,11'";
+  const std::string size = std::to_string(width) + "," + std::to_string(height);
+  const std::string terminal = svg ? "set terminal svg size " + size + " dynamic enhanced font 'Helvetica,13' background rgb 'white'"
+                                   : "set terminal pngcairo size " + size + " enhanced font 'Helvetica,11'";
   return terminal + "\nset output '" + std::filesystem::absolute(files.chart).string() + "'\n";
 }
 

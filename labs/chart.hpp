@@ -15,8 +15,8 @@ struct ChartFiles {
 // The data and script paths beside a chart path; throws std::invalid_argument unless it ends in .svg or .png.
 ChartFiles chart_files(const std::string& chart_path);
 
-// The gnuplot `set terminal ...; set output ...` lines for the chart's extension.
-std::string gnuplot_output_lines(const ChartFiles& files);
+// The gnuplot `set terminal ...; set output ...` lines for the chart's extension (900x600 by default).
+std::string gnuplot_output_lines(const ChartFiles& files, int width = 900, int height = 600);
 
 // Writes the data and the script (each whole or not at all), then runs gnuplot on the script.
 // Throws std::runtime_error when gnuplot is missing or fails.
