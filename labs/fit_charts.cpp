@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "numlab/fitting/polynomial_fit.hpp"
+
 namespace numlab::cli {
 
 namespace {
@@ -30,11 +32,7 @@ void draw_fit_chart(const ChartFiles& files, const std::string& title, const std
     const FitSeries& one = series[s];
     const bool has_fit = one.coefficients.size() > 0;
     for (Eigen::Index i = 0; i < one.x.size(); ++i) {
-      double fitted = std::nan("");
-      if (has_fit) {
-        fitted = 0.0;
-        for (Eigen::Index k = one.coefficients.size() - 1; k >= 0; --k) fitted = fitted * one.x(i) + one.coefficients(k);
-      }
+      const double fitted = has_fit ? fitting::evaluate_polynomial(one.coefficients, one.x(i)) : std::nan("");
       csv += fmt::format("{},{:.17g},{:.17g},{:.17g}\n", one.label, one.x(i), one.y(i), fitted);
     }
     const std::string colour = line_colours()[s % line_colours().size()];

@@ -4,7 +4,6 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -130,13 +129,8 @@ void scaling_step(LabSession& session) {
   const Eigen::VectorXd t = fitting::to_scaled(wampler.x, fitting::scaling_for(wampler.x));
   Table table({"matrix", "kappa as it stands", "kappa with unit columns"});
   const auto add = [&](const std::string& name, const Eigen::MatrixXd& M) {
-    Eigen::MatrixXd unit = M;
-    for (Eigen::Index j = 0; j < M.cols(); ++j) unit.col(j) /= M.col(j).norm();
-    const auto kappa2 = [](const Eigen::MatrixXd& A) {
-      const Eigen::VectorXd s = Eigen::JacobiSVD<Eigen::MatrixXd>(A).singularValues();
-      return s(0) / s(s.size() - 1);
-    };
-    table.add_row({name, scientific(kappa2(M)), scientific(kappa2(unit))});
+    table.add_row({name, scientific(fitting::two_norm_condition(M)),
+                   scientific(fitting::two_norm_condition(fitting::unit_columns(M)))});
   };
   const Eigen::MatrixXd V = fitting::vandermonde(wampler.x, 5);
   const Eigen::MatrixXd Vt = fitting::vandermonde(t, 5);

@@ -34,6 +34,8 @@ Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> vandermonde_of(const Eigen
   return V;
 }
 
+}  // namespace
+
 // sigma_max / sigma_min, infinite when sigma_min is 0.
 double two_norm_condition(const Eigen::MatrixXd& A) {
   const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(A).singularValues();
@@ -50,8 +52,6 @@ Eigen::MatrixXd unit_columns(const Eigen::MatrixXd& A) {
   }
   return scaled;
 }
-
-}  // namespace
 
 Eigen::MatrixXd vandermonde(const Eigen::VectorXd& x, int degree) { return vandermonde_of<double>(x, degree); }
 

@@ -8,6 +8,12 @@ namespace numlab::fitting {
 // The Vandermonde matrix: row i is 1, x_i, ..., x_i^D.
 Eigen::MatrixXd vandermonde(const Eigen::VectorXd& x, int degree);
 
+// kappa_2 = sigma_max / sigma_min (Eigen's JacobiSVD); infinite when sigma_min is 0.
+double two_norm_condition(const Eigen::MatrixXd& A);
+
+// A with each column divided by its 2-norm (zero columns left as they are).
+Eigen::MatrixXd unit_columns(const Eigen::MatrixXd& A);
+
 struct ReferenceFit {
   Eigen::VectorXd coefficients;
   double condition_estimate = 0.0;  // kappa_2 of V with unit-norm columns
