@@ -39,7 +39,7 @@ int residual_callback(const gsl_vector* x, void* params, gsl_vector* f) {
   state.system->residual(state.x, state.f);
   ++state.function_evaluations;
   view(f) = state.f;
-  return state.f.allFinite() ? GSL_SUCCESS : GSL_EBADFUNC;
+  return linalg::all_finite(state.f) ? GSL_SUCCESS : GSL_EBADFUNC;
 }
 
 int jacobian_callback(const gsl_vector* x, void* params, gsl_matrix* J) {
@@ -48,7 +48,7 @@ int jacobian_callback(const gsl_vector* x, void* params, gsl_matrix* J) {
   state.system->jacobian(state.x, state.J);
   ++state.jacobian_evaluations;
   GslMatrixMap(J->data, J->size1, J->size2, Eigen::OuterStride<>(J->tda)) = state.J;
-  return state.J.allFinite() ? GSL_SUCCESS : GSL_EBADFUNC;
+  return linalg::all_finite(state.J) ? GSL_SUCCESS : GSL_EBADFUNC;
 }
 
 // f and J in one evaluation, as GSL's fdf solvers ask for them (shared work, when the system has it).
@@ -60,7 +60,7 @@ int both_callback(const gsl_vector* x, void* params, gsl_vector* f, gsl_matrix* 
   ++state.jacobian_evaluations;
   view(f) = state.f;
   GslMatrixMap(J->data, J->size1, J->size2, Eigen::OuterStride<>(J->tda)) = state.J;
-  return state.f.allFinite() && state.J.allFinite() ? GSL_SUCCESS : GSL_EBADFUNC;
+  return linalg::all_finite(state.f) && linalg::all_finite(state.J) ? GSL_SUCCESS : GSL_EBADFUNC;
 }
 
 const gsl_multiroot_fsolver_type* derivative_free_type(const std::string& name) {

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 
 #include "numlab/linalg/eigen_reference.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
@@ -192,4 +193,42 @@ TEST_CASE("GEPP rejects bad input with a message naming it", "[gepp][bad-input]"
   GaussEliminationOptions negative;
   negative.relative_pivot_tolerance = -1.0;
   CHECK_THROWS_AS(GaussElimination<Eigen::Dynamic>(negative), std::invalid_argument);
+}
+
+TEMPLATE_TEST_CASE_SIG("Newton's GEPP path (solve_prechecked) gives solve()'s x, without the diagnostics",
+                       "[gepp][prechecked]", ((int N), N), 2, 8, 10) {
+  const GeneratedSystem system = generate_system("random", N, 7);
+  const Matrix<N> A = system.A;
+  const Vector<N> b = system.b;
+  GaussElimination<N> elimination;
+  const LinearResult<N> prechecked = elimination.solve_prechecked(A, b);
+  const LinearResult<N> checked = elimination.solve(A, b);  // the same object: diagnostics are back
+  REQUIRE(prechecked.status == Status::converged);
+  CHECK(prechecked.x == checked.x);  // the same arithmetic, bit for bit
+  CHECK(prechecked.iterations == checked.iterations);
+  CHECK(std::isnan(prechecked.residual_norm));
+  CHECK(std::isnan(prechecked.growth_factor));
+  CHECK(std::isfinite(checked.growth_factor));
+  CHECK(checked.residual_norm <= 10 * N * eps * A.cwiseAbs().maxCoeff() * checked.x.cwiseAbs().maxCoeff());
+
+  Matrix<N> singular = A;
+  singular.row(N - 1) = singular.row(0);
+  const LinearResult<N> failed = elimination.solve_prechecked(singular, b);
+  CHECK(failed.status == Status::singular);
+  CHECK(failed.x.array().isNaN().all());
+}
+
+TEST_CASE("all_finite: false for a NaN or an infinity anywhere, true for huge finite values", "[input-checks]") {
+  Eigen::Matrix<double, 8, 8> A = Eigen::Matrix<double, 8, 8>::Constant(1e308);  // its sum would overflow
+  CHECK(all_finite(A));
+  for (double bad : {std::nan(""), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
+    for (int at : {0, 27, 63}) {
+      Eigen::Matrix<double, 8, 8> B = A;
+      B(at % 8, at / 8) = bad;
+      INFO("value " << bad << " at " << at);
+      CHECK_FALSE(all_finite(B));
+    }
+  }
+  CHECK(all_finite(Eigen::VectorXd::Zero(3)));
+  CHECK_FALSE(all_finite(Eigen::Vector2d(1.0, -INFINITY)));
 }

@@ -25,6 +25,13 @@ void require_matching_rhs(const MatrixType& A, const VectorType& b) {
   }
 }
 
+// True when every entry is finite: x * 0 is 0 for finite x and NaN for NaN or +-infinity, so
+// the sum is 0 or NaN (it cannot overflow). Branch-free and vectorized, unlike an entry-wise test.
+template <typename Derived>
+bool all_finite(const Eigen::DenseBase<Derived>& values) {
+  return (values.derived().array() * 0.0).sum() == 0.0;
+}
+
 template <typename Derived>
 void require_finite(const Eigen::DenseBase<Derived>& values, const char* what) {
   // A NaN or infinity anywhere makes the sum non-finite: a cheap vectorized screen for the common

@@ -124,7 +124,7 @@ class Newton {
     evaluate_at(x_, f_);
     residual_at_start_ = f_.template lpNorm<Eigen::Infinity>();
     running_ = true;
-    if (!f_.allFinite()) {
+    if (!linalg::all_finite(f_)) {
       finish(Status::non_finite, StopReason::non_finite);
     } else if (residual_at_start_ <= options_.residual_tolerance) {
       finish(Status::converged, StopReason::residual_small);
@@ -141,12 +141,12 @@ class Newton {
       system_.jacobian(x_, J_);
       ++result_.jacobian_evaluations;
     }
-    if (!J_.allFinite()) return finish(Status::non_finite, StopReason::non_finite);
+    if (!linalg::all_finite(J_)) return finish(Status::non_finite, StopReason::non_finite);
 
     // 2. The Newton step: solve J dx = -f.
     const auto linear = solve_for_step();
     if (linear.status == Status::singular) return finish(Status::singular, StopReason::singular_jacobian);
-    if (linear.status == Status::non_finite || linear.status == Status::diverged || !linear.x.allFinite()) {
+    if (linear.status == Status::non_finite || linear.status == Status::diverged || !linalg::all_finite(linear.x)) {
       return finish(Status::non_finite, StopReason::non_finite);
     }
     dx_ = linear.x;  // an iterative inner solve that hit its limit still gives a usable (inexact) step
@@ -159,7 +159,7 @@ class Newton {
       while (true) {
         trial_x_ = x_ + lambda * dx_;
         evaluate_at(trial_x_, trial_f_);
-        if (trial_f_.allFinite() && trial_f_.squaredNorm() <= (1.0 - 2e-4 * lambda) * merit) break;
+        if (linalg::all_finite(trial_f_) && trial_f_.squaredNorm() <= (1.0 - 2e-4 * lambda) * merit) break;
         if (++halvings > options_.max_halvings) return finish(Status::no_progress, StopReason::no_descent);
         lambda *= 0.5;
       }
@@ -174,7 +174,7 @@ class Newton {
     notify(linear.status, linear.iterations, lambda);
 
     // 4. Stop tests, in order.
-    if (!x_.allFinite() || !f_.allFinite()) return finish(Status::non_finite, StopReason::non_finite);
+    if (!linalg::all_finite(x_) || !linalg::all_finite(f_)) return finish(Status::non_finite, StopReason::non_finite);
     if (result_.residual_norm <= options_.residual_tolerance) return finish(Status::converged, StopReason::residual_small);
     if (result_.step_norm <= options_.step_tolerance * (1.0 + x_.template lpNorm<Eigen::Infinity>())) {
       return finish(Status::converged, StopReason::step_small);
