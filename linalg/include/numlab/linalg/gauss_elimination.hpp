@@ -102,6 +102,24 @@ class GaussElimination {
     return result_for(A, b);
   }
 
+  // For a caller that has already checked A and b are finite (Newton's inner solve): the same
+  // elimination and x, without the input screens, the growth factor or the residual (not computed).
+  LinearResult<N> solve_prechecked(const MatrixType& A, const VectorType& b) {
+    load_unchecked(A, b);
+    diagnostics_ = false;
+    while (step()) {
+    }
+    LinearResult<N> result;
+    result.status = status_;
+    result.iterations = column_;
+    if (status_ == Status::converged) {
+      result.x = x_;
+    } else {
+      result.x.setConstant(n_, std::numeric_limits<double>::quiet_NaN());
+    }
+    return result;
+  }
+
   // The result of a solve begun with start().
   LinearResult<N> result() const { return result_for(original_matrix_, original_rhs_); }
 
@@ -122,6 +140,11 @@ class GaussElimination {
   // Checks the input and sets up the working copies: reduced = A, rhs = b.
   void load(const MatrixType& A, const VectorType& b) {
     require_valid_system(A, b);
+    load_unchecked(A, b);
+    diagnostics_ = true;
+  }
+
+  void load_unchecked(const MatrixType& A, const VectorType& b) {
     matrix_max_ = A.cwiseAbs().maxCoeff();
     n_ = static_cast<int>(A.rows());
     reduced_ = A;
@@ -156,15 +179,15 @@ class GaussElimination {
     const int k = column_;
     const int n = dimension();
 
-    // 1. Pivot search: the largest |a_ik| on or below the diagonal.
+    // 1. Pivot search: the largest |a_ik| on or below the diagonal (the first, on a tie).
     int pivot_row = k;
     if (options_.pivoting == Pivoting::partial) {
       double largest = std::abs(reduced_(k, k));
       for (int i = k + 1; i < n; ++i) {
-        if (std::abs(reduced_(i, k)) > largest) {
-          largest = std::abs(reduced_(i, k));
-          pivot_row = i;
-        }
+        const double candidate = std::abs(reduced_(i, k));
+        const bool larger = candidate > largest;  // selects without a branch to mispredict
+        largest = larger ? candidate : largest;
+        pivot_row = larger ? i : pivot_row;
       }
     }
 
@@ -191,9 +214,10 @@ class GaussElimination {
     const double* pivot_row_entries = row_pointer(k);
     for (int i = k + 1; i < n; ++i) {
       double* row = row_pointer(i);
+      if (row[k] == 0.0) continue;  // already zero in this column: nothing to subtract
       const double multiplier = row[k] * inverse_pivot;  // l_ik = a_ik / a_kk
+      subtract_multiple_of_pivot_row(row, pivot_row_entries, multiplier, k);
       row[k] = 0.0;
-      for (int j = k + 1; j < n; ++j) row[j] -= multiplier * pivot_row_entries[j];
       rhs_(i) -= multiplier * rhs_(k);
     }
     ++column_;
@@ -202,7 +226,7 @@ class GaussElimination {
     if (column_ == n) {
       // Every entry below the diagonal was set to exactly 0 when its column was eliminated, so
       // max|u_ij| is the largest entry of the whole working matrix.
-      growth_factor_ = reduced_.cwiseAbs().maxCoeff() / matrix_max_;
+      if (diagnostics_) growth_factor_ = reduced_.cwiseAbs().maxCoeff() / matrix_max_;
       phase_ = Phase::back_substitution;
     }
   }
@@ -221,6 +245,13 @@ class GaussElimination {
     } else if (next_unknown_ < 0) {
       finish(Status::converged);
     }
+  }
+
+  // row_j -= multiplier * pivot_row_j for the columns j > k. Small fixed sizes take the whole row:
+  // the pivot row is exactly zero left of k (those entries were eliminated), so the extra columns
+  // are unchanged, and a loop of fixed length unrolls and vectorizes.
+  void subtract_multiple_of_pivot_row(double* row, const double* pivot_row, double multiplier, int k) const {
+    for (int j = k + 1; j < dimension(); ++j) row[j] -= multiplier * pivot_row[j];
   }
 
   // The size n: a compile-time constant for fixed sizes, so their loops have known bounds.
@@ -253,6 +284,7 @@ class GaussElimination {
   int column_ = 0;
   int next_unknown_ = -1;
   double growth_factor_ = LinearResult<N>::not_applicable;
+  bool diagnostics_ = true;  // growth factor wanted (not by solve_prechecked)
   Status status_ = Status::converged;
   Phase phase_ = Phase::done;
 };
