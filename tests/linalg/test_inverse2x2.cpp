@@ -85,3 +85,35 @@ TEST_CASE("The 2x2 closed form rejects non-finite input", "[inverse2x2][bad-inpu
   CHECK_THROWS_WITH(inverse2x2(A), Catch::Matchers::Contains("non-finite"));
   CHECK_THROWS_AS(solve2x2(Eigen::Matrix2d::Identity(), Eigen::Vector2d(NAN, 1)), std::invalid_argument);
 }
+
+TEST_CASE("Newton's 2x2 path (solve_prechecked) agrees with solve2x2, scaled or not", "[inverse2x2][prechecked]") {
+  const ClosedForm2x2 closed_form;
+  for (unsigned seed = 1; seed <= 200; ++seed) {
+    const Eigen::Matrix2d A = random_matrix(2, seed);
+    const Eigen::Vector2d b = A * Eigen::Vector2d(1.0, -2.0);
+    const double kappa = svd_condition(A);
+    INFO("seed " << seed << ", kappa " << kappa);
+    const LinearResult<2> fast = closed_form.solve_prechecked(A, b);
+    REQUIRE(fast.status == Status::converged);
+    CHECK(relative_difference(fast.x, solve2x2(A, b).x) <= 10 * kappa * eps);
+    CHECK(std::isnan(fast.residual_norm));  // not computed on this path
+  }
+  // Outside 2^-200 ... 2^200 the matrix is scaled first, exactly as inverse2x2 does.
+  Eigen::Matrix2d A;
+  A << 4, 3, 6, 3;
+  const Eigen::Vector2d reference = closed_form.solve_prechecked(A, Eigen::Vector2d(1, 1)).x;
+  for (double scale : {1e-300, 1e-100, 1e100, 1e300}) {
+    INFO("scale " << scale);
+    const LinearResult<2> scaled = closed_form.solve_prechecked(scale * A, Eigen::Vector2d(1, 1));
+    REQUIRE(scaled.status == Status::converged);
+    CHECK((scaled.x * scale - reference).cwiseAbs().maxCoeff() <= 1e-14);
+  }
+  Eigen::Matrix2d parallel;
+  parallel << 1, 2, 2, 4;
+  CHECK(closed_form.solve_prechecked(parallel, Eigen::Vector2d(1, 2)).status == Status::singular);
+  CHECK(closed_form.solve_prechecked(parallel, Eigen::Vector2d(1, 2)).x.array().isNaN().all());
+  CHECK(closed_form.solve_prechecked(Eigen::Matrix2d::Zero(), Eigen::Vector2d(1, 2)).status == Status::singular);
+  // A well-conditioned but tiny matrix with a huge right-hand side: x overflows, and says so.
+  CHECK(closed_form.solve_prechecked(1e-200 * Eigen::Matrix2d::Identity(), Eigen::Vector2d(1e300, 1)).status ==
+        Status::non_finite);
+}
