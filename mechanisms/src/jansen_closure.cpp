@@ -5,8 +5,10 @@
 namespace numlab::mechanisms {
 
 void JansenClosure::set_crank_angle(double crank_angle) {
-  crank_x_ = lengths_.crank * std::cos(crank_angle) + lengths_.b;
-  crank_y_ = lengths_.crank * std::sin(crank_angle) + lengths_.a;
+  Eigen::Matrix<double, 1, 1> c, s;
+  crank_sines_.evaluate(Eigen::Matrix<double, 1, 1>(crank_angle), c, s);
+  crank_x_ = lengths_.crank * c(0) + lengths_.b;
+  crank_y_ = lengths_.crank * s(0) + lengths_.a;
 }
 
 void JansenClosure::residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const {

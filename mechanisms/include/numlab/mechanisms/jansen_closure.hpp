@@ -46,6 +46,7 @@ class JansenClosure : public nonlinear::EvaluatesTogether<JansenClosure, 8> {
   JansenLengths lengths_;
   double crank_x_ = 0.0, crank_y_ = 0.0;  // A - P1 = (li cos theta_i + b, li sin theta_i + a)
   mutable AnchoredSinCos<8> sines_;       // a cache (agrees with std::cos, std::sin to a few ulp)
+  AnchoredSinCos<1> crank_sines_;         // the crank's, from pose to pose
 };
 
 }  // namespace numlab::mechanisms
