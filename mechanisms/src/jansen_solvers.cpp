@@ -11,6 +11,7 @@
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/mechanisms/anchored_sincos.hpp"
+#include "numlab/mechanisms/dyad_newton.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/nonlinear/block_order.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
@@ -48,71 +49,46 @@ class FullNewton final : public JansenPoseSolver {
   nonlinear::Newton<Closure, LinearStep> newton_;
 };
 
-// One of seed 000's blocks: k + p u(alpha) - q u(beta) = 0 in (alpha, beta), sine row first.
-// Each block keeps its own sines and cosines, anchored from pose to pose (anchored_sincos.hpp).
-struct DyadClosure : nonlinear::EvaluatesTogether<DyadClosure, 2> {
-  static constexpr int size = 2;
-  Eigen::Vector2d known;  // (k_y, k_x): the part already solved
-  double p = 0.0, q = 0.0;
-  int dimension() const { return 2; }
-  void residual_and_jacobian(const Eigen::Vector2d& x, Eigen::Vector2d& f, Eigen::Matrix2d& J) const {
-    Eigen::Vector2d c, s;
-    sines.evaluate(x, c, s);
-    f << known(0) + p * s(0) - q * s(1), known(1) + p * c(0) - q * c(1);
-    J << p * c(0), -q * c(1), -p * s(0), q * s(1);
-  }
-  // (sin, cos) of alpha (which = 0) or beta (1) at x: the (y, x) direction a later block needs.
-  Eigen::Vector2d swapped_unit(const Eigen::Vector2d& x, int which) const {
-    Eigen::Vector2d c, s;
-    sines.evaluate(x, c, s);  // at the point just solved: a rotation from the anchor, no library call
-    return {s(which), c(which)};
-  }
-  mutable AnchoredSinCos<2> sines;  // a cache (agrees with std::cos, std::sin to a few ulp)
-};
-
-// Seed 000's sequential solve: (theta1, theta2), (theta3, theta4), (theta6, theta7), (theta5, theta8),
-// each block by its own fixed-size Newton with the closed-form 2x2 inverse. A later block's known
-// part uses the directions of the blocks already solved, not new sines and cosines.
+// Seed 000's sequential solve: the dyads (theta1, theta2), (theta3, theta4), (theta6, theta7),
+// (theta5, theta8), each by its own Newton with the closed-form 2x2 inverse (dyad_newton.hpp). A
+// later block's known part uses the directions of the blocks already solved, as they left them.
 class SequentialEight final : public JansenPoseSolver {
  public:
   explicit SequentialEight(const nonlinear::NewtonOptions& options)
-      : newtons_{Block(dyads_[0], options), Block(dyads_[1], options), Block(dyads_[2], options),
-                 Block(dyads_[3], options)} {}
+      : blocks_{DyadNewton(options), DyadNewton(options), DyadNewton(options), DyadNewton(options)} {}
   PoseOutcome solve(double crank_angle, Eigen::VectorXd& theta) override {
     const JansenLengths L;
-    const Eigen::Vector2d crank(L.a + L.crank * std::sin(crank_angle), L.b + L.crank * std::cos(crank_angle));
+    Eigen::Matrix<double, 1, 1> crank_cos, crank_sin;
+    crank_sines_.evaluate(Eigen::Matrix<double, 1, 1>(crank_angle), crank_cos, crank_sin);
+    const Eigen::Vector2d crank(L.a + L.crank * crank_sin(0), L.b + L.crank * crank_cos(0));  // (y, x)
     PoseOutcome total;
-    Eigen::Vector2d solved[4];  // each block's (alpha, beta)
     auto block = [&](int b, const Eigen::Vector2d& known, double p, double q, int alpha, int beta) {
-      dyads_[b].known = known;
-      dyads_[b].p = p;
-      dyads_[b].q = q;
-      const auto result = newtons_[b].solve(Eigen::Vector2d(theta(alpha), theta(beta)));
-      solved[b] = result.x;
-      theta(alpha) = result.x(0);
-      theta(beta) = result.x(1);
-      total.iterations += result.iterations;
+      DyadNewton& newton = blocks_[b];
+      newton.set_block(known(0), known(1), p, q);
+      const Status status = newton.solve(theta(alpha), theta(beta));
+      theta(alpha) = newton.alpha();
+      theta(beta) = newton.beta();
+      total.iterations += newton.iterations();
       // Block lower-triangular: a block's equations never see later unknowns, so its final
       // residual is its part of the whole system's, and the maximum over blocks is ||f||_inf.
-      total.residual_inf = std::max(total.residual_inf, result.residual_norm);
-      if (result.status != Status::converged && total.status == Status::converged) total.status = result.status;
-      return result.status == Status::converged;
+      total.residual_inf = std::max(total.residual_inf, newton.residual_norm());
+      if (status != Status::converged) total.status = status;
+      return status == Status::converged;
     };
     // u(theta1), u(theta3), u(theta7) in (y, x) order, from the blocks that solved them.
-    auto direction = [&](int b, int which) { return dyads_[b].swapped_unit(solved[b], which); };
+    auto direction = [&](int b, int which) { return blocks_[b].direction(which); };
     const bool ok = block(0, crank, L.l1, L.l2, 0, 1) &&
                     block(1, crank + L.l1 * direction(0, 0), L.l3, L.l4, 2, 3) &&
                     block(2, crank, L.l6, L.l7, 5, 6) &&
                     block(3, crank + L.l1 * direction(0, 0) + L.l3 * direction(1, 0) - L.l7 * direction(2, 1), L.l5,
                           L.l8, 4, 7);
-    (void)ok;  // a failed block has set total.status
+    (void)ok;  // a failed block has set total.status, and the blocks after it were not tried
     return total;
   }
 
  private:
-  using Block = nonlinear::Newton<DyadClosure, linalg::ClosedForm2x2>;
-  DyadClosure dyads_[4];
-  Block newtons_[4];
+  AnchoredSinCos<1> crank_sines_;
+  DyadNewton blocks_[4];
 };
 
 // Generic sequential Newton over blocks derived from the pattern (used for the 10-equation model).
@@ -178,13 +154,13 @@ class Analytic final : public JansenPoseSolver {
 // m-th difference to zero gives x_next = sum_{j=1..m} (-1)^(j+1) C(m, j) x_{next-j}; the error is
 // O(step^m), so the corrector usually needs a single Newton step.
 void predict_next_pose(const Eigen::MatrixXd& poses, int next, Eigen::VectorXd& prediction) {
-  constexpr int most_points = 5;
-  const int m = std::min(next, most_points);
-  prediction.setZero();
-  double binomial = 1.0;
-  for (int j = 1; j <= m; ++j) {
-    binomial = binomial * (m - j + 1) / j;  // C(m, j)
-    prediction += (j % 2 == 1 ? binomial : -binomial) * poses.col(next - j);
+  auto pose = [&](int back) { return poses.col(next - back); };
+  switch (std::min(next, 5)) {
+    case 1: prediction = pose(1); break;
+    case 2: prediction = 2 * pose(1) - pose(2); break;
+    case 3: prediction = 3 * pose(1) - 3 * pose(2) + pose(3); break;
+    case 4: prediction = 4 * pose(1) - 6 * pose(2) + 4 * pose(3) - pose(4); break;
+    default: prediction = 5 * pose(1) - 10 * pose(2) + 10 * pose(3) - 5 * pose(4) + pose(5); break;
   }
 }
 

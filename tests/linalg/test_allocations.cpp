@@ -38,6 +38,7 @@ void operator delete[](void* memory, std::size_t) noexcept { std::free(memory); 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/mechanisms/dyad_newton.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
 #include "numlab/mechanisms/mustang_closure.hpp"
 #include "numlab/nonlinear/newton.hpp"
@@ -170,6 +171,20 @@ TEST_CASE("Fixed-size Newton allocates nothing, in solve() or per iteration", "[
   REQUIRE(result8.status == Status::converged);
   REQUIRE(result8.iterations >= 2);
   REQUIRE(result2.status == Status::converged);
+  CHECK(counted.eigen == 0);
+  if (counts_operator_new) CHECK(counted.other == 0);
+}
+
+TEST_CASE("The Jansen dyad's Newton (sequential Newton's block) allocates nothing", "[allocations][newton]") {
+  numlab::nonlinear::NewtonOptions options;
+  options.residual_tolerance = 1e-12;
+  numlab::mechanisms::DyadNewton dyad(options);
+  dyad.set_block(22.8, 38.0, 50.0, 41.5);  // seed 000's first block at crank angle pi/2
+  Status status = Status::max_iterations;
+  const AllocationCount counted = allocations_during([&] {
+    for (int repeat = 0; repeat < 20; ++repeat) status = dyad.solve(2.62 + 1e-3 * repeat, 1.40);
+  });
+  REQUIRE(status == Status::converged);
   CHECK(counted.eigen == 0);
   if (counts_operator_new) CHECK(counted.other == 0);
 }

@@ -1,0 +1,138 @@
+#include <Eigen/LU>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/mechanisms/circle_intersection.hpp"
+#include "numlab/mechanisms/dyad_newton.hpp"
+#include "numlab/nonlinear/newton.hpp"
+
+using numlab::Status;
+using numlab::mechanisms::DyadNewton;
+
+namespace {
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+// The dyad k + p u(alpha) - q u(beta) = 0 (u = (sin, cos)) as a plain system for the generic
+// Newton, with its sines and cosines from the library: the reference DyadNewton must reproduce.
+struct LibraryDyad {
+  static constexpr int size = 2;
+  double ky, kx, p, q;
+  int dimension() const { return 2; }
+  void residual(const Eigen::Vector2d& x, Eigen::Vector2d& f) const {
+    f << ky + p * std::sin(x(0)) - q * std::sin(x(1)), kx + p * std::cos(x(0)) - q * std::cos(x(1));
+  }
+  void jacobian(const Eigen::Vector2d& x, Eigen::Matrix2d& J) const {
+    J << p * std::cos(x(0)), -q * std::cos(x(1)), -p * std::sin(x(0)), q * std::sin(x(1));
+  }
+};
+
+// Seed 000's first dyad at crank angle 1.57: B is where circle(A - P1, l1) meets circle(0, l2),
+// seen from P1 (the known part is A - P1 = (li sin 1.57 + a, li cos 1.57 + b) in (y, x) order).
+struct FirstDyad {
+  double ky = 15.0 * std::sin(1.57) + 7.8, kx = 15.0 * std::cos(1.57) + 38.0, p = 50.0, q = 41.5;
+  // The closed form: B - P1 = q u(beta) = k + p u(alpha), on the seed's branch (B to the left of k -> 0).
+  Eigen::Vector2d exact() const {
+    const Eigen::Vector2d k(kx, ky);  // (x, y)
+    const auto B = numlab::mechanisms::circle_intersection(k, p, Eigen::Vector2d::Zero(), q, -1);
+    REQUIRE(B.has_value());
+    return {std::atan2(B->y() - k.y(), B->x() - k.x()), std::atan2(B->y(), B->x())};
+  }
+};
+
+numlab::nonlinear::NewtonOptions options_with(double tolerance, int max_iterations = 20) {
+  numlab::nonlinear::NewtonOptions options;
+  options.residual_tolerance = tolerance;
+  options.max_iterations = max_iterations;
+  return options;
+}
+
+}  // namespace
+
+TEST_CASE("Dyad Newton finds the circle-intersection pose and repeats the generic Newton", "[dyad][reference]") {
+  const FirstDyad dyad;
+  const Eigen::Vector2d exact = dyad.exact();
+  const auto options = options_with(1e-12);
+  DyadNewton newton(options);
+  newton.set_block(dyad.ky, dyad.kx, dyad.p, dyad.q);
+  for (double offset : {0.2, 0.05, -0.1, 1e-4}) {
+    const Eigen::Vector2d start = exact + Eigen::Vector2d(offset, -offset);
+    INFO("start offset " << offset);
+    REQUIRE(newton.solve(start(0), start(1)) == Status::converged);
+    CHECK(newton.residual_norm() <= 1e-12);
+
+    // The angles are within ||J^-1|| times the residual tolerance of the closed form (plus the
+    // closed form's own rounding, a few eps times the lengths).
+    Eigen::Matrix2d J;
+    LibraryDyad{dyad.ky, dyad.kx, dyad.p, dyad.q}.jacobian(exact, J);
+    const double bound = J.inverse().cwiseAbs().rowwise().sum().maxCoeff() * (1e-12 + 100 * eps * dyad.p);
+    CHECK(std::abs(newton.alpha() - exact(0)) <= bound);
+    CHECK(std::abs(newton.beta() - exact(1)) <= bound);
+
+    // The generic stepper on the same block takes the same steps: same count, same point (to the
+    // few ulp by which anchored sines differ from the library's, amplified by ||J^-1||).
+    const LibraryDyad library{dyad.ky, dyad.kx, dyad.p, dyad.q};
+    const auto generic = numlab::nonlinear::newton_solve(library, start, options, numlab::linalg::ClosedForm2x2());
+    REQUIRE(generic.status == Status::converged);
+    CHECK(newton.iterations() == generic.iterations);
+    CHECK(std::abs(newton.alpha() - generic.x(0)) <= bound);
+    CHECK(std::abs(newton.beta() - generic.x(1)) <= bound);
+  }
+}
+
+TEST_CASE("Dyad Newton converges quadratically, one step at a time", "[dyad][stepper]") {
+  const FirstDyad dyad;
+  const Eigen::Vector2d exact = dyad.exact();
+  DyadNewton newton(options_with(1e-13));
+  newton.set_block(dyad.ky, dyad.kx, dyad.p, dyad.q);
+  newton.start(exact(0) + 0.05, exact(1) - 0.05);
+  REQUIRE(newton.running());
+  CHECK(newton.iterations() == 0);
+  double previous = newton.residual_norm();
+  int steps = 0;
+  while (newton.step()) {
+    ++steps;
+    CHECK(newton.iterations() == steps);
+    // Quadratic: each residual is below a modest multiple of the square of the one before.
+    CHECK(newton.residual_norm() <= 0.1 * previous * previous + 1e-13);
+    previous = newton.residual_norm();
+  }
+  CHECK(newton.status() == Status::converged);
+  CHECK(newton.iterations() <= 5);
+  CHECK(!newton.running());
+  CHECK_FALSE(newton.step());  // over: further steps do nothing
+  // The directions a later block reads are the sines and cosines at the answer.
+  CHECK(std::abs(newton.direction(0)(0) - std::sin(newton.alpha())) <= 4 * eps);
+  CHECK(std::abs(newton.direction(0)(1) - std::cos(newton.alpha())) <= 4 * eps);
+  CHECK(std::abs(newton.direction(1)(0) - std::sin(newton.beta())) <= 4 * eps);
+  CHECK(std::abs(newton.direction(1)(1) - std::cos(newton.beta())) <= 4 * eps);
+}
+
+TEST_CASE("Dyad Newton's failures: singular Jacobian, a non-finite start, a dyad that cannot close",
+          "[dyad][failure]") {
+  const FirstDyad dyad;
+  SECTION("alpha = beta: the two links are parallel, det J = p q sin(beta - alpha) = 0") {
+    DyadNewton newton(options_with(1e-12));
+    newton.set_block(dyad.ky, dyad.kx, dyad.p, dyad.q);
+    CHECK(newton.solve(1.0, 1.0) == Status::singular);
+    CHECK(newton.iterations() == 1);
+    CHECK(newton.alpha() == 1.0);  // the point where the step could not be taken
+    CHECK(newton.residual_norm() > 1.0);
+  }
+  SECTION("a NaN start ends at once, as non_finite") {
+    DyadNewton newton(options_with(1e-12));
+    newton.set_block(dyad.ky, dyad.kx, dyad.p, dyad.q);
+    CHECK(newton.solve(std::nan(""), 1.0) == Status::non_finite);
+    CHECK(newton.iterations() == 0);
+  }
+  SECTION("|k| > p + q: the circles do not meet, and Newton stops without a pose") {
+    DyadNewton newton(options_with(1e-12, 50));
+    newton.set_block(0.0, 100.0, dyad.p, dyad.q);  // |k| = 100 > 91.5
+    const Status status = newton.solve(0.3, 0.2);
+    CHECK(status != Status::converged);
+    CHECK(newton.iterations() <= 50);
+    CHECK(newton.residual_norm() >= 100.0 - dyad.p - dyad.q - 1e-9);  // the gap cannot be closed
+  }
+}
