@@ -323,11 +323,20 @@ JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver,
   for (int i = 0; i < count; ++i) {
     const double target = start_deg + i * step_deg;
     if (i > 0) {
-      predict_next_pose(sweep.angles, i, angles);  // from the poses solved so far
-      outcome = advance_to(target);
-      if (outcome.status != Status::converged && i > 1) {  // a bad prediction: retry from the last pose
-        angles = sweep.angles.col(i - 1);
+      // The usual case: one solve from the prediction (made in `trial`, so that `angles` keeps the
+      // last pose solved for the fallbacks).
+      predict_next_pose(sweep.angles, i, trial);
+      outcome = solver.solve(target * degrees, trial);
+      if (outcome.status == Status::converged) {
+        angles.swap(trial);
+      } else {
+        // Halve the step from the prediction; if that fails too, from the last pose.
+        predict_next_pose(sweep.angles, i, angles);
         outcome = advance_to(target);
+        if (outcome.status != Status::converged && i > 1) {
+          angles = sweep.angles.col(i - 1);
+          outcome = advance_to(target);
+        }
       }
     } else {
       outcome = solver.solve(target * degrees, angles);  // refine at the start itself
