@@ -247,9 +247,7 @@ class GaussElimination {
     }
   }
 
-  // row_j -= multiplier * pivot_row_j for the columns j > k. Small fixed sizes take the whole row:
-  // the pivot row is exactly zero left of k (those entries were eliminated), so the extra columns
-  // are unchanged, and a loop of fixed length unrolls and vectorizes.
+  // row_j -= multiplier * pivot_row_j for the columns j > k.
   void subtract_multiple_of_pivot_row(double* row, const double* pivot_row, double multiplier, int k) const {
     for (int j = k + 1; j < dimension(); ++j) row[j] -= multiplier * pivot_row[j];
   }
