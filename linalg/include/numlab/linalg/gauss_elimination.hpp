@@ -214,7 +214,6 @@ class GaussElimination {
     const double* pivot_row_entries = row_pointer(k);
     for (int i = k + 1; i < n; ++i) {
       double* row = row_pointer(i);
-      if (row[k] == 0.0) continue;  // already zero in this column: nothing to subtract
       const double multiplier = row[k] * inverse_pivot;  // l_ik = a_ik / a_kk
       subtract_multiple_of_pivot_row(row, pivot_row_entries, multiplier, k);
       row[k] = 0.0;
