@@ -18,16 +18,15 @@ constexpr Term terms[] = {{0, 0, 50.0},  {0, 1, 41.5},  {2, 1, -41.5}, {2, 2, 55
 
 void Jansen10Closure::set_crank_angle(double crank_angle) {
   const JansenLengths lengths;
-  crank_x_ = lengths.b + lengths.crank * std::cos(crank_angle);
-  crank_y_ = lengths.a + lengths.crank * std::sin(crank_angle);
+  Eigen::Matrix<double, 1, 1> c, s;
+  crank_sines_.evaluate(Eigen::Matrix<double, 1, 1>(crank_angle), c, s);
+  crank_x_ = lengths.b + lengths.crank * c(0);
+  crank_y_ = lengths.a + lengths.crank * s(0);
 }
 
 void Jansen10Closure::residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const {
-  Vector c, s;  // each sine and cosine once
-  for (int k = 0; k < 10; ++k) {
-    c(k) = std::cos(theta(k));
-    s(k) = std::sin(theta(k));
-  }
+  Vector c, s;  // each sine and cosine once, for f and J
+  sines_.evaluate(theta, c, s);
   f.setZero();
   f(0) = f(6) = crank_x_;
   f(1) = f(7) = crank_y_;

@@ -6,10 +6,13 @@
 //   theta8 P1->D, theta9 E->D, theta10 D->A, theta11 D->F, theta12 F->E.
 // It models the same leg as the 8-equation JansenClosure with two more unknowns and a closure
 // equation pair for a triangle that is rigid anyway: over-modelling, kept to measure its cost.
+// Its sines and cosines come from the same kind of cache as the 8-equation model's
+// (anchored_sincos.hpp), so that the two models' costs compare like with like.
 
 #include <Eigen/Core>
 
 #include "numlab/linalg/linear_result.hpp"
+#include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
 
 namespace numlab::mechanisms {
@@ -48,6 +51,8 @@ class Jansen10Closure : public nonlinear::EvaluatesTogether<Jansen10Closure, 10>
 
  private:
   double crank_x_ = 0.0, crank_y_ = 0.0;
+  mutable AnchoredSinCos<10> sines_;  // a cache (agrees with std::cos, std::sin to a few ulp)
+  AnchoredSinCos<1> crank_sines_;     // the crank's, from pose to pose
 };
 
 }  // namespace numlab::mechanisms
