@@ -9,7 +9,6 @@
 #include "numlab/linalg/eigen_reference.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
-#include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/mechanisms/dyad_newton.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"

@@ -109,15 +109,7 @@ class GaussElimination {
     diagnostics_ = false;
     while (step()) {
     }
-    LinearResult<N> result;
-    result.status = status_;
-    result.iterations = column_;
-    if (status_ == Status::converged) {
-      result.x = x_;
-    } else {
-      result.x.setConstant(n_, std::numeric_limits<double>::quiet_NaN());
-    }
-    return result;
+    return result_for(A, b);
   }
 
   // The result of a solve begun with start().
@@ -167,7 +159,7 @@ class GaussElimination {
     result.growth_factor = growth_factor_;
     if (status_ == Status::converged) {
       result.x = x_;
-      result.residual_norm = residual_inf_norm(A, b, x_);
+      if (diagnostics_) result.residual_norm = residual_inf_norm(A, b, x_);
     } else {
       // No solution exists to report: say so with NaN rather than print a meaningless number.
       result.x.setConstant(n_, std::numeric_limits<double>::quiet_NaN());
@@ -215,8 +207,8 @@ class GaussElimination {
     for (int i = k + 1; i < n; ++i) {
       double* row = row_pointer(i);
       const double multiplier = row[k] * inverse_pivot;  // l_ik = a_ik / a_kk
-      subtract_multiple_of_pivot_row(row, pivot_row_entries, multiplier, k);
       row[k] = 0.0;
+      for (int j = k + 1; j < n; ++j) row[j] -= multiplier * pivot_row_entries[j];
       rhs_(i) -= multiplier * rhs_(k);
     }
     ++column_;
@@ -244,11 +236,6 @@ class GaussElimination {
     } else if (next_unknown_ < 0) {
       finish(Status::converged);
     }
-  }
-
-  // row_j -= multiplier * pivot_row_j for the columns j > k.
-  void subtract_multiple_of_pivot_row(double* row, const double* pivot_row, double multiplier, int k) const {
-    for (int j = k + 1; j < dimension(); ++j) row[j] -= multiplier * pivot_row[j];
   }
 
   // The size n: a compile-time constant for fixed sizes, so their loops have known bounds.
@@ -281,7 +268,7 @@ class GaussElimination {
   int column_ = 0;
   int next_unknown_ = -1;
   double growth_factor_ = LinearResult<N>::not_applicable;
-  bool diagnostics_ = true;  // growth factor wanted (not by solve_prechecked)
+  bool diagnostics_ = true;  // growth factor and residual wanted (not by solve_prechecked)
   Status status_ = Status::converged;
   Phase phase_ = Phase::done;
 };
