@@ -61,12 +61,15 @@ class SequentialEight final : public JansenPoseSolver {
     crank_sines_.evaluate(Eigen::Matrix<double, 1, 1>(crank_angle), crank_cos, crank_sin);
     const Eigen::Vector2d crank(L.a + L.crank * crank_sin(0), L.b + L.crank * crank_cos(0));  // (y, x)
     PoseOutcome total;
-    auto block = [&](int b, const Eigen::Vector2d& known, double p, double q, int alpha, int beta) {
+    // A block's known part waits for the blocks before it; its sines and cosines at the start do
+    // not. So every block is placed at its start first, and these independent evaluations overlap.
+    for (int b = 0; b < 4; ++b) blocks_[b].place(theta(unknowns[b][0]), theta(unknowns[b][1]));
+    auto block = [&](int b, const Eigen::Vector2d& known, double p, double q) {
       DyadNewton& newton = blocks_[b];
       newton.set_block(known(0), known(1), p, q);
-      const Status status = newton.solve(theta(alpha), theta(beta));
-      theta(alpha) = newton.alpha();
-      theta(beta) = newton.beta();
+      const Status status = newton.solve_placed();
+      theta(unknowns[b][0]) = newton.alpha();
+      theta(unknowns[b][1]) = newton.beta();
       total.iterations += newton.iterations();
       // Block lower-triangular: a block's equations never see later unknowns, so its final
       // residual is its part of the whole system's, and the maximum over blocks is ||f||_inf.
@@ -76,16 +79,17 @@ class SequentialEight final : public JansenPoseSolver {
     };
     // u(theta1), u(theta3), u(theta7) in (y, x) order, from the blocks that solved them.
     auto direction = [&](int b, int which) { return blocks_[b].direction(which); };
-    const bool ok = block(0, crank, L.l1, L.l2, 0, 1) &&
-                    block(1, crank + L.l1 * direction(0, 0), L.l3, L.l4, 2, 3) &&
-                    block(2, crank, L.l6, L.l7, 5, 6) &&
-                    block(3, crank + L.l1 * direction(0, 0) + L.l3 * direction(1, 0) - L.l7 * direction(2, 1), L.l5,
-                          L.l8, 4, 7);
+    const bool ok = block(0, crank, L.l1, L.l2) &&
+                    block(1, crank + L.l1 * direction(0, 0), L.l3, L.l4) &&
+                    block(2, crank, L.l6, L.l7) &&
+                    block(3, crank + L.l1 * direction(0, 0) + L.l3 * direction(1, 0) - L.l7 * direction(2, 1), L.l5, L.l8);
     (void)ok;  // a failed block has set total.status, and the blocks after it were not tried
     return total;
   }
 
  private:
+  // Each block's unknowns (alpha, beta): (theta1, theta2), (theta3, theta4), (theta6, theta7), (theta5, theta8).
+  static constexpr int unknowns[4][2] = {{0, 1}, {2, 3}, {5, 6}, {4, 7}};
   AnchoredSinCos<1> crank_sines_;
   DyadNewton blocks_[4];
 };

@@ -110,6 +110,24 @@ TEST_CASE("Dyad Newton converges quadratically, one step at a time", "[dyad][ste
   CHECK(std::abs(newton.direction(1)(1) - std::cos(newton.beta())) <= 4 * eps);
 }
 
+TEST_CASE("Dyad Newton placed before its block is known does what solve() does", "[dyad][stepper]") {
+  // The sequential solver places every block at its start, then sets each block's known part once
+  // the blocks before it are solved: the same iterations and the same point, bit for bit.
+  const FirstDyad dyad;
+  const Eigen::Vector2d start = dyad.exact() + Eigen::Vector2d(0.03, -0.02);
+  DyadNewton whole(options_with(1e-12)), placed(options_with(1e-12));
+  whole.set_block(dyad.ky, dyad.kx, dyad.p, dyad.q);
+  REQUIRE(whole.solve(start(0), start(1)) == Status::converged);
+  placed.place(start(0), start(1));
+  placed.set_block(dyad.ky, dyad.kx, dyad.p, dyad.q);  // known only after placing
+  REQUIRE(placed.solve_placed() == Status::converged);
+  CHECK(placed.iterations() == whole.iterations());
+  CHECK(placed.iterations() >= 2);
+  CHECK(placed.alpha() == whole.alpha());
+  CHECK(placed.beta() == whole.beta());
+  CHECK(placed.residual_norm() == whole.residual_norm());
+}
+
 TEST_CASE("Dyad Newton's failures: singular Jacobian, a non-finite start, a dyad that cannot close",
           "[dyad][failure]") {
   const FirstDyad dyad;

@@ -44,12 +44,25 @@ class DyadNewton {
 
   // Sets x = (alpha, beta) and evaluates f there.
   void start(double alpha, double beta) {
+    place(alpha, beta);
+    start_placed();
+  }
+
+  // The first half of start(): x = (alpha, beta) and the sines and cosines there, which is all of
+  // the first evaluation (and of the first J) that the known part does not enter. A caller solving
+  // blocks in turn can place every block first: their sines do not wait for the blocks before.
+  void place(double alpha, double beta) {
     alpha_ = alpha;
     beta_ = beta;
+    sines_.evaluate(Eigen::Vector2d(alpha_, beta_), cos_, sin_);
+  }
+
+  // The second half: f at the placed point, with the block given by set_block().
+  void start_placed() {
     iterations_ = 0;
     step_norm_ = 0.0;
     running_ = true;
-    evaluate();
+    evaluate_residual();
     residual_at_start_ = residual_norm_;
     if (!std::isfinite(residual_norm_)) {
       finish(Status::non_finite);
@@ -85,7 +98,13 @@ class DyadNewton {
   }
 
   Status solve(double alpha, double beta) {
-    start(alpha, beta);
+    place(alpha, beta);
+    return solve_placed();
+  }
+
+  // start_placed(), then step() until the iteration ends.
+  Status solve_placed() {
+    start_placed();
     while (step()) {
     }
     return status_;
@@ -106,6 +125,11 @@ class DyadNewton {
  private:
   void evaluate() {
     sines_.evaluate(Eigen::Vector2d(alpha_, beta_), cos_, sin_);
+    evaluate_residual();
+  }
+
+  // f and ||f||_inf from the sines and cosines at the current point.
+  void evaluate_residual() {
     f_y_ = known_y_ + p_ * sin_(0) - q_ * sin_(1);
     f_x_ = known_x_ + p_ * cos_(0) - q_ * cos_(1);
     residual_norm_ = std::max(std::abs(f_y_), std::abs(f_x_));
