@@ -188,7 +188,7 @@ class GaussElimination {
     //    swap at once, where an index computed by the search would hold the swap until the search
     //    is done (Newton's Jacobians pivot alike from one solve to the next; 8x8 Jansen solves took
     //    20% less time).
-    for (int i = k + 1; i < n; ++i) {
+    for (int i = k + 1; i < n && pivot_row != k; ++i) {
       if (i != pivot_row) continue;
       reduced_.row(k).swap(reduced_.row(i));
       std::swap(rhs_(k), rhs_(i));
