@@ -34,9 +34,8 @@ bool all_finite(const Eigen::DenseBase<Derived>& values) {
 
 template <typename Derived>
 void require_finite(const Eigen::DenseBase<Derived>& values, const char* what) {
-  // A NaN or infinity anywhere makes the sum non-finite: a cheap vectorized screen for the common
-  // case. (A finite sum that overflows only costs the exact scan below, which then finds nothing.)
-  if (std::isfinite(values.sum())) return;
+  // The vectorized screen first; the entry-by-entry scan only to name the bad entry.
+  if (all_finite(values)) return;
   for (Eigen::Index j = 0; j < values.cols(); ++j) {
     for (Eigen::Index i = 0; i < values.rows(); ++i) {
       if (!std::isfinite(values(i, j))) {
