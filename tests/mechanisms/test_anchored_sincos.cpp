@@ -33,23 +33,35 @@ TEST_CASE("Anchored sines and cosines: every node of the table, halfway between 
           "[mechanisms][sincos]") {
   constexpr double limit = AnchoredSinCos<1>::table_limit;
   double worst = 0.0;
-  // Fresh caches, so every angle takes the table path: nodes, quarter and half steps, both signs.
+  // Fresh caches, so every angle takes the table path: nodes, quarter and half steps, both signs,
+  // one angle alone and two at once.
   for (double t = -limit; t <= limit; t += 1.0 / 256) {
-    AnchoredSinCos<1> sines;
-    Eigen::Matrix<double, 1, 1> c, s;
-    sines.evaluate(Eigen::Matrix<double, 1, 1>(t), c, s);
-    worst = std::max({worst, std::abs(c(0) - std::cos(t)), std::abs(s(0) - std::sin(t))});
+    AnchoredSinCos<1> one;
+    AnchoredSinCos<2> two;
+    Eigen::Matrix<double, 1, 1> c1, s1;
+    Eigen::Vector2d c2, s2;
+    const Eigen::Vector2d pair(t, -t / 3.0);
+    one.evaluate(Eigen::Matrix<double, 1, 1>(t), c1, s1);
+    two.evaluate(pair, c2, s2);
+    worst = std::max({worst, std::abs(c1(0) - std::cos(t)), std::abs(s1(0) - std::sin(t))});
+    for (int k = 0; k < 2; ++k) {
+      worst = std::max({worst, std::abs(c2(k) - std::cos(pair(k))), std::abs(s2(k) - std::sin(pair(k)))});
+    }
   }
   CHECK(worst <= 2.0 * std::numeric_limits<double>::epsilon());
-  // Beyond the table the library's own values.
+  // Beyond the table the library's own values, for both angles of a pair with one beyond it.
   AnchoredSinCos<2> sines;
   Eigen::Vector2d c, s;
-  const Eigen::Vector2d beyond(limit + 0.5, -1000.25);
+  const Eigen::Vector2d beyond(limit + 0.5, 0.75);
   sines.evaluate(beyond, c, s);
   CHECK(c(0) == std::cos(beyond(0)));
   CHECK(s(0) == std::sin(beyond(0)));
-  CHECK(c(1) == std::cos(beyond(1)));
+  CHECK(c(1) == std::cos(beyond(1)));  // 0.75 is a node: the table's value, the library's
   CHECK(s(1) == std::sin(beyond(1)));
+  sines.evaluate(Eigen::Vector2d(-1000.25, 0.75 + 1e-3), c, s);
+  CHECK(c(0) == std::cos(-1000.25));
+  CHECK(s(0) == std::sin(-1000.25));
+  CHECK(std::abs(c(1) - std::cos(0.75 + 1e-3)) <= 2.0 * std::numeric_limits<double>::epsilon());
 }
 
 TEST_CASE("Anchored sines and cosines of non-finite angles are NaN, as the library's", "[mechanisms][sincos]") {

@@ -51,7 +51,9 @@ class DyadNewton {
   // The first half of start(): x = (alpha, beta) and the sines and cosines there, which is all of
   // the first evaluation (and of the first J) that the known part does not enter. A caller solving
   // blocks in turn can place every block first: their sines do not wait for the blocks before.
-  void place(double alpha, double beta) {
+  // Forced inline (as evaluate() is): GCC otherwise calls both out of line once the sine cache's
+  // code is inlined into them, and a crank cycle of sequential Newton took 45 us instead of 41.
+  [[gnu::always_inline]] void place(double alpha, double beta) {
     alpha_ = alpha;
     beta_ = beta;
     sines_.evaluate(Eigen::Vector2d(alpha_, beta_), cos_, sin_);
@@ -123,7 +125,7 @@ class DyadNewton {
   Eigen::Vector2d direction(int which) const { return {sin_(which), cos_(which)}; }
 
  private:
-  void evaluate() {
+  [[gnu::always_inline]] void evaluate() {
     sines_.evaluate(Eigen::Vector2d(alpha_, beta_), cos_, sin_);
     evaluate_residual();
   }
