@@ -78,11 +78,12 @@ class ClosedForm2x2 {
     LinearResult<2> result;
     result.iterations = 1;
     const double a11 = A(0, 0), a12 = A(0, 1), a21 = A(1, 0), a22 = A(1, 1);
-    const double largest = std::max(std::max(std::abs(a11), std::abs(a12)), std::max(std::abs(a21), std::abs(a22)));
-    if (largest >= 0x1p-200 && largest <= 0x1p200) {
+    const double frobenius_squared = a11 * a11 + a12 * a12 + a21 * a21 + a22 * a22;
+    // 2^-398 <= ||A||_F^2 <= 2^400 puts max|a_ij| within 2^-200 ... 2^200 (||A||_F^2 <= 4 max^2).
+    if (frobenius_squared >= 0x1p-398 && frobenius_squared <= 0x1p400) {
       // The usual case: no scaling needed (see detail::scaled_closed_form), so the formulas directly.
       const double determinant = a11 * a22 - a12 * a21;
-      if (std::abs(determinant) <= std::numeric_limits<double>::epsilon() * (a11 * a11 + a12 * a12 + a21 * a21 + a22 * a22)) {
+      if (std::abs(determinant) <= std::numeric_limits<double>::epsilon() * frobenius_squared) {
         result.status = Status::singular;
         result.x.setConstant(std::numeric_limits<double>::quiet_NaN());
         return result;
