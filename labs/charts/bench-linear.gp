@@ -9,7 +9,7 @@ set title 'Linear solvers: median time per solve (diagonally dominant A)'
 set xlabel 'n'
 set ylabel 'time per solve (s)'
 set format y '10^{%T}'
-guide(n) = 8.80962e-11 * n**3
+guide(n) = 7.90835e-11 * n**3
 set xrange [1.3333333333333333:1536]
 set xtics (2, 8, 64, 256, 512, 1024)
 plot 'labs/charts/bench-linear.csv' using 1:2 with linespoints lw 2 pt 5 title 'gepp', 'labs/charts/bench-linear.csv' using 1:3 with linespoints lw 2 pt 6 title 'gsl-lu', 'labs/charts/bench-linear.csv' using 1:4 with linespoints lw 2 pt 7 title 'eigen-lu', 'labs/charts/bench-linear.csv' using 1:5 with linespoints lw 2 pt 8 title 'gauss-seidel', 'labs/charts/bench-linear.csv' using 1:6 with linespoints lw 2 pt 9 title 'gauss-seidel-plain', [2:1024] guide(x) with lines dt 2 lc rgb 'gray40' title 'n^3 guide'
