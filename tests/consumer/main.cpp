@@ -7,7 +7,7 @@
 #include "numlab/linalg/gsl_reference.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/newton.hpp"
-#include "numlab/nonlinear/test_problems.hpp"
+#include "numlab/nonlinear/mgh_problems.hpp"
 
 namespace {
 // x^2 + y^2 = 4, x = y: root (sqrt 2, sqrt 2).

@@ -6,7 +6,7 @@
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gsl_reference.hpp"
 #include "numlab/linalg/measures.hpp"
-#include "numlab/linalg/test_matrices.hpp"
+#include "numlab/linalg/matrix_generators.hpp"
 #include "reference_tolerance.hpp"
 
 using namespace numlab;

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "numlab/linalg/measures.hpp"
-#include "numlab/linalg/test_matrices.hpp"
+#include "numlab/linalg/matrix_generators.hpp"
 
 using namespace numlab::linalg;
 

@@ -2,7 +2,7 @@
 #include <map>
 
 #include "numlab/nonlinear/gsl_multiroot.hpp"
-#include "numlab/nonlinear/test_problems.hpp"
+#include "numlab/nonlinear/mgh_problems.hpp"
 
 using namespace numlab;
 using namespace numlab::nonlinear;

@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "numlab/nonlinear/jacobian_check.hpp"
-#include "numlab/nonlinear/test_problems.hpp"
+#include "numlab/nonlinear/mgh_problems.hpp"
 
 using namespace numlab::nonlinear;
 

@@ -6,7 +6,7 @@
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/newton.hpp"
-#include "numlab/nonlinear/test_problems.hpp"
+#include "numlab/nonlinear/mgh_problems.hpp"
 #include "small_systems.hpp"
 
 using namespace numlab;

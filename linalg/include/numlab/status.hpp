@@ -1,5 +1,5 @@
 #pragma once
-// One status vocabulary for every numlab method (see design/architecture.md).
+// One status vocabulary for every numlab method (see docs/architecture.md).
 // A status is a result, not an exception: exceptions are for misuse and bad input.
 
 #include <optional>
@@ -8,6 +8,7 @@
 namespace numlab {
 
 enum class Status {
+  running,          // the stepper has not finished: no verdict yet
   converged,        // the method finished and its answer is usable
   max_iterations,   // the iteration limit was reached before the stop test passed
   singular,         // a pivot or determinant was zero relative to the matrix's scale
@@ -19,6 +20,7 @@ enum class Status {
 
 constexpr std::string_view to_string(Status status) {
   switch (status) {
+    case Status::running: return "running";
     case Status::converged: return "converged";
     case Status::max_iterations: return "max_iterations";
     case Status::singular: return "singular";

@@ -1,0 +1,295 @@
+#include "bench/bench_all.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "bench/bench_jansen.hpp"
+#include "bench/bench_linear.hpp"
+#include "bench/bench_mustang.hpp"
+#include "cli/data_dir.hpp"
+#include "output/chart.hpp"
+#include "output/fit_charts.hpp"
+#include "lessons/fit_degree_sweep.hpp"
+#include "commands/linear_methods.hpp"
+#include "numlab/fitting/data_set.hpp"
+#include "numlab/linalg/measures.hpp"
+#include "numlab/linalg/matrix_generators.hpp"
+#include "output/table.hpp"
+#include "bench/timing.hpp"
+
+namespace numlab::cli {
+
+namespace {
+
+void progress(const std::string& message) {
+  if (isatty(STDERR_FILENO) != 0) std::cerr << "\r\033[K" << message << std::flush;
+}
+
+// --- Jansen and Mustang: work-precision diagrams ---
+
+// One solver at one Newton tolerance: median time per cycle or sweep, and the worst joint error.
+struct WorkPrecisionPoint {
+  std::string solver;
+  double tolerance;
+  double time_s;
+  double error;
+  int iterations;
+};
+
+std::vector<double> tolerance_sweep(bool quick) {
+  if (quick) return {1e-2, 1e-6, 1e-10, 1e-13};
+  std::vector<double> tolerances;
+  for (int exponent = 2; exponent <= 13; ++exponent) tolerances.push_back(std::pow(10.0, -exponent));
+  return tolerances;
+}
+
+// Runs `bench_at(tolerance)` over the sweep. The closed form does not depend on the tolerance:
+// it is kept once. Each solver's rows end up together, loosest tolerance first.
+template <typename BenchAt>
+std::vector<WorkPrecisionPoint> work_precision_points(const std::string& what, bool quick, BenchAt bench_at) {
+  std::vector<WorkPrecisionPoint> points;
+  for (double tolerance : tolerance_sweep(quick)) {
+    progress(fmt::format("bench: {} at tolerance {:g}", what, tolerance));
+    for (const auto& row : bench_at(tolerance)) {
+      const bool repeat = row.solver == "analytic" &&
+                          std::any_of(points.begin(), points.end(), [](const auto& p) { return p.solver == "analytic"; });
+      if (!repeat) points.push_back({row.solver, row.tolerance, row.time_s, row.error, row.iterations});
+    }
+  }
+  std::stable_sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.solver < b.solver; });
+  return points;
+}
+
+void draw_work_precision(const ChartFiles& files, const std::string& title, const std::vector<WorkPrecisionPoint>& points) {
+  constexpr double floor = 1e-17;  // an exact match still needs a place on a log axis
+  std::string csv = "solver,tolerance,time_s,error\n";
+  std::vector<std::string> solvers;
+  for (const auto& point : points) {
+    csv += fmt::format("{},{:g},{:.6g},{:.6g}\n", point.solver, point.tolerance, point.time_s, std::max(point.error, floor));
+    if (std::find(solvers.begin(), solvers.end(), point.solver) == solvers.end()) solvers.push_back(point.solver);
+  }
+  // Hand-written solvers solid, GSL's dashed; every line its own colour and marker.
+  static const std::vector<std::string> colours = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
+                                                   "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#000080", "#808000",
+                                                   "#800000", "#008080"};
+  std::string plots;
+  for (std::size_t s = 0; s < solvers.size(); ++s) {
+    const bool closed_form = solvers[s] == "analytic";
+    const std::string style =
+        closed_form ? "with points pt 7 ps 2.5 lc rgb 'black'"
+                    : fmt::format("with linespoints lw 2 pt {} ps 1.2 dt {} lc rgb '{}'", 4 + s % 10,
+                                  solvers[s].starts_with("gsl-") ? 2 : 1, colours[s % colours.size()]);
+    plots += fmt::format("{}'{}' using (strcol(1) eq '{}' ? $4 : 1/0):3 skip 1 {} title '{}'", s ? ", " : "",
+                         files.data, solvers[s], style, closed_form ? "closed form" : solvers[s]);
+  }
+  std::string script = "# Work-precision diagram (numlab bench): median time per run against the worst joint error\n"
+                       "# vs the closed form, one line per solver over Newton tolerances 1e-2..1e-13.\n";
+  script += gnuplot_output_lines(files, 1100, 650);
+  script += "set datafile separator ','\nset logscale xy\nset grid\nset key outside right box opaque\n"
+            "set offsets graph 0.04, graph 0.04, graph 0.04, graph 0.04\n"
+            "set xlabel 'worst joint error vs the closed form (length units)'\nset ylabel 'median time per run (s)'\n"
+            "set format x '10^{%T}'\nset format y '10^{%T}'\n";
+  script += fmt::format("set title '{} (lower left is better)'\nplot {}\n", title, plots);
+  draw_chart(files, csv, script);
+}
+
+// Rows: solvers; columns: tolerances; cells: time (error). The closed form fills its first column only.
+Table work_precision_table(const std::vector<WorkPrecisionPoint>& points, const std::vector<double>& tolerances) {
+  std::vector<std::string> header = {"solver"};
+  for (double tolerance : tolerances) header.push_back(fmt::format("{:g}", tolerance));
+  Table table(header);
+  for (std::size_t first = 0; first < points.size();) {
+    std::vector<std::string> cells = {points[first].solver};
+    std::size_t next = first;
+    for (double tolerance : tolerances) {
+      const bool here = next < points.size() && points[next].solver == points[first].solver &&
+                        points[next].tolerance == tolerance;
+      cells.push_back(here ? fmt::format("{:.3g} ms ({:.0e})", points[next].time_s * 1e3, points[next].error) : "");
+      if (here) ++next;
+    }
+    if (next == first) ++next;  // the closed form: one point, at the first tolerance
+    first = next;
+    table.add_row(cells);
+  }
+  return table;
+}
+
+// --- Gauss-Seidel: sweeps against kappa ---
+
+struct SeidelRow {
+  double kappa;
+  int sweeps;
+  double time_s;
+  double error;
+};
+
+std::vector<SeidelRow> seidel_rows(bool quick) {
+  std::vector<SeidelRow> rows;
+  constexpr int n = 8;
+  for (double kappa : {2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0}) {
+    progress(fmt::format("bench: Gauss-Seidel at kappa {:g}", kappa));
+    const Eigen::MatrixXd A = linalg::matrix_with_condition(n, kappa, 7);
+    const Eigen::VectorXd exact = Eigen::VectorXd::Ones(n);
+    const Eigen::VectorXd b = A * exact;
+    LinearSettings settings;
+    settings.max_iterations = 10000000;
+    const DynamicResult result = run_linear_method("gauss-seidel", A, b, settings);
+    const TimingPlan plan = quick ? TimingPlan{3, 5, 0.0} : TimingPlan{5, 200, 0.1};
+    const double seconds = median_time([&] { run_linear_method("gauss-seidel", A, b, settings); }, plan);
+    rows.push_back({kappa, result.iterations, seconds, linalg::forward_error(result.x, exact)});
+  }
+  return rows;
+}
+
+void draw_seidel_chart(const ChartFiles& files, const std::vector<SeidelRow>& rows) {
+  std::string csv = "kappa,sweeps,time_s,forward_error\n";
+  for (const auto& row : rows) csv += fmt::format("{:g},{},{:.6g},{:.3g}\n", row.kappa, row.sweeps, row.time_s, row.error);
+  const double anchor = rows.back().sweeps / (rows.back().kappa * rows.back().kappa);
+  std::string script = "# Gauss-Seidel on the normal equations: sweeps to converge against kappa(A) (numlab bench).\n";
+  script += gnuplot_output_lines(files);
+  script += fmt::format(
+      "set datafile separator ','\nset logscale xy\nset grid\nset key top left box opaque\n"
+      "set xlabel 'kappa_2(A)'\nset ylabel 'sweeps to tolerance 1e-9'\n"
+      "set title 'Gauss-Seidel on A^T A x = A^T b (n = 8): sweeps grow like kappa^2'\n"
+      "plot '{}' using 1:2 skip 1 with linespoints lw 2 pt 7 title 'sweeps', "
+      "{:.6g} * x**2 with lines dt 2 lc rgb 'gray40' title 'kappa^2 guide'\n",
+      files.data, anchor);
+  draw_chart(files, csv, script);
+}
+
+// --- Fitting: digits against degree ---
+
+struct FitBenchRow {
+  DegreeSweepRow sweep;
+  std::string data;
+  double time_s;
+};
+
+std::vector<FitBenchRow> fit_rows(const std::string& data_name, const fitting::DataSet& data, int max_degree,
+                                  bool quick, std::vector<DegreeSweepRow>& sweep) {
+  progress("bench: fitting degree sweep on " + data_name);
+  sweep = fit_degree_sweep(data.x, data.y, max_degree);
+  std::vector<FitBenchRow> rows;
+  const TimingPlan plan = quick ? TimingPlan{3, 5, 0.0} : TimingPlan{5, 200, 0.02};
+  for (const DegreeSweepRow& row : sweep) {
+    fitting::FitOptions options;
+    options.method = fitting::fit_method_from_string(row.method);
+    options.degree = row.degree;
+    const double seconds = median_time([&] { fitting::fit_polynomial(data.x, data.y, options); }, plan);
+    rows.push_back({row, data_name, seconds});
+  }
+  return rows;
+}
+
+}  // namespace
+
+int run_bench_all(const CommonOptions& common, const std::string& chart, bool quick) {
+  // 1. Every file name is checked before any measuring starts.
+  const ChartFiles work_precision = chart_files(chart.empty() ? common.out_dir + "/work-precision.svg" : chart);
+  const ChartFiles linear_chart = chart_files(common.out_dir + "/bench-linear.svg");
+  const ChartFiles seidel_chart = chart_files(common.out_dir + "/bench-seidel.svg");
+  const ChartFiles fit_chart = chart_files(common.out_dir + "/bench-fit.svg");
+  const ChartFiles mustang_chart = chart_files(common.out_dir + "/work-precision-mustang.svg");
+  const fitting::DataSet wampler = fitting::read_nist_data(nist_data_dir() + "/Wampler4.dat");
+
+  // 2. Measure: warm-up, repeated runs, medians (timing.hpp).
+  // The rows at tolerance 1e-10 are kept whole for the ratio tables.
+  std::vector<JansenBenchRow> jansen_at_1e10;
+  std::vector<MustangBenchRow> mustang_at_1e10;
+  const std::vector<WorkPrecisionPoint> jansen = work_precision_points("Jansen cycle", quick, [&](double tolerance) {
+    auto rows = bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick);
+    if (tolerance == 1e-10) jansen_at_1e10 = rows;
+    return rows;
+  });
+  const std::vector<WorkPrecisionPoint> mustang = work_precision_points("Mustang sweep", quick, [&](double tolerance) {
+    auto rows = bench_mustang(tolerance, quick);
+    if (tolerance == 1e-10) mustang_at_1e10 = rows;
+    return rows;
+  });
+  const std::vector<int> sizes = quick ? std::vector<int>{2, 8, 64} : std::vector<int>{2, 8, 64, 256, 512, 1024};
+  const std::vector<BenchRow> linear = bench_linear(sizes, quick);
+  const std::vector<SeidelRow> seidel = seidel_rows(quick);
+  std::vector<DegreeSweepRow> sweep;
+  const std::vector<FitBenchRow> fits = fit_rows("Wampler4", wampler, 12, quick, sweep);
+  progress("");
+
+  // 3. Draw.
+  draw_work_precision(work_precision, "Jansen leg, 360-pose cycle", jansen);
+  draw_work_precision(mustang_chart, "Mustang roof linkage, 195-pose sweep over its assembly range", mustang);
+  draw_linear_chart(linear_chart, linear, sizes);
+  draw_seidel_chart(seidel_chart, seidel);
+  draw_degree_sweep_chart(fit_chart, "NIST Wampler4: digits and residual against degree", sweep);
+  const std::vector<ChartFiles> charts = {work_precision, mustang_chart, linear_chart, seidel_chart, fit_chart};
+
+  // 4. Report.
+  if (common.format == Format::json) {
+    nlohmann::ordered_json out = {{"benchmark", "all"}, {"charts", nlohmann::ordered_json::array()},
+                                  {"rows", nlohmann::ordered_json::array()}};
+    for (const auto& files : charts) out["charts"].push_back({{"chart", files.chart}, {"data", files.data}, {"script", files.script}});
+    for (const auto& [bench, points] : {std::pair{"jansen", &jansen}, std::pair{"mustang", &mustang}}) {
+      for (const auto& point : *points) {
+        out["rows"].push_back({{"bench", bench}, {"solver", point.solver}, {"tolerance", point.tolerance},
+                               {"time_s", point.time_s}, {"error", number_or_null(point.error)},
+                               {"iterations", point.iterations}});
+      }
+    }
+    for (const auto& row : linear) {
+      out["rows"].push_back({{"bench", "linear"}, {"solver", row.solver}, {"tolerance", nullptr}, {"time_s", row.time_s},
+                             {"error", number_or_null(row.error)}, {"n", row.n}});
+    }
+    for (const auto& row : seidel) {
+      out["rows"].push_back({{"bench", "seidel"}, {"solver", "gauss-seidel"}, {"tolerance", 1e-9}, {"time_s", row.time_s},
+                             {"error", number_or_null(row.error)}, {"n", 8}, {"kappa", row.kappa}, {"sweeps", row.sweeps}});
+    }
+    for (const auto& row : fits) {
+      out["rows"].push_back({{"bench", "fit"}, {"solver", row.sweep.method}, {"tolerance", nullptr},
+                             {"time_s", row.time_s},
+                             // error: the relative coefficient error behind the digits (10^-digits)
+                             {"error", std::isfinite(row.sweep.residual_sd) ? number_or_null(std::pow(10.0, -row.sweep.digits))
+                                                                            : nlohmann::ordered_json()},
+                             {"n", wampler.x.size()}, {"data", row.data}, {"degree", row.sweep.degree},
+                             {"digits", row.sweep.digits}, {"status", std::string(to_string(row.sweep.status))}});
+    }
+    std::cout << out.dump(2) << '\n';
+    return exit_success;
+  }
+  print_jansen_bench(std::cout, jansen_at_1e10);
+  std::cout << "\nJansen work-precision: median time per cycle (worst joint error) at each Newton tolerance.\n";
+  work_precision_table(jansen, tolerance_sweep(quick)).print(std::cout);
+  std::cout << '\n';
+  print_mustang_bench(std::cout, mustang_at_1e10);
+  std::cout << "\nMustang work-precision: median time per sweep (worst joint error) at each Newton tolerance.\n";
+  work_precision_table(mustang, tolerance_sweep(quick)).print(std::cout);
+  std::cout << "\nLinear solvers: median time per solve (diagonally dominant A), and the ratio to GSL LU\n";
+  linear_bench_table(linear, sizes).print(std::cout);
+  std::cout << "\nGauss-Seidel on the normal equations (n = 8): sweeps against kappa(A)\n";
+  Table sweeps({"kappa", "sweeps", "sweeps / kappa^2", "time", "forward error"});
+  for (const auto& row : seidel) {
+    sweeps.add_row({fmt::format("{:g}", row.kappa), std::to_string(row.sweeps),
+                    fmt::format("{:.2f}", row.sweeps / (row.kappa * row.kappa)), fmt::format("{:.3g} s", row.time_s),
+                    scientific(row.error)});
+  }
+  sweeps.print(std::cout);
+  std::cout << "\nFitting, NIST Wampler4: correct digits (weighted, vs a long-double reference) per degree\n";
+  Table digits({"degree", "normal", "normal-scaled", "gsl", "eigen-qr"});
+  for (std::size_t first = 0; first + 3 < sweep.size(); first += 4) {
+    std::vector<std::string> cells = {std::to_string(sweep[first].degree)};
+    for (std::size_t m = 0; m < 4; ++m) {
+      const DegreeSweepRow& row = sweep[first + m];
+      cells.push_back(std::isfinite(row.residual_sd) ? fmt::format("{:.1f}", row.digits) : std::string(to_string(row.status)));
+    }
+    digits.add_row(cells);
+  }
+  digits.print(std::cout);
+  std::cout << "\nCharts (each with its CSV and gnuplot script beside it):\n";
+  for (const auto& files : charts) std::cout << "  " << files.chart << '\n';
+  return exit_success;
+}
+
+}  // namespace numlab::cli

@@ -1,0 +1,16 @@
+#pragma once
+// Where the NIST StRD data sets are: beside an installed numlab, or in the source tree it was built from.
+
+#include <string>
+
+namespace numlab::cli {
+
+// The folder of the NIST .dat files, looked up in this order:
+//   1. $NUMLAB_DATA_DIR/nist, when that variable is set;
+//   2. PREFIX/share/numlab/nist, where PREFIX is the folder above the running executable's bin/
+//      (an installed numlab: the data is installed with it);
+//   3. the source tree's fitting/data/nist (a numlab run from its build tree).
+// Throws std::invalid_argument, listing the places looked in, when none holds Wampler4.dat.
+std::string nist_data_dir();
+
+}  // namespace numlab::cli

@@ -1,0 +1,68 @@
+// numlab: the command-line program (design/cli.md).
+// Exit codes: 0 the method succeeded, 1 it ran but did not succeed, 2 bad usage or bad input.
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <stdexcept>
+
+#include "bench/bench_linear.hpp"
+#include "cli/cli_common.hpp"
+#include "commands/fit_command.hpp"
+#include "commands/labs_command.hpp"
+#include "commands/mechanism_command.hpp"
+#include "commands/solve_linear.hpp"
+#include "commands/solve_nonlinear.hpp"
+
+namespace {
+
+// Without arguments numlab runs its main job non-interactively.
+int run_main_job() {
+  std::cout << "numlab: no sub-command, so running the main job: the Jansen leg lab.\n"
+               "        (numlab --help lists the sub-commands; numlab labs lists the labs.)\n";
+  return numlab::cli::run_lab("jansen", false, "out");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace numlab::cli;
+  CLI::App app{"numlab - a numerical-methods teaching toolkit: hand-written solvers, traced, checked against GSL"};
+  app.require_subcommand(0, 1);
+  CLI::App* solve = app.add_subcommand("solve", "Solve one problem with one method");
+  solve->require_subcommand(0, 1);
+  const SolveLinearCommand solve_linear(*solve);
+  const SolveNonlinearCommand solve_nonlinear(*solve);
+  const LabsCommand labs(app);
+  const BenchCommand bench(app);
+  const MechanismCommand mechanism(app);
+  const FitCommand fit(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    std::cerr << "numlab: error: " << error.what() << '\n';
+    return exit_bad_input;
+  }
+
+  try {
+    if (solve_linear.selected()) return solve_linear.run();
+    if (solve_nonlinear.selected()) return solve_nonlinear.run();
+    if (solve->parsed()) throw std::invalid_argument("solve: say what to solve, e.g. numlab solve linear --help");
+    if (labs.list_selected()) return labs.list();
+    if (labs.lab_selected()) return labs.run();
+    if (bench.selected()) return bench.run();
+    if (mechanism.selected()) return mechanism.run();
+    if (fit.selected()) return fit.run();
+    return run_main_job();
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "numlab: error: " << error.what() << '\n';
+    return exit_bad_input;
+  } catch (const std::exception& error) {
+    std::cerr << "numlab: error: " << error.what() << '\n';
+    return exit_bad_input;
+  }
+}

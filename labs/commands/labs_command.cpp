@@ -1,0 +1,48 @@
+#include "commands/labs_command.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <stdexcept>
+
+#include "lessons/lab.hpp"
+
+namespace numlab::cli {
+
+namespace {
+std::vector<std::string> lab_names() {
+  std::vector<std::string> names;
+  for (const Lab& lab : all_labs()) names.push_back(lab.name);
+  return names;
+}
+}  // namespace
+
+LabsCommand::LabsCommand(CLI::App& app) {
+  list_ = app.add_subcommand("labs", "List the labs");
+  lab_ = app.add_subcommand("lab", "Run one lab: explained steps, tables, and the files they write");
+  lab_->add_option("name", name_, "Lab name (see `numlab labs`)")->required()->check(CLI::IsMember(lab_names()));
+  add_common_options(*lab_, common_);
+}
+
+int LabsCommand::list() const {
+  for (const Lab& lab : all_labs()) std::cout << fmt::format("{:<12} {}\n", lab.name, lab.summary);
+  std::cout << "\nRun one with: numlab lab NAME [--step]\n";
+  return exit_success;
+}
+
+int LabsCommand::run() const { return run_lab(name_, common_.step, common_.out_dir); }
+
+int run_lab(const std::string& name, bool step, const std::string& out_dir) {
+  for (const Lab& lab : all_labs()) {
+    if (lab.name != name) continue;
+    std::cout << fmt::format("numlab lab {}: {}\n", lab.name, lab.summary);
+    if (step) std::cout << "(--step: press Enter after each step)\n";
+    LabSession session(std::cout, step, out_dir + "/lab-" + lab.name, lab.name, lab.summary);
+    const int exit_code = lab.run(session);
+    std::cout << "Report: " << session.finish() << " (steps, tables and figures in one page)\n";
+    return exit_code;
+  }
+  throw std::invalid_argument("unknown lab '" + name + "' (see numlab labs)");
+}
+
+}  // namespace numlab::cli

@@ -1,0 +1,189 @@
+#include "commands/mechanism_command.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <numbers>
+#include <nlohmann/json.hpp>
+
+#include "numlab/mechanisms/jansen_solvers.hpp"
+#include "numlab/nonlinear/linear_step.hpp"
+#include "scenes/jansen_scene.hpp"
+#include "commands/mustang_command.hpp"
+#include "output/table.hpp"
+
+namespace numlab::cli {
+
+namespace {
+
+using mechanisms::JansenModel;
+
+double parse_degrees(const std::string& token, const std::string& whole) {
+  double value = 0.0;
+  const char* first = token.data() + (token.starts_with('+') ? 1 : 0);
+  const auto [end, error] = std::from_chars(first, token.data() + token.size(), value);
+  if (token.empty() || error != std::errc() || end != token.data() + token.size() || !std::isfinite(value)) {
+    throw std::invalid_argument(fmt::format("--sweep '{}': '{}' is not a finite number of degrees", whole, token));
+  }
+  return value;
+}
+
+// |dF / d theta_i| at a pose, from the 8-equation model's rates (the 10-equation model's joints are
+// the same, so its 8 angles are read off them).
+double foot_speed(JansenModel model, const mechanisms::JansenPose& pose) {
+  const mechanisms::JansenLeg leg;
+  const Eigen::VectorXd eight =
+      model == JansenModel::eight_equations
+          ? pose.angles
+          : mechanisms::jansen_angles_of(JansenModel::eight_equations, pose.joints,
+                                         Eigen::VectorXd(mechanisms::JansenClosure::seed_estimates()));
+  const auto rates = leg.rates(pose.crank_deg * std::numbers::pi / 180.0, mechanisms::JansenAngles(eight));
+  return rates.status == Status::converged ? rates.foot_speed : std::numeric_limits<double>::quiet_NaN();
+}
+
+void print_csv(std::ostream& out, JansenModel model, const mechanisms::JansenSweep& sweep) {
+  out << "crank_deg";
+  for (const std::string& name : mechanisms::jansen_angle_names(model)) out << ',' << name;
+  for (std::string_view joint : mechanisms::jansen_joint_names) out << ",x_" << joint << ",y_" << joint;
+  out << ",iterations,residual_inf,status,foot_speed\n";  // design/cli.md's columns, then ours
+  for (const auto& pose : sweep.poses) {
+    out << fmt::format("{:.10g}", pose.crank_deg);
+    for (double angle : pose.angles) out << fmt::format(",{:.17g}", angle);
+    for (const auto& joint : pose.joints) out << fmt::format(",{:.17g},{:.17g}", joint.x(), joint.y());
+    out << fmt::format(",{},{:.6g},{},{:.10g}\n", pose.outcome.iterations, pose.outcome.residual_inf,
+                       to_string(pose.outcome.status), foot_speed(model, pose));
+  }
+}
+
+nlohmann::ordered_json json_of(const std::string& name, const std::string& solver, JansenModel model,
+                               const mechanisms::JansenSweep& sweep, double time_s) {
+  const auto names = mechanisms::jansen_angle_names(model);
+  nlohmann::ordered_json out = {{"mechanism", name}, {"solver", solver}, {"poses", nlohmann::ordered_json::array()}};
+  for (const auto& pose : sweep.poses) {
+    nlohmann::ordered_json angles, joints;
+    for (std::size_t k = 0; k < names.size(); ++k) angles[names[k]] = pose.angles(static_cast<Eigen::Index>(k));
+    for (std::size_t j = 0; j < pose.joints.size(); ++j) {
+      joints[std::string(mechanisms::jansen_joint_names[j])] = {pose.joints[j].x(), pose.joints[j].y()};
+    }
+    out["poses"].push_back({{"crank_deg", pose.crank_deg},
+                            {"angles", angles},
+                            {"joints", joints},
+                            {"foot_speed", number_or_null(foot_speed(model, pose))},
+                            {"iterations", pose.outcome.iterations},
+                            {"residual_inf", pose.outcome.residual_inf},
+                            {"status", std::string(to_string(pose.outcome.status))}});
+  }
+  out["status"] = std::string(to_string(sweep.status));
+  out["worst_closed_form_distance"] = number_or_null(sweep.worst_closed_form_distance);
+  out["worst_length_error"] = number_or_null(sweep.worst_length_error);
+  out["branch_kept"] = sweep.orientation_kept;
+  out["step_halvings"] = sweep.step_halvings;
+  out["time_s"] = time_s;
+  return out;
+}
+
+void print_text(std::ostream& out, const std::string& name, const std::string& solver, JansenModel model,
+                const mechanisms::JansenSweep& sweep, double time_s) {
+  out << fmt::format("mechanism          {} ({})\n", name,
+                     model == JansenModel::eight_equations ? "seed 000's 8 equations" : "seed 001's 10 equations")
+      << fmt::format("solver             {}\n", solver)
+      << fmt::format("status             {}\n", to_string(sweep.status))
+      << fmt::format("poses              {}\n", sweep.poses.size());
+  constexpr std::size_t shown = 8;
+  Table table({"crank (deg)", "x_F", "y_F", "foot speed", "iterations", "||f||_inf", "status"});
+  for (std::size_t i = 0; i < sweep.poses.size(); ++i) {
+    if (sweep.poses.size() > shown && i == shown / 2) {
+      table.add_row({fmt::format("... ({} more)", sweep.poses.size() - shown)});
+      i = sweep.poses.size() - shown / 2;
+    }
+    const auto& pose = sweep.poses[i];
+    const auto& foot = pose.joints[static_cast<std::size_t>(mechanisms::JansenJoint::F)];
+    table.add_row({fmt::format("{:g}", pose.crank_deg), fmt::format("{:.6f}", foot.x()), fmt::format("{:.6f}", foot.y()),
+                   fmt::format("{:.4f}", foot_speed(model, pose)), std::to_string(pose.outcome.iterations), scientific(pose.outcome.residual_inf),
+                   std::string(to_string(pose.outcome.status))});
+  }
+  table.print(out);
+  out << fmt::format("checks             worst joint distance from the closed form {:.2g}; worst link-length "
+                     "error {:.2g}; branch {}\n",
+                     sweep.worst_closed_form_distance, sweep.worst_length_error,
+                     sweep.orientation_kept ? "kept" : "FLIPPED")
+      << fmt::format("time               {:.3g} s\n", time_s)
+      << "foot speed is |dF/d theta_i|: length units per radian of crank\n";
+}
+
+}  // namespace
+
+SweepRange parse_sweep(const std::string& text) {
+  const std::size_t first = text.find(':'), second = text.find(':', first == std::string::npos ? 0 : first + 1);
+  if (first == std::string::npos || second == std::string::npos || text.find(':', second + 1) != std::string::npos) {
+    throw std::invalid_argument("--sweep '" + text + "': expected START:STOP:STEP in degrees, e.g. 0:359:1");
+  }
+  const SweepRange range{parse_degrees(text.substr(0, first), text),
+                         parse_degrees(text.substr(first + 1, second - first - 1), text),
+                         parse_degrees(text.substr(second + 1), text)};
+  if (range.step == 0.0 || (range.stop - range.start) * range.step < 0.0) {
+    throw std::invalid_argument("--sweep '" + text + "': the step must be non-zero and point from START to STOP");
+  }
+  if (std::floor((range.stop - range.start) / range.step) > 100000) {
+    throw std::invalid_argument("--sweep '" + text + "': more than 100000 poses");
+  }
+  return range;
+}
+
+MechanismCommand::MechanismCommand(CLI::App& app) {
+  command_ = app.add_subcommand("mechanism", "Solve a linkage at one crank angle or over a sweep");
+  command_->add_option("name", name_, "jansen (seed 000, 8 equations), jansen10 (seed 001, 10 equations), mustang (seed 003)")
+      ->required()
+      ->check(CLI::IsMember({"jansen", "jansen10", "mustang"}));
+  auto* crank = command_->add_option("--crank", crank_, "One crank angle (degrees)");
+  auto* sweep = command_->add_option("--sweep", sweep_, "START:STOP:STEP in degrees");
+  crank->excludes(sweep);
+  command_->add_option("--solver", solver_, "full, sequential, analytic or gsl-<type>")
+      ->check(CLI::IsMember(mechanisms::jansen_solver_names()));
+  command_->add_option("--linear", linear_, "Inner solver of full Newton")
+      ->check(CLI::IsMember({"gepp", "gauss-seidel", "gsl-lu", "eigen-lu"}));
+  command_->add_option("--svg", svg_, "Draw the first pose and the foot path to this SVG file");
+  command_->add_option("--animate", animate_, "Write an animated SVG of the sweep to this file");
+  command_->add_option("--beest", beest_, "Draw seed 000's four-legged beest from the sweep (a full turn)");
+  command_->add_flag("--beest-animated{4.0}", beest_seconds_, "Animate the beest");
+  add_common_options(*command_, common_);
+}
+
+int MechanismCommand::run() const {
+  if (!crank_ && sweep_.empty()) throw std::invalid_argument("give --crank DEG or --sweep START:STOP:STEP");
+  if (crank_ && !std::isfinite(*crank_)) throw std::invalid_argument("--crank must be a finite number of degrees");
+  const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : parse_sweep(sweep_);
+  if (name_ == "mustang") {
+    if (!beest_.empty()) throw std::invalid_argument("--beest draws the Jansen leg's beest, not the mustang");
+    return run_mustang({range.start, range.stop, range.step, solver_, linear_, common_, svg_, animate_});
+  }
+  const JansenModel model = name_ == "jansen" ? JansenModel::eight_equations : JansenModel::ten_equations;
+
+  nonlinear::NewtonOptions options;
+  if (common_.tolerance) options.residual_tolerance = *common_.tolerance;
+  if (common_.max_iterations) options.max_iterations = *common_.max_iterations;
+  const auto solver = mechanisms::make_jansen_solver(model, solver_, linear_, options);
+  const auto begin = std::chrono::steady_clock::now();
+  const mechanisms::JansenSweep sweep = mechanisms::crank_sweep(model, *solver, range.start, range.stop, range.step);
+  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+
+  if (!sweep.poses.empty()) {
+    if (!svg_.empty()) write_file_atomically(svg_, jansen_pose_svg(sweep, 0));
+    if (!animate_.empty()) write_file_atomically(animate_, jansen_animation_svg(sweep, 4.0));
+    if (!beest_.empty()) write_file_atomically(beest_, beest_svg(sweep, beest_seconds_));
+  }
+  if (common_.format == Format::json) {
+    std::cout << json_of(name_, solver_, model, sweep, time_s).dump(2) << '\n';
+  } else if (common_.format == Format::csv) {
+    print_csv(std::cout, model, sweep);
+  } else {
+    print_text(std::cout, name_, solver_, model, sweep, time_s);
+  }
+  return exit_code_for(sweep.status);
+}
+
+}  // namespace numlab::cli

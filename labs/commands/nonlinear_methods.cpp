@@ -1,0 +1,62 @@
+#include "commands/nonlinear_methods.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+#include "numlab/nonlinear/dynamic_adapter.hpp"
+#include "numlab/nonlinear/gsl_multiroot.hpp"
+#include "numlab/nonlinear/linear_step.hpp"
+
+namespace numlab::cli {
+
+namespace {
+
+std::string gsl_termination(const nonlinear::GslMultirootResult& result, const nonlinear::NewtonOptions& options) {
+  std::string word(to_string(result.status));
+  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::toupper(c); });
+  std::string reason = result.gsl_message.empty() ? "" : "GSL: " + result.gsl_message + "; ";
+  if (result.status == Status::max_iterations) reason += fmt::format("limit {}; ", options.max_iterations);
+  return fmt::format("Termination: {} ({}||f||_inf = {:.3g}, last ||dx||_inf = {:.3g}, after {} iterations)", word,
+                     reason, result.residual_norm, result.step_norm, result.iterations);
+}
+
+}  // namespace
+
+const std::vector<std::string>& nonlinear_method_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = {"newton"};
+    for (const std::string& type : nonlinear::gsl_multiroot_types()) all.push_back("gsl-" + type);
+    return all;
+  }();
+  return names;
+}
+
+NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::DynamicSystem& system,
+                                  const Eigen::VectorXd& x0, const NonlinearSettings& settings,
+                                  nonlinear::NewtonObserver<Eigen::Dynamic>* observer) {
+  // Newton's and GSL's results share their fields; only the termination line is written differently.
+  auto run_of = [](const auto& result, std::string termination) {
+    return NonlinearRun{result.x,          result.status,
+                        result.iterations, result.residual_norm,
+                        result.step_norm,  result.function_evaluations,
+                        result.jacobian_evaluations, std::move(termination)};
+  };
+  if (method == "newton") {
+    const nonlinear::DynamicReference reference{system};
+    nonlinear::Newton<nonlinear::DynamicReference, nonlinear::RuntimeLinearStep> newton(
+        reference, settings.options, nonlinear::RuntimeLinearStep(settings.linear, system.dimension()));
+    newton.set_observer(observer);
+    const auto result = newton.solve(x0);
+    return run_of(result, nonlinear::termination_line(result, settings.options));
+  }
+  if (method.starts_with("gsl-")) {
+    const auto result = nonlinear::gsl_multiroot_solve(system, x0, method.substr(4), settings.options, observer);
+    return run_of(result, gsl_termination(result, settings.options));
+  }
+  throw std::invalid_argument("unknown nonlinear method '" + method + "'");
+}
+
+}  // namespace numlab::cli

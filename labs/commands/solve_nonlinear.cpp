@@ -1,0 +1,125 @@
+#include "commands/solve_nonlinear.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "commands/nonlinear_methods.hpp"
+#include "numlab/nonlinear/linear_step.hpp"
+#include "numlab/nonlinear/mgh_problems.hpp"
+#include "output/trace_printers.hpp"
+
+namespace numlab::cli {
+
+Eigen::VectorXd parse_point(const std::string& text, int expected, const std::string& flag) {
+  std::vector<double> values;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t end = std::min(text.find(',', begin), text.size());
+    const std::string token = text.substr(begin, end - begin);
+    double value = 0.0;
+    const char* first = token.data() + (token.starts_with('+') ? 1 : 0);
+    const auto [stop, error] = std::from_chars(first, token.data() + token.size(), value);
+    if (token.empty() || error != std::errc() || stop != token.data() + token.size() || !std::isfinite(value)) {
+      throw std::invalid_argument(fmt::format("{} '{}': '{}' is not a finite number", flag, text, token));
+    }
+    values.push_back(value);
+    begin = end + 1;
+  }
+  if (static_cast<int>(values.size()) != expected) {
+    throw std::invalid_argument(
+        fmt::format("{} '{}' has {} numbers but the problem has {} unknowns", flag, text, values.size(), expected));
+  }
+  return Eigen::Map<const Eigen::VectorXd>(values.data(), expected);
+}
+
+SolveNonlinearCommand::SolveNonlinearCommand(CLI::App& solve) {
+  command_ = solve.add_subcommand("nonlinear", "Solve one nonlinear test system f(x) = 0");
+  command_->add_option("--problem", problem_, "Moré-Garbow-Hillstrom problem")
+      ->required()
+      ->check(CLI::IsMember(nonlinear::test_problem_names()));
+  command_->add_option("--method", method_, "newton (hand-written) or gsl-<type>")
+      ->required()
+      ->check(CLI::IsMember(nonlinear_method_names()));
+  command_->add_option("--x0", x0_, "Starting point a,b,... (default: the problem's standard start)");
+  command_->add_option("--linear", linear_, "Newton's inner linear solver (newton only)")
+      ->check(CLI::IsMember(nonlinear::newton_linear_methods()));
+  command_->add_flag("--damped", damped_, "Backtracking on ||f||^2 (newton only; off by default)");
+  command_->add_option("--step-tol", step_tolerance_, "Relative step tolerance (default 1e-12)")
+      ->check(CLI::NonNegativeNumber);
+  add_common_options(*command_, common_);
+}
+
+int SolveNonlinearCommand::run() const {
+  const nonlinear::TestProblem problem = nonlinear::make_test_problem(problem_);
+  const int n = problem.system->dimension();
+  const Eigen::VectorXd x0 = x0_.empty() ? problem.standard_start : parse_point(x0_, n, "--x0");
+
+  NonlinearSettings settings;
+  settings.linear = linear_;
+  settings.options.damped = damped_;
+  if (common_.tolerance) settings.options.residual_tolerance = *common_.tolerance;
+  if (common_.max_iterations) settings.options.max_iterations = *common_.max_iterations;
+  if (step_tolerance_) settings.options.step_tolerance = *step_tolerance_;
+
+  const bool text = common_.format == Format::text;
+  NewtonTracer tracer(common_.trace && text ? &std::cerr : nullptr, common_.step);
+  const auto begin = std::chrono::steady_clock::now();
+  const NonlinearRun run = run_nonlinear_method(method_, *problem.system, x0, settings, common_.trace ? &tracer : nullptr);
+  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  const double distance = problem.known_root ? (run.x - *problem.known_root).lpNorm<Eigen::Infinity>()
+                                             : std::numeric_limits<double>::quiet_NaN();
+  const bool is_newton = method_ == "newton";
+
+  if (common_.format == Format::json) {
+    nlohmann::ordered_json out = {{"problem", problem_},
+                                  {"method", method_},
+                                  {"x", nlohmann::ordered_json::array()},
+                                  {"status", std::string(to_string(run.status))},
+                                  {"iterations", run.iterations},
+                                  {"residual_inf", number_or_null(run.residual_inf)},
+                                  {"function_evaluations", run.function_evaluations},
+                                  {"jacobian_evaluations", run.jacobian_evaluations},
+                                  {"time_s", time_s}};
+    for (double value : run.x) out["x"].push_back(number_or_null(value));
+    if (is_newton) {
+      out["linear"] = linear_;
+      out["damped"] = damped_;
+    }
+    out["step_inf"] = number_or_null(run.step_inf);
+    if (problem.known_root) out["distance_to_root"] = number_or_null(distance);
+    out["termination"] = run.termination;
+    if (common_.trace) out["trace"] = tracer.records();
+    std::cout << out.dump(2) << '\n';
+  } else if (common_.format == Format::csv) {
+    std::cout << "problem,method,status,iterations,residual_inf,function_evaluations,jacobian_evaluations,time_s";
+    for (int i = 0; i < n; ++i) std::cout << ",x" << i + 1;
+    std::cout << '\n'
+              << fmt::format("{},{},{},{},{:.6g},{},{},{:.6g}", problem_, method_, to_string(run.status),
+                             run.iterations, run.residual_inf, run.function_evaluations, run.jacobian_evaluations,
+                             time_s);
+    for (double value : run.x) std::cout << fmt::format(",{:.17g}", value);
+    std::cout << '\n';
+  } else {
+    std::string x_text;
+    for (double value : run.x) x_text += fmt::format("{:.12g} ", value);
+    std::cout << fmt::format("problem            {} - {}\n", problem_, problem.description)
+              << fmt::format("method             {}{}\n", method_,
+                             is_newton ? fmt::format(" (linear solver {}{})", linear_, damped_ ? ", damped" : "") : "")
+              << fmt::format("status             {}\n", to_string(run.status))
+              << fmt::format("x                  {}\n", x_text)
+              << fmt::format("iterations         {}\n", run.iterations)
+              << fmt::format("||f||_inf          {:.3g}\n", run.residual_inf);
+    if (problem.known_root) std::cout << fmt::format("distance to root   {:.3g}   (||x - x*||_inf)\n", distance);
+    std::cout << fmt::format("evaluations        {} of f, {} of J\n", run.function_evaluations,
+                             run.jacobian_evaluations)
+              << fmt::format("time               {:.3g} s\n", time_s) << run.termination << '\n';
+  }
+  return exit_code_for(run.status);
+}
+
+}  // namespace numlab::cli

@@ -1,0 +1,92 @@
+// Lab `inverse2x2`: the 2x2 closed form of seed 003, a scale-aware singularity test, and a nearly
+// singular 2x2 against GSL.
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "lessons/lab.hpp"
+#include "commands/linear_methods.hpp"
+#include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/linalg/measures.hpp"
+
+namespace numlab::cli {
+
+int run_inverse2x2_lab(LabSession& session) {
+  session.begin_step("The closed form",
+                     "For A = [a b; c d]: det A = ad - bc and A^-1 = (1/det A) [d -b; -c a]. Four multiplications, "
+                     "one division: this is what seed 003 uses inside each 2x2 Newton loop.");
+  Eigen::Matrix2d A;
+  A << 4, 3, 6, 3;
+  const linalg::Inverse2x2 closed = linalg::inverse2x2(A);
+  session.say(fmt::format("A = [4 3; 6 3]: det = {:.6g}, A^-1 = [{:.6g} {:.6g}; {:.6g} {:.6g}], kappa_2 = {:.6g}; "
+                          "||A A^-1 - I||_max = {:.2g}.",
+                          closed.determinant, closed.inverse(0, 0), closed.inverse(0, 1), closed.inverse(1, 0),
+                          closed.inverse(1, 1), closed.condition_number,
+                          (A * closed.inverse - Eigen::Matrix2d::Identity()).cwiseAbs().maxCoeff()));
+
+  session.begin_step("Singular relative to what? The scale of A",
+                     "A test like |det A| < 1e-12 calls [1e-7 0; 0 1e-7] singular (det 1e-14) although it is a "
+                     "perfectly conditioned multiple of I, and passes [1e10 1e10; 1e10 1e10+2e-6] (det about 2e4) "
+                     "although its rows are parallel to within one rounding unit. For a 2x2, ||A||_F^2 / |det A| = "
+                     "kappa + 1/kappa, so numlab calls A singular when |det A| <= eps ||A||_F^2, that is when "
+                     "kappa_2(A) >= 1/eps, whatever the scale.");
+  Table scale({"A", "det A", "kappa_2", "status"});
+  const std::vector<std::pair<std::string, Eigen::Matrix2d>> examples = {
+      {"[1e-7 0; 0 1e-7]", (Eigen::Matrix2d() << 1e-7, 0, 0, 1e-7).finished()},
+      {"[1e10 1e10; 1e10 1e10+2e-6]", (Eigen::Matrix2d() << 1e10, 1e10, 1e10, 1e10 + 2e-6).finished()},
+      {"1e-200 * [4 3; 6 3]", 1e-200 * A},
+      {"1e200 * [4 3; 6 3]", 1e200 * A},
+      {"[1 2; 2 4]", (Eigen::Matrix2d() << 1, 2, 2, 4).finished()},
+  };
+  for (const auto& [name, matrix] : examples) {
+    const linalg::Inverse2x2 result = linalg::inverse2x2(matrix);
+    scale.add_row({name, scientific(result.determinant), scientific(result.condition_number),
+                   std::string(to_string(result.status))});
+  }
+  session.show(scale, "scale");
+  session.say("The determinants of the two scaled matrices are -6e-400 and -6e+400: they underflow to -0 and "
+              "overflow to -inf in double precision. numlab therefore first scales A by a power of two (exact) "
+              "and tests the determinant of the scaled matrix, which is why both still solve correctly.");
+
+  session.begin_step("Where it fails: a nearly singular 2x2",
+                     "A = [1 1; 1 1+d], b = A * (0.1, 0.7), rounded. As d shrinks the rows become parallel and "
+                     "kappa grows like 4/d. The closed form's forward error grows like kappa * eps: it multiplies "
+                     "b by the rounded entries of A^-1 (as large as 1/d) and then subtracts, so each rounding is "
+                     "amplified by 1/d. At d = 1e-16, 1+d rounds to 1: exactly singular, and both methods say so.");
+  Table nearly({"d", "kappa_2", "closed form", "forward error", "rel. residual", "GSL LU", "forward error",
+                "rel. residual"});
+  for (double d : {1e-2, 1e-6, 1e-10, 1e-13, 1e-15, 1e-16}) {
+    Eigen::Matrix2d M;
+    M << 1, 1, 1, 1 + d;
+    const Eigen::Vector2d exact(0.1, 0.7);
+    const Eigen::Vector2d b = M * exact;
+    const linalg::Inverse2x2 inverse = linalg::inverse2x2(M);
+    const linalg::LinearResult<2> closed_form = linalg::solve2x2(M, b);
+    const DynamicResult lu = run_linear_method("gsl-lu", M, b);
+    auto errors = [&](const Eigen::VectorXd& x) -> std::pair<std::string, std::string> {
+      if (!x.allFinite()) return {"-", "-"};
+      return {scientific(linalg::forward_error(x, exact)), scientific(linalg::relative_residual(M, b, x))};
+    };
+    const auto [closed_error, closed_residual] = errors(closed_form.x);
+    const auto [lu_error, lu_residual] = errors(lu.x);
+    nearly.add_row({scientific(d), scientific(inverse.condition_number), std::string(to_string(closed_form.status)),
+                    closed_error, closed_residual, std::string(to_string(lu.status)), lu_error, lu_residual});
+  }
+  session.show(nearly, "nearly-singular");
+  session.say("The residual columns show why they differ. LU with partial pivoting is backward stable: its "
+              "relative residual stays at rounding level for every d, and here its one elimination, row 2 - "
+              "row 1, even subtracts nearly equal numbers exactly, so it keeps every digit. Solving through an "
+              "explicit inverse is not backward stable: its residual grows with kappa. In general both "
+              "forward errors are bounded only by about kappa * eps; on a 2x2 inside a Newton loop, where "
+              "kappa is moderate, the closed form's speed wins.");
+
+  session.begin_step("The closed form against GSL",
+                     "A = [4 3; 6 3], b = A * (1, 1). Both are exact to rounding here; the closed form needs no "
+                     "pivoting, workspace or loop, which is why seed 003 uses it inside every Newton iteration.");
+  const Eigen::Vector2d exact(1, 1);
+  session.show(linear_comparison_table(A, A * exact, exact, {"inverse2x2", "gepp", "gsl-lu", "eigen-lu"}), "comparison");
+  return 0;
+}
+
+}  // namespace numlab::cli

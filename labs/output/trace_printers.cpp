@@ -1,0 +1,114 @@
+#include "output/trace_printers.hpp"
+
+#include <fmt/format.h>
+
+#include "cli/cli_common.hpp"
+
+namespace numlab::cli {
+
+namespace {
+
+nlohmann::ordered_json rows_of(const Eigen::MatrixXd& M, const Eigen::VectorXd& c) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    nlohmann::ordered_json row = nlohmann::ordered_json::array();
+    for (Eigen::Index j = 0; j < M.cols(); ++j) row.push_back(M(i, j));
+    row.push_back(c(i));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string describe(const linalg::EliminationRecord& record, bool last_column) {
+  const int k = record.column + 1;
+  switch (record.event) {
+    case linalg::EliminationEvent::row_swap:
+      return fmt::format("column {}: pivot search picks row {} (|pivot| = {:.4g}); swap rows {} and {}", k,
+                         record.other_row + 1, std::abs(record.value), k, record.other_row + 1);
+    case linalg::EliminationEvent::elimination:
+      if (last_column) return fmt::format("column {}: pivot {:.4g}; no rows below, elimination complete", k, record.value);
+      return fmt::format("column {}: pivot {:.4g} in row {}; rows below minus l_i{} * row {} (l_i{} = a_i{} / {:.4g})", k,
+                         record.value, k, k, k, k, k, record.value);
+    case linalg::EliminationEvent::back_substitution:
+      return fmt::format("back substitution: x{} = {:.10g}", k, record.value);
+  }
+  return "";
+}
+
+}  // namespace
+
+void print_augmented(std::ostream& out, const Eigen::MatrixXd& M, const Eigen::VectorXd& c) {
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    std::string line = "    ";
+    for (Eigen::Index j = 0; j < M.cols(); ++j) line += fmt::format("{:>11.4g}", M(i, j));
+    line += fmt::format("  |{:>11.4g}", c(i));
+    out << line << '\n';
+  }
+}
+
+void EliminationTracer::on_step(const linalg::GaussElimination<Eigen::Dynamic>& state,
+                                const linalg::EliminationRecord& record) {
+  const bool show_matrix = record.event != linalg::EliminationEvent::back_substitution &&
+                           state.size() <= max_traced_matrix_size;
+  if (text_out_ == nullptr) {
+    static const char* names[] = {"row_swap", "elimination", "back_substitution"};
+    nlohmann::ordered_json entry = {{"event", names[static_cast<int>(record.event)]}, {"column", record.column + 1}};
+    if (record.event == linalg::EliminationEvent::row_swap) entry["swapped_with_row"] = record.other_row + 1;
+    if (record.event == linalg::EliminationEvent::back_substitution) {
+      entry["value"] = record.value;
+    } else {
+      entry["pivot"] = record.value;
+    }
+    if (show_matrix) entry["augmented"] = rows_of(state.reduced_matrix(), state.reduced_rhs());
+    records_.push_back(entry);
+    return;
+  }
+  *text_out_ << describe(record, record.column + 1 == state.size()) << '\n';
+  if (show_matrix) print_augmented(*text_out_, state.reduced_matrix(), state.reduced_rhs());
+  pause_if_stepping(step_);
+}
+
+void SweepTracer::on_sweep(const linalg::GaussSeidel<Eigen::Dynamic>&, const linalg::SweepRecord& record) {
+  if (text_out_ == nullptr) {
+    records_.push_back(
+        {{"sweep", record.sweep}, {"step_inf", record.step_norm}, {"residual_inf", record.residual_norm}});
+    return;
+  }
+  if (!header_printed_) {
+    *text_out_ << fmt::format("  {:>6}  {:>12}  {:>16}\n", "sweep", "||dx||_inf", "||b - A x||_inf");
+    header_printed_ = true;
+  }
+  *text_out_ << fmt::format("  {:>6}  {:>12.4e}  {:>16.4e}\n", record.sweep, record.step_norm, record.residual_norm);
+  pause_if_stepping(step_);
+}
+
+void NewtonTracer::on_iteration(const nonlinear::NewtonRecord& record) {
+  const bool has_linear_solve = record.linear_iterations != nonlinear::NewtonRecord::no_linear_solve;
+  if (text_out_ == nullptr) {
+    nlohmann::ordered_json entry = {{"iteration", record.iteration},
+                                    {"residual_inf", record.residual_inf},
+                                    {"residual_2", record.residual_2},
+                                    {"step_inf", record.step_inf}};
+    if (has_linear_solve) {
+      entry["linear_status"] = std::string(to_string(record.linear_status));
+      entry["linear_iterations"] = record.linear_iterations;
+    }
+    entry["damping"] = record.damping;
+    entry["time_s"] = record.elapsed_s;
+    records_.push_back(entry);
+    return;
+  }
+  if (!header_printed_) {
+    *text_out_ << fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>9}  {:>7}  {:>10}\n", "k", "||f||_inf",
+                              "||f||_2", "||dx||_inf", "linear solve", "inner its", "lambda", "time (s)");
+    header_printed_ = true;
+  }
+  *text_out_ << fmt::format("  {:>4}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>14}  {:>9}  {:>7.4g}  {:>10.3e}\n",
+                            record.iteration, record.residual_inf, record.residual_2, record.step_inf,
+                            has_linear_solve ? std::string(to_string(record.linear_status)) : "-",
+                            has_linear_solve ? std::to_string(record.linear_iterations) : "-", record.damping,
+                            record.elapsed_s);
+  pause_if_stepping(step_);
+}
+
+}  // namespace numlab::cli
