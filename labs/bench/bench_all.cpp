@@ -9,6 +9,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "bench/bench_fit.hpp"
 #include "bench/bench_jansen.hpp"
 #include "bench/bench_linear.hpp"
 #include "bench/bench_mustang.hpp"
@@ -163,30 +164,6 @@ void draw_seidel_chart(const ChartFiles& files, const std::vector<SeidelRow>& ro
   draw_chart(files, csv, script);
 }
 
-// --- Fitting: digits against degree ---
-
-struct FitBenchRow {
-  DegreeSweepRow sweep;
-  std::string data;
-  double time_s;
-};
-
-std::vector<FitBenchRow> fit_rows(const std::string& data_name, const fitting::DataSet& data, int max_degree,
-                                  bool quick, std::vector<DegreeSweepRow>& sweep) {
-  progress("bench: fitting degree sweep on " + data_name);
-  sweep = fit_degree_sweep(data.x, data.y, max_degree);
-  std::vector<FitBenchRow> rows;
-  const TimingPlan plan = quick ? TimingPlan{3, 5, 0.0} : TimingPlan{5, 200, 0.02};
-  for (const DegreeSweepRow& row : sweep) {
-    fitting::FitOptions options;
-    options.method = fitting::fit_method_from_string(row.method);
-    options.degree = row.degree;
-    const double seconds = median_time([&] { fitting::fit_polynomial(data.x, data.y, options); }, plan);
-    rows.push_back({row, data_name, seconds});
-  }
-  return rows;
-}
-
 }  // namespace
 
 int run_bench_all(const CommonOptions& common, const std::string& chart, bool quick) {
@@ -215,8 +192,10 @@ int run_bench_all(const CommonOptions& common, const std::string& chart, bool qu
   const std::vector<int> sizes = quick ? std::vector<int>{2, 8, 64} : std::vector<int>{2, 8, 64, 256, 512, 1024};
   const std::vector<BenchRow> linear = bench_linear(sizes, quick);
   const std::vector<SeidelRow> seidel = seidel_rows(quick);
+  progress("bench: fitting degree sweep on Wampler4");
+  const std::vector<FitBenchRow> fits = bench_fit("Wampler4", wampler, 12, quick);
   std::vector<DegreeSweepRow> sweep;
-  const std::vector<FitBenchRow> fits = fit_rows("Wampler4", wampler, 12, quick, sweep);
+  for (const FitBenchRow& row : fits) sweep.push_back(row.sweep);
   progress("");
 
   // 3. Draw.
@@ -277,16 +256,7 @@ int run_bench_all(const CommonOptions& common, const std::string& chart, bool qu
   }
   sweeps.print(std::cout);
   std::cout << "\nFitting, NIST Wampler4: correct digits (weighted, vs a long-double reference) per degree\n";
-  Table digits({"degree", "normal", "normal-scaled", "gsl", "eigen-qr"});
-  for (std::size_t first = 0; first + 3 < sweep.size(); first += 4) {
-    std::vector<std::string> cells = {std::to_string(sweep[first].degree)};
-    for (std::size_t m = 0; m < 4; ++m) {
-      const DegreeSweepRow& row = sweep[first + m];
-      cells.push_back(std::isfinite(row.residual_sd) ? fmt::format("{:.1f}", row.digits) : std::string(to_string(row.status)));
-    }
-    digits.add_row(cells);
-  }
-  digits.print(std::cout);
+  print_fit_digits(std::cout, fits);
   std::cout << "\nCharts (each with its CSV and gnuplot script beside it):\n";
   for (const auto& files : charts) std::cout << "  " << files.chart << '\n';
   return exit_success;

@@ -9,6 +9,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "bench/bench_fit.hpp"
 #include "bench/bench_jansen.hpp"
 #include "bench/bench_mustang.hpp"
 #include "output/chart.hpp"
@@ -153,8 +154,8 @@ std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick) {
 
 BenchCommand::BenchCommand(CLI::App& app) {
   command_ = app.add_subcommand("bench", "Measure speed: median of repeated in-process runs, as ratios");
-  command_->add_option("what", what_, "What to measure: all (default), linear, jansen or mustang")
-      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang"}));
+  command_->add_option("what", what_, "What to measure: all (default), linear, jansen, mustang or fit")
+      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang", "fit"}));
   command_->add_option("--chart", chart_,
                        "Main chart (.svg or .png); default OUT/work-precision.svg (all) or OUT/bench-linear.svg");
   command_->add_option("--sizes", sizes_, "Sizes n, comma-separated")->delimiter(',')->check(CLI::Range(1, 4096));
@@ -166,6 +167,7 @@ int BenchCommand::run() const {
   if (what_ == "all") return run_bench_all(common_, chart_, quick_);
   if (what_ == "jansen") return run_jansen();
   if (what_ == "mustang") return run_mustang_bench(common_, quick_);
+  if (what_ == "fit") return run_bench_fit(common_, chart_, quick_);
   const ChartFiles files = chart_files(chart_.empty() ? common_.out_dir + "/bench-linear.svg" : chart_);
   const std::vector<BenchRow> rows = bench_linear(sizes_, quick_);
   draw_linear_chart(files, rows, sizes_);
