@@ -5,9 +5,7 @@
 #include <stdexcept>
 
 #include "numlab/fitting/fit_quality.hpp"
-#include "numlab/fitting/normal_equations.hpp"
 #include "numlab/fitting/reference_fits.hpp"
-#include "numlab/fitting/scaled_basis.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/input_checks.hpp"
@@ -78,48 +76,8 @@ std::string failure_warning(const linalg::LinearResult<Eigen::Dynamic>& result) 
   }
 }
 
-// normal and normal-scaled: V^T V b = V^T y on x itself, or on t = (x - c) / s then mapped back.
-PolynomialFit normal_equations_fit(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const FitOptions& options) {
-  const bool scaled = options.method == FitMethod::normal_scaled;
-  const AffineScaling scaling = scaled ? scaling_for(x) : AffineScaling{};
-  const NormalEquations system = build_normal_equations(scaled ? to_scaled(x, scaling) : x, y, options.degree);
-  const linalg::LinearResult<Eigen::Dynamic> solved = solve_normal_equations(system, options);
-
-  PolynomialFit fit;
-  fit.status = solved.status;
-  fit.iterations = solved.iterations;
-  fit.condition_estimate = equilibrated_condition(system.matrix);
-  fit.condition_unscaled = linalg::condition_estimate(system.matrix);
-  fit.condition_of = scaled ? "normal matrix of the scaled variable t" : "normal matrix V^T V";
-  const std::string failure = failure_warning(solved);
-  if (solved.status == Status::singular || solved.status == Status::non_finite || !solved.x.allFinite()) {
-    if (fit.status == Status::converged) fit.status = Status::non_finite;
-    fit.warning = failure.empty() ? "The solve produced non-finite coefficients." : failure;
-    return fit;
-  }
-  fit.coefficients = scaled ? to_original_powers(solved.x, scaling) : solved.x;
-  fit.warning = failure;
-  return fit;
-}
-
-PolynomialFit reference_fit(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const FitOptions& options) {
-  const bool gsl = options.method == FitMethod::gsl;
-  const ReferenceFit reference = gsl ? gsl_multifit_fit(x, y, options.degree) : eigen_qr_fit(x, y, options.degree);
-  PolynomialFit fit;
-  fit.iterations = 1;
-  fit.coefficients = reference.coefficients;
-  fit.condition_estimate = reference.condition_estimate;
-  fit.condition_unscaled = reference.condition_unscaled;
-  fit.condition_of = gsl ? "column-scaled Vandermonde matrix (GSL's SVD)" : "Vandermonde matrix V";
-  if (!reference.coefficients.allFinite()) {
-    fit.status = Status::non_finite;
-    fit.coefficients.resize(0);
-    fit.warning = "The solve produced non-finite coefficients.";
-  } else if (reference.rank_deficient) {
-    fit.status = Status::singular;
-    fit.warning = "The Vandermonde matrix is rank deficient to working precision.";
-  }
-  return fit;
+bool is_normal_equations(FitMethod method) {
+  return method == FitMethod::normal || method == FitMethod::normal_scaled;
 }
 
 }  // namespace
@@ -152,22 +110,113 @@ NormalSolver normal_solver_from_string(std::string_view name) {
       message("unknown linear solver '", name, "' for the normal equations (known: gepp, gauss-seidel)"));
 }
 
-PolynomialFit fit_polynomial(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const FitOptions& options) {
+void PolynomialFitter::start(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const FitOptions& options) {
   check_input(x, y, options);
-  const bool normal = options.method == FitMethod::normal || options.method == FitMethod::normal_scaled;
-  PolynomialFit fit = normal ? normal_equations_fit(x, y, options) : reference_fit(x, y, options);
-  fit.method = options.method;
-  fit.degree = options.degree;
-  if (fit.coefficients.size() > 0) {
-    const FitStatistics statistics = fit_statistics(x, y, fit.coefficients);
-    fit.residual_sd = statistics.residual_sd;
-    fit.r_squared = statistics.r_squared;
+  options_ = options;
+  data_x_ = x;
+  data_y_ = y;
+  scaling_ = AffineScaling{};
+  system_ = NormalEquations{};
+  coefficients_.resize(0);
+  fit_ = PolynomialFit{};
+  fit_.method = options.method;
+  fit_.degree = options.degree;
+  next_ = is_normal_equations(options.method) ? FitStage::build_system : FitStage::solve_system;
+  steps_ = 0;
+  status_ = Status::running;
+  running_ = true;
+}
+
+bool PolynomialFitter::step() {
+  if (!running_) return false;
+  const FitStage stage = next_;
+  switch (stage) {
+    case FitStage::build_system: build_system(); break;
+    case FitStage::solve_system: solve_system(); break;
+    case FitStage::finish_fit: finish_fit(); break;
+  }
+  ++steps_;
+  if (observer_ != nullptr) observer_->on_step(*this, {stage});
+  return running_;
+}
+
+PolynomialFit PolynomialFitter::solve(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const FitOptions& options) {
+  start(x, y, options);
+  while (step()) {
+  }
+  return fit_;
+}
+
+// 1. The normal equations V^T V b = V^T y, on x itself or on t = (x - c) / s.
+void PolynomialFitter::build_system() {
+  const bool scaled = options_.method == FitMethod::normal_scaled;
+  if (scaled) scaling_ = scaling_for(data_x_);
+  system_ = build_normal_equations(scaled ? to_scaled(data_x_, scaling_) : data_x_, data_y_, options_.degree);
+  next_ = FitStage::solve_system;
+}
+
+// 2. The solve: the normal equations by the chosen hand-written solver, or the reference method.
+void PolynomialFitter::solve_system() {
+  next_ = FitStage::finish_fit;
+  if (!is_normal_equations(options_.method)) {
+    const bool gsl = options_.method == FitMethod::gsl;
+    const ReferenceFit reference =
+        gsl ? gsl_multifit_fit(data_x_, data_y_, options_.degree) : eigen_qr_fit(data_x_, data_y_, options_.degree);
+    fit_.iterations = 1;
+    coefficients_ = reference.coefficients;
+    fit_.condition_estimate = reference.condition_estimate;
+    fit_.condition_unscaled = reference.condition_unscaled;
+    fit_.condition_of = gsl ? "column-scaled Vandermonde matrix (GSL's SVD)" : "Vandermonde matrix V";
+    if (!reference.coefficients.allFinite()) {
+      fit_.status = Status::non_finite;
+      coefficients_.resize(0);
+      fit_.warning = "The solve produced non-finite coefficients.";
+    } else if (reference.rank_deficient) {
+      fit_.status = Status::singular;
+      fit_.warning = "The Vandermonde matrix is rank deficient to working precision.";
+    }
+    return;
+  }
+
+  const linalg::LinearResult<Eigen::Dynamic> solved = solve_normal_equations(system_, options_);
+  const bool scaled = options_.method == FitMethod::normal_scaled;
+  fit_.status = solved.status;
+  fit_.iterations = solved.iterations;
+  fit_.condition_estimate = equilibrated_condition(system_.matrix);
+  fit_.condition_unscaled = linalg::condition_estimate(system_.matrix);
+  fit_.condition_of = scaled ? "normal matrix of the scaled variable t" : "normal matrix V^T V";
+  const std::string failure = failure_warning(solved);
+  coefficients_ = solved.x;
+  if (solved.status == Status::singular || solved.status == Status::non_finite || !solved.x.allFinite()) {
+    if (fit_.status == Status::converged) fit_.status = Status::non_finite;
+    fit_.warning = failure.empty() ? "The solve produced non-finite coefficients." : failure;
+    coefficients_.resize(0);  // no coefficients to map back
+    return;
+  }
+  fit_.warning = failure;
+}
+
+// 3. The coefficients in powers of x, the residual statistics, and the warnings.
+void PolynomialFitter::finish_fit() {
+  if (options_.method == FitMethod::normal_scaled && coefficients_.size() > 0) {
+    coefficients_ = to_original_powers(coefficients_, scaling_);
+  }
+  fit_.coefficients = coefficients_;
+  if (fit_.coefficients.size() > 0) {
+    const FitStatistics statistics = fit_statistics(data_x_, data_y_, fit_.coefficients);
+    fit_.residual_sd = statistics.residual_sd;
+    fit_.r_squared = statistics.r_squared;
   }
   // A failed solve's explanation first, then the conditioning warning, which applies even when
   // the solve itself "converged".
-  const std::string conditioning = conditioning_warning(fit.condition_estimate, fit.condition_of);
-  if (!conditioning.empty()) fit.warning = fit.warning.empty() ? conditioning : fit.warning + " " + conditioning;
-  return fit;
+  const std::string conditioning = conditioning_warning(fit_.condition_estimate, fit_.condition_of);
+  if (!conditioning.empty()) fit_.warning = fit_.warning.empty() ? conditioning : fit_.warning + " " + conditioning;
+  status_ = fit_.status;
+  running_ = false;
+}
+
+PolynomialFit fit_polynomial(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const FitOptions& options) {
+  return PolynomialFitter().solve(x, y, options);
 }
 
 double evaluate_polynomial(const Eigen::VectorXd& coefficients, double x) {

@@ -45,11 +45,9 @@ std::string method_description(const fitting::FitOptions& options, const fitting
   return "";
 }
 
-// --trace: the system the normal-equation methods build, before it is solved.
-void print_normal_equations(std::ostream& out, const fitting::DataSet& data, const fitting::FitOptions& options) {
+// --trace: the system the normal-equation methods build (the fit's first step), before it is solved.
+void print_normal_equations(std::ostream& out, const fitting::NormalEquations& system, const fitting::FitOptions& options) {
   const bool scaled = options.method == FitMethod::normal_scaled;
-  const Eigen::VectorXd x = scaled ? fitting::to_scaled(data.x, fitting::scaling_for(data.x)) : data.x;
-  const fitting::NormalEquations system = fitting::build_normal_equations(x, data.y, options.degree);
   out << (scaled ? "normal equations in t (power sums | moments):\n" : "normal equations (power sums | moments):\n");
   for (Eigen::Index i = 0; i < system.matrix.rows(); ++i) {
     out << "  ";
@@ -175,13 +173,14 @@ int FitCommand::run() const {
 
   // 2. Fit, timed.
   const auto start = std::chrono::steady_clock::now();
-  const fitting::PolynomialFit fit = fitting::fit_polynomial(data.x, data.y, options);
+  fitting::PolynomialFitter fitter;
+  const fitting::PolynomialFit fit = fitter.solve(data.x, data.y, options);
   const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const FitRun run{data, options, fit, certified_for(data, options.degree), time_s};
 
   // 3. Report.
   if (common_.trace && uses_normal_equations(options.method)) {
-    print_normal_equations(common_.format == Format::text ? std::cout : std::cerr, data, options);
+    print_normal_equations(common_.format == Format::text ? std::cout : std::cerr, fitter.normal_equations(), options);
   }
   if (common_.format == Format::json) {
     std::cout << json_report(run).dump(2) << '\n';

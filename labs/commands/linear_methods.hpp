@@ -20,8 +20,8 @@ struct LinearSettings {
 
 // Observers that receive the steps of the hand-written methods (either may be null).
 struct LinearTracers {
-  linalg::GaussEliminationObserver<Eigen::Dynamic>* elimination = nullptr;
-  linalg::GaussSeidelObserver<Eigen::Dynamic>* sweeps = nullptr;
+  linalg::GaussElimination<Eigen::Dynamic>::Observer* elimination = nullptr;
+  linalg::GaussSeidel<Eigen::Dynamic>::Observer* sweeps = nullptr;
 };
 
 // gepp, gepp-no-pivot, gauss-seidel, gauss-seidel-plain, inverse2x2, gsl-lu, gsl-qr, eigen-lu.

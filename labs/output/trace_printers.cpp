@@ -68,7 +68,7 @@ void EliminationTracer::on_step(const linalg::GaussElimination<Eigen::Dynamic>& 
   pause_if_stepping(step_);
 }
 
-void SweepTracer::on_sweep(const linalg::GaussSeidel<Eigen::Dynamic>&, const linalg::SweepRecord& record) {
+void SweepTracer::on_step(const linalg::GaussSeidel<Eigen::Dynamic>&, const linalg::SweepRecord& record) {
   if (text_out_ == nullptr) {
     records_.push_back(
         {{"sweep", record.sweep}, {"step_inf", record.step_norm}, {"residual_inf", record.residual_norm}});

@@ -30,17 +30,17 @@ constexpr int max_traced_matrix_size = 12;
 
 // Seed 001's verbose mode, made readable: the augmented matrix [A | b] after each row swap and
 // each elimination, then each back-substituted value (all indices 1-based).
-class EliminationTracer : public linalg::GaussEliminationObserver<Eigen::Dynamic>, public TraceOutput {
+class EliminationTracer : public linalg::GaussElimination<Eigen::Dynamic>::Observer, public TraceOutput {
  public:
   using TraceOutput::TraceOutput;
   void on_step(const linalg::GaussElimination<Eigen::Dynamic>& state, const linalg::EliminationRecord& record) override;
 };
 
 // One row per sweep: k, ||dx||_inf, ||b - A x||_inf of the original system.
-class SweepTracer : public linalg::GaussSeidelObserver<Eigen::Dynamic>, public TraceOutput {
+class SweepTracer : public linalg::GaussSeidel<Eigen::Dynamic>::Observer, public TraceOutput {
  public:
   using TraceOutput::TraceOutput;
-  void on_sweep(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) override;
+  void on_step(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) override;
 };
 
 // One row per Newton iteration: k, ||f||_inf, ||f||_2, ||dx||_inf, the inner linear solve's status

@@ -152,7 +152,7 @@ TEMPLATE_TEST_CASE_SIG("Fixed-size GEPP agrees with the dynamic-size one", "[gep
 }
 
 namespace {
-struct EventCounter : GaussEliminationObserver<Eigen::Dynamic> {
+struct EventCounter : GaussElimination<Eigen::Dynamic>::Observer {
   int swaps = 0, eliminations = 0, substitutions = 0;
   void on_step(const GaussElimination<Eigen::Dynamic>&, const EliminationRecord& record) override {
     if (record.event == EliminationEvent::row_swap) ++swaps;

@@ -96,7 +96,7 @@ TEST_CASE("The stop test uses |dx|: a sweep that only decreases x does not stop 
   while (iteration.step()) {
   }
   CHECK(iteration.status() == Status::converged);
-  CHECK(iteration.sweeps() > 1);
+  CHECK(iteration.iterations() > 1);
   CHECK(forward_error(iteration.x(), system.exact_solution) < 1e-8);
 }
 

@@ -10,11 +10,16 @@
 //   eigen-qr       Eigen's Householder QR of V.
 //
 // Coefficients always come out in increasing powers of the original x.
+//
+// PolynomialFitter is the fit as a stepper (numlab/solver.hpp); fit_polynomial() is its solve().
 
 #include <Eigen/Core>
 #include <string>
 #include <string_view>
 
+#include "numlab/fitting/normal_equations.hpp"
+#include "numlab/fitting/scaled_basis.hpp"
+#include "numlab/solver.hpp"
 #include "numlab/status.hpp"
 
 namespace numlab::fitting {
@@ -55,8 +60,65 @@ struct PolynomialFit {
   std::string warning;                    // empty, or why the coefficients cannot be trusted
 };
 
-// Throws std::invalid_argument for: a negative degree, degree >= number of points, x and y of
-// different lengths, or a NaN or infinity in x or y. A method that fails returns a status instead.
+// The steps of a fit, in order; gsl and eigen-qr have no system to build (their library call
+// forms V itself), so they start at solve_system.
+enum class FitStage {
+  build_system,  // 1. the normal equations V^T V b = V^T y (on t = (x - c) / s for normal-scaled)
+  solve_system,  // 2. solve them by GEPP or Gauss-Seidel (gsl, eigen-qr: the least-squares problem)
+  finish_fit,    // 3. map the coefficients back to powers of x; residuals, R^2 and warnings
+};
+
+// What one step did: sent to an observer, if one is attached.
+struct FitRecord {
+  FitStage stage;
+};
+
+class PolynomialFitter {
+ public:
+  using Observer = StepObserver<PolynomialFitter, FitRecord>;
+
+  void set_observer(Observer* observer) { observer_ = observer; }
+
+  // Copies the data. Throws std::invalid_argument for: a negative degree, degree >= number of
+  // points, x and y of different lengths, or a NaN or infinity in x or y.
+  void start(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const FitOptions& options);
+  // Performs the next stage (FitStage). Returns false once the fit is complete.
+  bool step();
+  // start(), step() until done, result().
+  PolynomialFit solve(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const FitOptions& options);
+  // The fit, complete once running() is false. A method that fails gives a status, not an exception.
+  const PolynomialFit& result() const { return fit_; }
+
+  // The contract (numlab/solver.hpp).
+  bool running() const { return running_; }
+  Status status() const { return status_; }
+  int iterations() const { return steps_; }  // stages done (the inner solve's count: result().iterations)
+  // The coefficients so far: after stage 2 those of the solved system (in powers of t for
+  // normal-scaled), after stage 3 those of the fit in powers of x (empty when the solve failed).
+  const Eigen::VectorXd& x() const { return coefficients_; }
+
+  FitStage next_stage() const { return next_; }
+  const NormalEquations& normal_equations() const { return system_; }  // set by stage 1
+
+ private:
+  void build_system();
+  void solve_system();
+  void finish_fit();
+
+  Observer* observer_ = nullptr;
+  FitOptions options_;
+  Eigen::VectorXd data_x_, data_y_;
+  AffineScaling scaling_;   // t = (x - c) / s (normal-scaled only)
+  NormalEquations system_;  // normal and normal-scaled only
+  Eigen::VectorXd coefficients_;
+  PolynomialFit fit_;
+  FitStage next_ = FitStage::finish_fit;
+  int steps_ = 0;
+  Status status_ = Status::running;
+  bool running_ = false;
+};
+
+// PolynomialFitter().solve(x, y, options): throws std::invalid_argument as its start() does.
 PolynomialFit fit_polynomial(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const FitOptions& options);
 
 // p(x) by Horner's rule, coefficients in increasing powers.

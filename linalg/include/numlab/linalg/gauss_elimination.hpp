@@ -2,31 +2,35 @@
 // Gaussian elimination with partial pivoting (GEPP): seed 001's gauss_elim, done properly.
 //
 // For each column k:
-//   1. pivot search  - find the row p >= k with the largest |a_pk|;
-//   2. row swap      - exchange rows k and p (of A and b);
-//   3. elimination   - for every row i below k: l_ik = a_ik / a_kk, row_i -= l_ik * row_k.
+//   1. find the pivot   - the row p >= k with the largest |a_pk|;
+//   2. swap             - if p != k, exchange rows k and p (of A and b);
+//   3. eliminate        - for every row i below k: l_ik = a_ik / a_kk, row_i -= l_ik * row_k.
 // Then:
-//   4. back substitution - x_i = (c_i - sum_{j>i} u_ij x_j) / u_ii, from the last unknown up,
-//                          column by column (each x_i is subtracted from the c_j above it at once),
-//                          multiplying by the 1/u_ii kept from step 3.
+//   4. back-substitute  - x_i = (c_i - sum_{j>i} u_ij x_j) / u_ii, from the last unknown up,
+//                         column by column (each x_i is subtracted from the c_j above it at once),
+//                         multiplying by the 1/u_ii kept from step 3.
 //
 // A pivot that is zero relative to the matrix's scale (|a_kk| <= tol * max|a_ij|, tol = n*eps by
 // default) ends the solve with Status::singular: there is never a division by a negligible pivot.
 // The growth factor max|u_ij| / max|a_ij| is reported; it bounds how much rounding error the
 // elimination can amplify (2^(n-1) at worst, reached by Wilkinson's matrix).
 //
-// One step() is one pivot column (steps 1-3) or one back-substituted unknown. Fixed sizes
-// (N = 2, 8, 10, ...) work on the stack with no heap allocation; N = Eigen::Dynamic allocates
-// in start(), never in step().
+// The stepper below is the textbook: one step() is one pivot column (steps 1-3) or one
+// back-substituted unknown, and an observer sees each. solve() and solve_prechecked() without an
+// observer run the same arithmetic as one loop (gauss_elimination_kernel.hpp), bit for bit the
+// same x. Fixed sizes (N = 2, 8, 10, ...) work on the stack with no heap allocation;
+// N = Eigen::Dynamic allocates in start(), never in step().
 
 #include <Eigen/Core>
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
+#include "numlab/linalg/gauss_elimination_kernel.hpp"
 #include "numlab/linalg/input_checks.hpp"
 #include "numlab/linalg/linear_result.hpp"
+#include "numlab/solver.hpp"
 
 namespace numlab::linalg {
 
@@ -40,16 +44,6 @@ struct EliminationRecord {
   int column;     // pivot column (swap, elimination) or the unknown just found (back substitution)
   int other_row;  // the row swapped with `column` (row_swap only)
   double value;   // the pivot used (row_swap, elimination) or the unknown's value (back substitution)
-};
-
-template <int N>
-class GaussElimination;
-
-template <int N>
-class GaussEliminationObserver {
- public:
-  virtual ~GaussEliminationObserver() = default;
-  virtual void on_step(const GaussElimination<N>& state, const EliminationRecord& record) = 0;
 };
 
 struct GaussEliminationOptions {
@@ -66,6 +60,7 @@ class GaussElimination {
   using VectorType = Vector<N>;
   // Row-major, so that the elimination's inner loop runs along contiguous memory.
   using WorkMatrix = Eigen::Matrix<double, N, N, (N == 1 ? Eigen::ColMajor : Eigen::RowMajor)>;
+  using Observer = StepObserver<GaussElimination<N>, EliminationRecord>;
 
   enum class Phase { elimination, back_substitution, done };
 
@@ -75,7 +70,8 @@ class GaussElimination {
     }
   }
 
-  void set_observer(GaussEliminationObserver<N>* observer) { observer_ = observer; }
+  // Receives every step (a swap and an elimination per column, then each unknown); null: none.
+  void set_observer(Observer* observer) { observer_ = observer; }
 
   // Copies A and b, for stepping; throws std::invalid_argument on bad input.
   void start(const MatrixType& A, const VectorType& b) {
@@ -91,14 +87,14 @@ class GaussElimination {
     } else if (phase_ == Phase::back_substitution) {
       back_substitute_next_unknown();
     }
-    return phase_ != Phase::done;
+    return running();
   }
 
-  // start(), step() until done, result(); without the copies of A and b that stepping keeps.
+  // The whole solve: step by step when an observer is attached, otherwise by the fast path (the
+  // same x, status, growth factor and pivot columns). No copies of A and b are kept.
   LinearResult<N> solve(const MatrixType& A, const VectorType& b) {
     load(A, b);
-    while (step()) {
-    }
+    run();
     return result_for(A, b);
   }
 
@@ -107,23 +103,25 @@ class GaussElimination {
   LinearResult<N> solve_prechecked(const MatrixType& A, const VectorType& b) {
     load_unchecked(A, b);
     diagnostics_ = false;
-    while (step()) {
-    }
+    run();
     return result_for(A, b);
   }
 
   // The result of a solve begun with start().
   LinearResult<N> result() const { return result_for(original_matrix_, original_rhs_); }
 
+  // The contract (numlab/solver.hpp).
+  bool running() const { return phase_ != Phase::done; }
+  Status status() const { return status_; }
+  int iterations() const { return column_; }  // pivot columns eliminated so far
+  // Entries next_unknown()+1 ... n-1 are known during back substitution; all of them once converged.
+  const VectorType& x() const { return x_; }
+
   // State between steps, for tracing and step-by-step labs.
   Phase phase() const { return phase_; }
-  Status status() const { return status_; }
   int size() const { return n_; }
-  int columns_eliminated() const { return column_; }
   const WorkMatrix& reduced_matrix() const { return reduced_; }
   const VectorType& reduced_rhs() const { return rhs_; }
-  // Entries next_unknown()+1 ... n-1 of solution() are known during back substitution.
-  const VectorType& solution() const { return x_; }
   int next_unknown() const { return next_unknown_; }
   double growth_factor() const { return growth_factor_; }
   double negligible_pivot() const { return negligible_pivot_; }
@@ -148,8 +146,23 @@ class GaussElimination {
     column_ = 0;
     next_unknown_ = n_ - 1;
     growth_factor_ = LinearResult<N>::not_applicable;
-    status_ = Status::converged;
+    status_ = Status::running;
     phase_ = Phase::elimination;
+  }
+
+  // Steps to the end, or (no observer to show the steps to) the fast path to the same end.
+  void run() {
+    if (observer_ != nullptr) {
+      while (step()) {
+      }
+      return;
+    }
+    const EliminationOutcome outcome = gepp_kernel<N>(reduced_, rhs_, inverse_pivots_, x_, negligible_pivot_,
+                                                      options_.pivoting == Pivoting::partial);
+    column_ = outcome.columns;
+    next_unknown_ = -1;
+    if (column_ == n_) record_growth_factor();
+    finish(outcome.status);
   }
 
   LinearResult<N> result_for(const MatrixType& A, const VectorType& b) const {
@@ -169,34 +182,27 @@ class GaussElimination {
 
   void eliminate_next_column() {
     const int k = column_;
-    const int n = dimension();
 
-    // 1. Pivot search: the largest |a_ik| on or below the diagonal (the first, on a tie).
-    int pivot_row = k;
+    // 1. Find the pivot: the row p >= k with the largest |a_pk| (the first one, on a tie).
+    int p = k;
     if (options_.pivoting == Pivoting::partial) {
       double largest = std::abs(reduced_(k, k));
-      for (int i = k + 1; i < n; ++i) {
-        const double candidate = std::abs(reduced_(i, k));
-        const bool larger = candidate > largest;  // selects without a branch to mispredict
-        largest = larger ? candidate : largest;
-        pivot_row = larger ? i : pivot_row;
+      for (int i = k + 1; i < n_; ++i) {
+        if (std::abs(reduced_(i, k)) > largest) {
+          largest = std::abs(reduced_(i, k));
+          p = i;
+        }
       }
     }
 
-    // 2. Row swap: bring the pivot to the diagonal. The pivot's row is found by comparing it with
-    //    each row index, not used as an index: the processor predicts a comparison and starts the
-    //    swap at once, where an index computed by the search would hold the swap until the search
-    //    is done (Newton's Jacobians pivot alike from one solve to the next; 8x8 Jansen solves took
-    //    20% less time). No `break` after the swap: with one, the compiler sees that the loop ends
-    //    at i == pivot_row and indexes by pivot_row again (measured: the full Jansen row 0.124 ->
-    //    0.146 ms per cycle).
-    for (int i = k + 1; i < n && pivot_row != k; ++i) {
-      if (i != pivot_row) continue;
-      reduced_.row(k).swap(reduced_.row(i));
-      std::swap(rhs_(k), rhs_(i));
-      notify({EliminationEvent::row_swap, k, i, reduced_(k, k)});
+    // 2. Swap rows k and p of A and b, bringing the pivot to the diagonal.
+    if (p != k) {
+      reduced_.row(k).swap(reduced_.row(p));
+      std::swap(rhs_(k), rhs_(p));
+      notify({EliminationEvent::row_swap, k, p, reduced_(k, k)});
     }
 
+    // A pivot that is not finite, or negligible beside max|a_ij|, ends the solve: no division by it.
     const double pivot = reduced_(k, k);
     if (!std::isfinite(pivot)) {
       finish(Status::non_finite);
@@ -207,31 +213,27 @@ class GaussElimination {
       return;
     }
 
-    // 3. Elimination: subtract l_ik * (row k) from each row i below, so that a_ik becomes 0.
+    // 3. Eliminate: row_i -= l_ik * row_k for each row i below, l_ik = a_ik / a_kk, so a_ik becomes 0.
     const double inverse_pivot = 1.0 / pivot;  // kept: back substitution multiplies by it
     inverse_pivots_(k) = inverse_pivot;
-    const double* pivot_row_entries = row_pointer(k);
-    for (int i = k + 1; i < n; ++i) {
-      double* row = row_pointer(i);
-      const double multiplier = row[k] * inverse_pivot;  // l_ik = a_ik / a_kk
-      row[k] = 0.0;
-      for (int j = k + 1; j < n; ++j) row[j] -= multiplier * pivot_row_entries[j];
+    for (int i = k + 1; i < n_; ++i) {
+      const double multiplier = reduced_(i, k) * inverse_pivot;
+      reduced_(i, k) = 0.0;
+      for (int j = k + 1; j < n_; ++j) reduced_(i, j) -= multiplier * reduced_(k, j);
       rhs_(i) -= multiplier * rhs_(k);
     }
     ++column_;
     notify({EliminationEvent::elimination, k, k, pivot});
 
-    if (column_ == n) {
-      // Every entry below the diagonal was set to exactly 0 when its column was eliminated, so
-      // max|u_ij| is the largest entry of the whole working matrix.
-      if (diagnostics_) growth_factor_ = reduced_.cwiseAbs().maxCoeff() / matrix_max_;
+    if (column_ == n_) {
+      record_growth_factor();
       phase_ = Phase::back_substitution;
     }
   }
 
   void back_substitute_next_unknown() {
-    // 4. Back substitution, column by column: x_i = c_i / u_ii, then c_j -= u_ji x_i for every
-    //    row j above, so that c_j holds c_j - sum_{l>j} u_jl x_l by the time x_j is needed.
+    // 4. Back-substitute, column by column: x_i = c_i / u_ii, then c_j -= u_ji x_i for every row j
+    //    above, so that c_j holds c_j - sum_{l>j} u_jl x_l by the time x_j is needed.
     const int i = next_unknown_;
     x_(i) = rhs_(i) * inverse_pivots_(i);
     for (int j = 0; j < i; ++j) rhs_(j) -= reduced_(j, i) * x_(i);
@@ -245,12 +247,11 @@ class GaussElimination {
     }
   }
 
-  // The size n: a compile-time constant for fixed sizes, so their loops have known bounds.
-  int dimension() const { return N == Eigen::Dynamic ? n_ : N; }
-
-  // Row i of the working matrix as plain memory (row-major, so its entries are contiguous).
-  double* row_pointer(int i) { return reduced_.data() + static_cast<Eigen::Index>(i) * dimension(); }
-  const double* row_pointer(int i) const { return reduced_.data() + static_cast<Eigen::Index>(i) * dimension(); }
+  // max|u_ij| / max|a_ij|: every entry below the diagonal was set to exactly 0 when its column was
+  // eliminated, so max|u_ij| is the largest entry of the whole working matrix.
+  void record_growth_factor() {
+    if (diagnostics_) growth_factor_ = reduced_.cwiseAbs().maxCoeff() / matrix_max_;
+  }
 
   void finish(Status status) {
     status_ = status;
@@ -262,7 +263,7 @@ class GaussElimination {
   }
 
   GaussEliminationOptions options_;
-  GaussEliminationObserver<N>* observer_ = nullptr;
+  Observer* observer_ = nullptr;
   int n_ = 0;
   MatrixType original_matrix_ = zero_or_empty<MatrixType>();  // kept by start() for result()
   VectorType original_rhs_ = zero_or_empty<VectorType>();
@@ -276,7 +277,7 @@ class GaussElimination {
   int next_unknown_ = -1;
   double growth_factor_ = LinearResult<N>::not_applicable;
   bool diagnostics_ = true;  // growth factor and residual wanted (not by solve_prechecked)
-  Status status_ = Status::converged;
+  Status status_ = Status::running;
   Phase phase_ = Phase::done;
 };
 

@@ -27,6 +27,7 @@
 
 #include "numlab/linalg/input_checks.hpp"
 #include "numlab/linalg/linear_result.hpp"
+#include "numlab/solver.hpp"
 
 namespace numlab::linalg {
 
@@ -35,16 +36,6 @@ struct SweepRecord {
   int sweep;
   double step_norm;      // ||x_k - x_{k-1}||_inf
   double residual_norm;  // ||b - A x_k||_inf of the original system
-};
-
-template <int N>
-class GaussSeidel;
-
-template <int N>
-class GaussSeidelObserver {
- public:
-  virtual ~GaussSeidelObserver() = default;
-  virtual void on_sweep(const GaussSeidel<N>& state, const SweepRecord& record) = 0;
 };
 
 struct GaussSeidelOptions {
@@ -62,6 +53,7 @@ class GaussSeidel {
   using VectorType = Vector<N>;
   // Row-major: a sweep reads M row by row.
   using WorkMatrix = Eigen::Matrix<double, N, N, (N == 1 ? Eigen::ColMajor : Eigen::RowMajor)>;
+  using Observer = StepObserver<GaussSeidel<N>, SweepRecord>;
 
   explicit GaussSeidel(GaussSeidelOptions options = {}) : options_(options) {
     require_non_negative(options_.tolerance, "tolerance");
@@ -73,7 +65,8 @@ class GaussSeidel {
     }
   }
 
-  void set_observer(GaussSeidelObserver<N>* observer) { observer_ = observer; }
+  // Receives a record after every sweep; null: none.
+  void set_observer(Observer* observer) { observer_ = observer; }
 
   void start(const MatrixType& A, const VectorType& b) { start(A, b, VectorType::Zero(A.rows())); }
 
@@ -99,7 +92,7 @@ class GaussSeidel {
     sweep_ = 0;
     step_norm_ = LinearResult<N>::not_applicable;
     first_step_norm_ = 0.0;
-    status_ = Status::converged;
+    status_ = Status::running;
     running_ = true;
     if ((swept_matrix_.diagonal().array() == 0.0).any()) finish(Status::singular);
   }
@@ -121,7 +114,7 @@ class GaussSeidel {
     }
     if (sweep_ == 1) first_step_norm_ = step_norm_;
 
-    if (observer_ != nullptr) observer_->on_sweep(*this, {sweep_, step_norm_, residual_norm()});
+    if (observer_ != nullptr) observer_->on_step(*this, {sweep_, step_norm_, residual_norm()});
 
     // Stop tests, in order of precedence.
     if (!x_.allFinite() || !std::isfinite(step_norm_)) {
@@ -156,11 +149,13 @@ class GaussSeidel {
     return result;
   }
 
-  // State between sweeps.
+  // The contract (numlab/solver.hpp).
   bool running() const { return running_; }
   Status status() const { return status_; }
-  int sweeps() const { return sweep_; }
+  int iterations() const { return sweep_; }  // sweeps so far
   const VectorType& x() const { return x_; }
+
+  // State between sweeps.
   double step_norm() const { return step_norm_; }
   double residual_norm() const { return residual_inf_norm(original_matrix_, original_rhs_, x_); }
   const WorkMatrix& swept_matrix() const { return swept_matrix_; }
@@ -179,7 +174,7 @@ class GaussSeidel {
   }
 
   GaussSeidelOptions options_;
-  GaussSeidelObserver<N>* observer_ = nullptr;
+  Observer* observer_ = nullptr;
   int n_ = 0;
   MatrixType original_matrix_ = zero_or_empty<MatrixType>();
   VectorType original_rhs_ = zero_or_empty<VectorType>();
@@ -189,7 +184,7 @@ class GaussSeidel {
   int sweep_ = 0;
   double step_norm_ = LinearResult<N>::not_applicable;
   double first_step_norm_ = 0.0;
-  Status status_ = Status::converged;
+  Status status_ = Status::running;
   bool running_ = false;
 };
 

@@ -9,48 +9,55 @@
 // precision and the result is Status::singular. The same ratio gives kappa_2 exactly.
 // A is first scaled by a power of two (exact) so that a d and b c cannot overflow or underflow,
 // when its entries are large or small enough for that to be possible.
+//
+// The formula is written once, in detail::closed_form(); inverse2x2(), solve2x2(), the stepper
+// ClosedForm2x2 and Newton's inner solve ClosedForm2x2::solve_prechecked() all use it.
 
 #include <Eigen/Core>
 #include <cmath>
 #include <limits>
 
 #include "numlab/linalg/linear_result.hpp"
+#include "numlab/solver.hpp"
 
 namespace numlab::linalg {
 
 namespace detail {
 
-// What every use of the closed form needs: A scaled by a power of two, its determinant and the
-// singular test. The scaling keeps a d and b c from overflowing or underflowing; it is exact,
-// and when max|a_ij| lies within 2^-200 ... 2^200 neither can happen (an underflowed product
-// would be below 2^-600 of any determinant that passes the test), so it is skipped there.
-struct ScaledClosedForm {
-  Eigen::Matrix2d scaled = Eigen::Matrix2d::Zero();  // A / 2^exponent
-  int exponent = 0;
-  double determinant = 0.0;   // det of the scaled matrix
-  double frobenius_squared = 0.0;
-  bool singular = true;       // |det| <= eps ||A||_F^2 (kappa_2 >= 1/eps), or A = 0
-};
-
-inline ScaledClosedForm scaled_closed_form(const Eigen::Matrix2d& A) {
-  ScaledClosedForm form;
-  const double largest = A.cwiseAbs().maxCoeff();
-  if (largest == 0.0) return form;
-  if (largest < 0x1p-200 || largest > 0x1p200) std::frexp(largest, &form.exponent);
-  form.scaled = form.exponent == 0 ? A : Eigen::Matrix2d(A * std::ldexp(1.0, -form.exponent));
-  const double a = form.scaled(0, 0), b = form.scaled(0, 1), c = form.scaled(1, 0), d = form.scaled(1, 1);
-  form.determinant = a * d - b * c;
-  form.frobenius_squared = form.scaled.squaredNorm();
-  form.singular = std::abs(form.determinant) <= std::numeric_limits<double>::epsilon() * form.frobenius_squared;
-  return form;
+// max|a_ij|^2 <= ||A||_F^2 <= 4 max|a_ij|^2, so this range keeps max|a_ij| within 2^-200 ... 2^200:
+// there a d and b c cannot overflow, and a product that underflows is below 2^-600 of any
+// determinant that passes the singular test. Outside it, A is scaled by a power of two first.
+constexpr bool needs_no_scaling(double frobenius_squared) {
+  return frobenius_squared >= 0x1p-398 && frobenius_squared <= 0x1p400;
 }
 
-// A^-1 = (1/det) [d -b; -c a], with the scaling undone.
-inline Eigen::Matrix2d inverse_of(const ScaledClosedForm& form) {
-  Eigen::Matrix2d inverse;
-  inverse << form.scaled(1, 1), -form.scaled(0, 1), -form.scaled(1, 0), form.scaled(0, 0);
-  const double inverse_determinant = 1.0 / form.determinant;
-  return inverse * (form.exponent == 0 ? inverse_determinant : std::ldexp(inverse_determinant, -form.exponent));
+// The closed form of A / 2^exponent = [a b; c d] (exponent 0 unless A needs scaling).
+struct ClosedForm {
+  double a = 0.0, b = 0.0, c = 0.0, d = 0.0;
+  int exponent = 0;
+  double frobenius_squared = 0.0;  // a^2 + b^2 + c^2 + d^2
+  double determinant = 0.0;        // a d - b c
+  bool singular = true;            // |det| <= eps ||.||_F^2, that is kappa_2 >= 1/eps (or A = 0)
+
+  // A^-1 = inverse_scale() * adjugate(): 1/det, with the scaling undone.
+  double inverse_scale() const { return exponent == 0 ? 1.0 / determinant : std::ldexp(1.0 / determinant, -exponent); }
+  Eigen::Matrix2d adjugate() const { return (Eigen::Matrix2d() << d, -b, -c, a).finished(); }
+};
+
+inline double frobenius_squared(double a, double b, double c, double d) { return (a * a + b * b) + (c * c + d * d); }
+
+// A scaled by 2^-exponent, with 2^exponent just above max|a_ij| (the rare case: out of line).
+ClosedForm scaled_by_power_of_two(const Eigen::Matrix2d& A);
+
+// det = a d - b c and the singular test |det| <= eps ||A||_F^2, on A scaled when it must be.
+inline ClosedForm closed_form(const Eigen::Matrix2d& A) {
+  ClosedForm form;
+  form.a = A(0, 0), form.b = A(0, 1), form.c = A(1, 0), form.d = A(1, 1);
+  form.frobenius_squared = frobenius_squared(form.a, form.b, form.c, form.d);
+  if (!needs_no_scaling(form.frobenius_squared)) form = scaled_by_power_of_two(A);
+  form.determinant = form.a * form.d - form.b * form.c;
+  form.singular = std::abs(form.determinant) <= std::numeric_limits<double>::epsilon() * form.frobenius_squared;
+  return form;
 }
 
 }  // namespace detail
@@ -68,40 +75,63 @@ Inverse2x2 inverse2x2(const Eigen::Matrix2d& A);
 // x = A^-1 b by the closed form. Throws std::invalid_argument on non-finite input.
 LinearResult<2> solve2x2(const Eigen::Matrix2d& A, const Eigen::Vector2d& b);
 
-// The closed form with the solver interface shared by every linear method.
+// What the closed form's one step found: sent to an observer, if one is attached.
+struct ClosedFormRecord {
+  double determinant;       // det A
+  double condition_number;  // kappa_2(A)
+};
+
+// The closed form as a stepper (numlab/solver.hpp) with the interface every linear method shares.
+// Its one step is the whole solve: x = A^-1 b, as solve2x2.
 class ClosedForm2x2 {
  public:
-  LinearResult<2> solve(const Eigen::Matrix2d& A, const Eigen::Vector2d& b) const { return solve2x2(A, b); }
+  using Observer = StepObserver<ClosedForm2x2, ClosedFormRecord>;
+
+  void set_observer(Observer* observer) { observer_ = observer; }
+
+  // Loads A x = b; throws std::invalid_argument on non-finite input.
+  void start(const Eigen::Matrix2d& A, const Eigen::Vector2d& b);
+  // The one step: A^-1 by the closed form, then x = A^-1 b. Returns false: the solve is over.
+  bool step();
+  LinearResult<2> solve(const Eigen::Matrix2d& A, const Eigen::Vector2d& b) {
+    start(A, b);
+    step();
+    return result();
+  }
+  LinearResult<2> result() const;
+
+  bool running() const { return running_; }
+  Status status() const { return status_; }
+  int iterations() const { return iterations_; }  // 0 until the step, then 1
+  const Eigen::Vector2d& x() const { return x_; }
+
   // For a caller that has already checked A and b are finite (Newton's inner solve): the same
-  // x and singular test, without the input screens, kappa or the residual (not applicable).
+  // closed form and singular test, without the input screens, kappa or the residual (not
+  // computed), as x = (1/det) ([d -b; -c a] b).
   LinearResult<2> solve_prechecked(const Eigen::Matrix2d& A, const Eigen::Vector2d& b) const {
     LinearResult<2> result;
     result.iterations = 1;
-    const double a11 = A(0, 0), a12 = A(0, 1), a21 = A(1, 0), a22 = A(1, 1);
-    const double frobenius_squared = a11 * a11 + a12 * a12 + a21 * a21 + a22 * a22;
-    // 2^-398 <= ||A||_F^2 <= 2^400 puts max|a_ij| within 2^-200 ... 2^200 (||A||_F^2 <= 4 max^2).
-    if (frobenius_squared >= 0x1p-398 && frobenius_squared <= 0x1p400) {
-      // The usual case: no scaling needed (see detail::scaled_closed_form), so the formulas directly.
-      const double determinant = a11 * a22 - a12 * a21;
-      if (std::abs(determinant) <= std::numeric_limits<double>::epsilon() * frobenius_squared) {
-        result.status = Status::singular;
-        result.x.setConstant(std::numeric_limits<double>::quiet_NaN());
-        return result;
-      }
-      const double inverse_determinant = 1.0 / determinant;
-      result.x << inverse_determinant * (a22 * b(0) - a12 * b(1)), inverse_determinant * (a11 * b(1) - a21 * b(0));
-    } else {
-      const detail::ScaledClosedForm form = detail::scaled_closed_form(A);
-      if (form.singular) {
-        result.status = Status::singular;
-        result.x.setConstant(std::numeric_limits<double>::quiet_NaN());
-        return result;
-      }
-      result.x = detail::inverse_of(form) * b;
+    const detail::ClosedForm form = detail::closed_form(A);
+    if (form.singular) {
+      result.status = Status::singular;
+      result.x.setConstant(std::numeric_limits<double>::quiet_NaN());
+      return result;
     }
+    const double scale = form.inverse_scale();
+    result.x << scale * (form.d * b(0) - form.b * b(1)), scale * (form.a * b(1) - form.c * b(0));
     if (!std::isfinite(result.x(0)) || !std::isfinite(result.x(1))) result.status = Status::non_finite;
     return result;
   }
+
+ private:
+  Observer* observer_ = nullptr;
+  Eigen::Matrix2d A_ = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d b_ = Eigen::Vector2d::Zero();
+  Eigen::Vector2d x_ = Eigen::Vector2d::Zero();
+  double residual_norm_ = LinearResult<2>::not_applicable;
+  Status status_ = Status::running;
+  bool running_ = false;
+  int iterations_ = 0;
 };
 
 }  // namespace numlab::linalg

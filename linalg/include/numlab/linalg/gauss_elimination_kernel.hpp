@@ -1,0 +1,79 @@
+#pragma once
+// The fast path of GaussElimination::solve() and solve_prechecked(): the GEPP of
+// gauss_elimination.hpp as one loop, with no observer and no stepping state. It performs the same
+// operations in the same order (the multiplier a_ik * (1/pivot), the same row updates, back
+// substitution column by column times the kept 1/pivot), so x, the status and the pivot columns
+// are bit for bit those of the textbook stepper: tests/linalg/test_gepp_paths.cpp and
+// tests/mechanisms/test_gepp_paths.cpp check it. A student reads gauss_elimination.hpp, not this.
+
+#include <Eigen/Core>
+#include <cmath>
+#include <utility>
+
+#include "numlab/status.hpp"
+
+namespace numlab::linalg {
+
+// How the fast path ended: the verdict and the pivot columns eliminated.
+struct EliminationOutcome {
+  Status status;
+  int columns;
+};
+
+// Solves the system held in U (row-major, n x n) and c in place: U becomes upper triangular,
+// inverse_pivots[k] = 1/u_kk, and x the solution. A pivot with |u_kk| <= negligible_pivot stops
+// it with Status::singular, a non-finite pivot or unknown with Status::non_finite.
+template <int N, typename WorkMatrix, typename VectorType>
+EliminationOutcome gepp_kernel(WorkMatrix& U, VectorType& c, VectorType& inverse_pivots, VectorType& x,
+                               double negligible_pivot, bool partial_pivoting) {
+  const int n = N == Eigen::Dynamic ? static_cast<int>(U.rows()) : N;
+  double* const rows = U.data();
+  const auto row = [rows, n](int i) { return rows + static_cast<Eigen::Index>(i) * n; };
+
+  for (int k = 0; k < n; ++k) {
+    int pivot_row = k;
+    if (partial_pivoting) {
+      // Differs from the textbook: a select, not a branch, so there is no branch to mispredict.
+      double largest = std::abs(row(k)[k]);
+      for (int i = k + 1; i < n; ++i) {
+        const double candidate = std::abs(row(i)[k]);
+        const bool larger = candidate > largest;
+        largest = larger ? candidate : largest;
+        pivot_row = larger ? i : pivot_row;
+      }
+    }
+
+    // Differs from the textbook: the pivot row is found by comparing it with each row index, never
+    // used as an index, so the swap need not wait for the search (and no `break` after it, which
+    // would let the compiler index by pivot_row again).
+    for (int i = k + 1; i < n && pivot_row != k; ++i) {
+      if (i != pivot_row) continue;
+      U.row(k).swap(U.row(i));
+      std::swap(c(k), c(i));
+    }
+
+    const double pivot = row(k)[k];
+    if (!std::isfinite(pivot)) return {Status::non_finite, k};
+    if (std::abs(pivot) <= negligible_pivot) return {Status::singular, k};
+
+    const double inverse_pivot = 1.0 / pivot;
+    inverse_pivots(k) = inverse_pivot;
+    const double* pivot_entries = row(k);
+    for (int i = k + 1; i < n; ++i) {
+      double* entries = row(i);
+      const double multiplier = entries[k] * inverse_pivot;
+      entries[k] = 0.0;
+      for (int j = k + 1; j < n; ++j) entries[j] -= multiplier * pivot_entries[j];
+      c(i) -= multiplier * c(k);
+    }
+  }
+
+  for (int i = n - 1; i >= 0; --i) {
+    x(i) = c(i) * inverse_pivots(i);
+    for (int j = 0; j < i; ++j) c(j) -= row(j)[i] * x(i);
+    if (!std::isfinite(x(i))) return {Status::non_finite, n};
+  }
+  return {Status::converged, n};
+}
+
+}  // namespace numlab::linalg
