@@ -14,10 +14,11 @@ namespace numlab::cli {
 
 namespace {
 
-std::string gsl_termination(const nonlinear::GslMultirootResult& result, const nonlinear::NewtonOptions& options) {
+std::string gsl_termination(const nonlinear::NewtonResult<Eigen::Dynamic>& result,
+                            const nonlinear::NewtonOptions& options) {
   std::string word(to_string(result.status));
   std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::toupper(c); });
-  std::string reason = result.gsl_message.empty() ? "" : "GSL: " + result.gsl_message + "; ";
+  std::string reason = result.message.empty() ? "" : "GSL: " + std::string(result.message) + "; ";
   if (result.status == Status::max_iterations) reason += fmt::format("limit {}; ", options.max_iterations);
   return fmt::format("Termination: {} ({}||f||_inf = {:.3g}, last ||dx||_inf = {:.3g}, after {} iterations)", word,
                      reason, result.residual_norm, result.step_norm, result.iterations);
@@ -36,9 +37,9 @@ const std::vector<std::string>& nonlinear_method_names() {
 
 NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::DynamicSystem& system,
                                   const Eigen::VectorXd& x0, const NonlinearSettings& settings,
-                                  nonlinear::NewtonObserver<Eigen::Dynamic>* observer) {
-  // Newton's and GSL's results share their fields; only the termination line is written differently.
-  auto run_of = [](const auto& result, std::string termination) {
+                                  NewtonTraceObserver* observer) {
+  // Newton and GSL give the same result type; only the termination line is written differently.
+  auto run_of = [](const nonlinear::NewtonResult<Eigen::Dynamic>& result, std::string termination) {
     return NonlinearRun{result.x,          result.status,
                         result.iterations, result.residual_norm,
                         result.step_norm,  result.function_evaluations,
@@ -46,14 +47,15 @@ NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::Dy
   };
   if (method == "newton") {
     const nonlinear::DynamicReference reference{system};
-    nonlinear::Newton<nonlinear::DynamicReference, nonlinear::RuntimeLinearStep> newton(
-        reference, settings.options, nonlinear::RuntimeLinearStep(settings.linear, system.dimension()));
+    DynamicNewton newton(reference, settings.options, nonlinear::RuntimeLinearStep(settings.linear, system.dimension()));
     newton.set_observer(observer);
     const auto result = newton.solve(x0);
     return run_of(result, nonlinear::termination_line(result, settings.options));
   }
   if (method.starts_with("gsl-")) {
-    const auto result = nonlinear::gsl_multiroot_solve(system, x0, method.substr(4), settings.options, observer);
+    nonlinear::GslMultiroot gsl(system, method.substr(4), settings.options);
+    gsl.set_observer(observer);
+    const auto result = gsl.solve(x0);
     return run_of(result, gsl_termination(result, settings.options));
   }
   throw std::invalid_argument("unknown nonlinear method '" + method + "'");

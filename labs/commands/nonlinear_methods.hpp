@@ -7,8 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/newton.hpp"
 #include "numlab/nonlinear/system.hpp"
+#include "output/trace_printers.hpp"
 
 namespace numlab::cli {
 
@@ -17,23 +19,23 @@ const std::vector<std::string>& nonlinear_method_names();
 
 struct NonlinearSettings {
   nonlinear::NewtonOptions options;
-  std::string linear = "gepp";  // newton's inner solver
+  nonlinear::LinearMethod linear = nonlinear::LinearMethod::gepp;  // newton's inner solver
 };
 
 struct NonlinearRun {
   Eigen::VectorXd x;
   Status status = Status::max_iterations;
   int iterations = 0;
-  double residual_inf = 0.0;
-  double step_inf = 0.0;
+  double residual_norm = 0.0;  // ||f||_inf
+  double step_norm = 0.0;      // ||dx||_inf of the last step
   int function_evaluations = 0;
   int jacobian_evaluations = 0;
   std::string termination;  // the closing "Termination: ..." line
 };
 
-// Throws std::invalid_argument for an unknown method or linear solver, or a bad start.
+// Throws std::invalid_argument for an unknown method, a linear solver that does not fit, or a bad start.
 NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::DynamicSystem& system,
                                   const Eigen::VectorXd& x0, const NonlinearSettings& settings,
-                                  nonlinear::NewtonObserver<Eigen::Dynamic>* observer = nullptr);
+                                  NewtonTraceObserver* observer = nullptr);
 
 }  // namespace numlab::cli

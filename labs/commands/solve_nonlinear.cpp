@@ -55,12 +55,13 @@ SolveNonlinearCommand::SolveNonlinearCommand(CLI::App& solve) {
 }
 
 int SolveNonlinearCommand::run() const {
+  if (damped_ && method_ != "newton") throw std::invalid_argument("--damped applies to --method newton only");
   const nonlinear::TestProblem problem = nonlinear::make_test_problem(problem_);
   const int n = problem.system->dimension();
   const Eigen::VectorXd x0 = x0_.empty() ? problem.standard_start : parse_point(x0_, n, "--x0");
 
   NonlinearSettings settings;
-  settings.linear = linear_;
+  settings.linear = nonlinear::linear_method_named(linear_);
   settings.options.damped = damped_;
   if (common_.tolerance) settings.options.residual_tolerance = *common_.tolerance;
   if (common_.max_iterations) settings.options.max_iterations = *common_.max_iterations;
@@ -81,7 +82,7 @@ int SolveNonlinearCommand::run() const {
                                   {"x", nlohmann::ordered_json::array()},
                                   {"status", std::string(to_string(run.status))},
                                   {"iterations", run.iterations},
-                                  {"residual_inf", number_or_null(run.residual_inf)},
+                                  {"residual_inf", number_or_null(run.residual_norm)},
                                   {"function_evaluations", run.function_evaluations},
                                   {"jacobian_evaluations", run.jacobian_evaluations},
                                   {"time_s", time_s}};
@@ -90,7 +91,7 @@ int SolveNonlinearCommand::run() const {
       out["linear"] = linear_;
       out["damped"] = damped_;
     }
-    out["step_inf"] = number_or_null(run.step_inf);
+    out["step_inf"] = number_or_null(run.step_norm);
     if (problem.known_root) out["distance_to_root"] = number_or_null(distance);
     out["termination"] = run.termination;
     if (common_.trace) out["trace"] = tracer.records();
@@ -100,7 +101,7 @@ int SolveNonlinearCommand::run() const {
     for (int i = 0; i < n; ++i) std::cout << ",x" << i + 1;
     std::cout << '\n'
               << fmt::format("{},{},{},{},{:.6g},{},{},{:.6g}", problem_, method_, to_string(run.status),
-                             run.iterations, run.residual_inf, run.function_evaluations, run.jacobian_evaluations,
+                             run.iterations, run.residual_norm, run.function_evaluations, run.jacobian_evaluations,
                              time_s);
     for (double value : run.x) std::cout << fmt::format(",{:.17g}", value);
     std::cout << '\n';
@@ -113,7 +114,7 @@ int SolveNonlinearCommand::run() const {
               << fmt::format("status             {}\n", to_string(run.status))
               << fmt::format("x                  {}\n", x_text)
               << fmt::format("iterations         {}\n", run.iterations)
-              << fmt::format("||f||_inf          {:.3g}\n", run.residual_inf);
+              << fmt::format("||f||_inf          {:.3g}\n", run.residual_norm);
     if (problem.known_root) std::cout << fmt::format("distance to root   {:.3g}   (||x - x*||_inf)\n", distance);
     std::cout << fmt::format("evaluations        {} of f, {} of J\n", run.function_evaluations,
                              run.jacobian_evaluations)

@@ -103,7 +103,7 @@ void show_comparison(LabSession& session) {
           [&] { run_nonlinear_method(choice.method, *problem.system, problem.standard_start, settings); },
           {3, 200, 0.01});
       table.add_row({choice.label, std::string(to_string(run.status)), std::to_string(run.iterations),
-                     scientific(run.residual_inf), distance_text(problem, run.x), std::to_string(run.function_evaluations),
+                     scientific(run.residual_norm), distance_text(problem, run.x), std::to_string(run.function_evaluations),
                      std::to_string(run.jacobian_evaluations), fmt::format("{:.3g} s", seconds)});
     }
     session.out() << "  " << problem.description << "\n";
@@ -118,9 +118,9 @@ std::string point_text(const Eigen::VectorXd& x) {
 }
 
 // Records every iteration, for the rate and the inner sweep counts.
-struct Recorder : nonlinear::NewtonObserver<Eigen::Dynamic> {
+struct Recorder : NewtonTraceObserver {
   std::vector<nonlinear::NewtonRecord> records;
-  void on_iteration(const nonlinear::NewtonRecord& record) override { records.push_back(record); }
+  void on_record(const nonlinear::NewtonRecord& record, int) override { records.push_back(record); }
 };
 
 void show_failures(LabSession& session) {
@@ -137,8 +137,8 @@ void show_failures(LabSession& session) {
       "Powell singular: J is singular at the root, so Newton loses its quadratic rate. It needs {} iterations; "
       "over the last five, ||f|| shrinks by a factor {:.3f} per iteration (the error halves, its square "
       "quarters). It stops at ||f||_inf = {:.2g} but {:.2g} from the root: about sqrt(||f||), not ||f||.",
-      singular.iterations, std::pow(r.back().residual_inf / r[r.size() - 6].residual_inf, 1.0 / 5.0),
-      singular.residual_inf, singular.x.lpNorm<Eigen::Infinity>()));
+      singular.iterations, std::pow(r.back().residual_norm / r[r.size() - 6].residual_norm, 1.0 / 5.0),
+      singular.residual_norm, singular.x.lpNorm<Eigen::Infinity>()));
 
   // Freudenstein-Roth: damping can make things worse.
   const nonlinear::TestProblem roth = nonlinear::make_test_problem("freudenstein-roth");
@@ -154,7 +154,7 @@ void show_failures(LabSession& session) {
       "the line and stalls at {} with det J = {:.2g}: {}. GSL's hybridsj stops at the local minimum {}, "
       "||f||_inf = {:.3g}: {}.",
       plain.iterations, to_string(plain.status), point_text(damped.x), J.determinant(), to_string(damped.status),
-      point_text(hybrid.x), hybrid.residual_inf, to_string(hybrid.status)));
+      point_text(hybrid.x), hybrid.residual_norm, to_string(hybrid.status)));
 
   // Arctangent: the failure damping was made for.
   const nonlinear::TestProblem arctangent = nonlinear::make_test_problem("arctangent");
@@ -177,7 +177,7 @@ void show_failures(LabSession& session) {
       "Wood: the system is (half) the gradient of Wood's function, and every method converges from "
       "(-3, -1, -3, -1) to {}, {} from (1, 1, 1, 1): a genuine root of the system (||f||_inf = {:.2g}) but a "
       "saddle point of the function, not its minimum. Converged is not the same as right.",
-      point_text(saddle.x), scientific((saddle.x - *wood.known_root).lpNorm<Eigen::Infinity>()), saddle.residual_inf));
+      point_text(saddle.x), scientific((saddle.x - *wood.known_root).lpNorm<Eigen::Infinity>()), saddle.residual_norm));
 }
 
 void show_linear_solvers(LabSession& session) {
@@ -188,7 +188,7 @@ void show_linear_solvers(LabSession& session) {
   Table table({"--linear", "status", "iterations", "inner sweeps", "||f||_inf", "time"});
   for (const std::string linear : {"gepp", "gauss-seidel", "gsl-lu", "eigen-lu"}) {
     NonlinearSettings settings = lab_settings(false);
-    settings.linear = linear;
+    settings.linear = nonlinear::linear_method_named(linear);
     Recorder recorder;
     const NonlinearRun run = run_nonlinear_method("newton", *problem.system, problem.standard_start, settings, &recorder);
     int sweeps = 0;
@@ -196,7 +196,7 @@ void show_linear_solvers(LabSession& session) {
     const double seconds = median_time(
         [&] { run_nonlinear_method("newton", *problem.system, problem.standard_start, settings); }, {3, 200, 0.01});
     table.add_row({linear, std::string(to_string(run.status)), std::to_string(run.iterations),
-                   linear == "gauss-seidel" ? std::to_string(sweeps) : "-", scientific(run.residual_inf),
+                   linear == "gauss-seidel" ? std::to_string(sweeps) : "-", scientific(run.residual_norm),
                    fmt::format("{:.3g} s", seconds)});
   }
   session.show(table, "linear-solvers");
@@ -234,7 +234,8 @@ void show_sequential(LabSession& session) {
   nonlinear::NewtonOptions options;
   options.residual_tolerance = 1e-12;
   const auto full = nonlinear::newton_solve(closure, JansenClosure::seed_estimates(), options);
-  const auto sequential = nonlinear::sequential_newton(dynamic, blocks, start, options, "inverse2x2");
+  const auto sequential =
+      nonlinear::sequential_newton(dynamic, blocks, start, {options, nonlinear::LinearMethod::inverse2x2});
   std::string per_block;
   for (std::size_t b = 0; b < sequential.blocks.size(); ++b) {
     per_block += fmt::format("{}{}", b == 0 ? "" : (b + 1 == sequential.blocks.size() ? " and " : ", "),

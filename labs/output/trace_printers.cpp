@@ -82,13 +82,16 @@ void SweepTracer::on_step(const linalg::GaussSeidel<Eigen::Dynamic>&, const lina
   pause_if_stepping(step_);
 }
 
-void NewtonTracer::on_iteration(const nonlinear::NewtonRecord& record) {
+void NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
   const bool has_linear_solve = record.linear_iterations != nonlinear::NewtonRecord::no_linear_solve;
+  const bool sequential = block >= 0;
   if (text_out_ == nullptr) {
-    nlohmann::ordered_json entry = {{"iteration", record.iteration},
-                                    {"residual_inf", record.residual_inf},
-                                    {"residual_2", record.residual_2},
-                                    {"step_inf", record.step_inf}};
+    nlohmann::ordered_json entry = nlohmann::ordered_json::object();
+    if (sequential) entry["block"] = block + 1;
+    entry["iteration"] = record.iteration;
+    entry["residual_inf"] = record.residual_norm;
+    entry["residual_2"] = record.residual_2norm;
+    entry["step_inf"] = record.step_norm;
     if (has_linear_solve) {
       entry["linear_status"] = std::string(to_string(record.linear_status));
       entry["linear_iterations"] = record.linear_iterations;
@@ -99,12 +102,14 @@ void NewtonTracer::on_iteration(const nonlinear::NewtonRecord& record) {
     return;
   }
   if (!header_printed_) {
+    if (sequential) *text_out_ << fmt::format("  {:>5}", "block");
     *text_out_ << fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>9}  {:>7}  {:>10}\n", "k", "||f||_inf",
                               "||f||_2", "||dx||_inf", "linear solve", "inner its", "lambda", "time (s)");
     header_printed_ = true;
   }
+  if (sequential) *text_out_ << fmt::format("  {:>5}", block + 1);
   *text_out_ << fmt::format("  {:>4}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>14}  {:>9}  {:>7.4g}  {:>10.3e}\n",
-                            record.iteration, record.residual_inf, record.residual_2, record.step_inf,
+                            record.iteration, record.residual_norm, record.residual_2norm, record.step_norm,
                             has_linear_solve ? std::string(to_string(record.linear_status)) : "-",
                             has_linear_solve ? std::to_string(record.linear_iterations) : "-", record.damping,
                             record.elapsed_s);

@@ -7,7 +7,11 @@
 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
+#include "numlab/nonlinear/dynamic_adapter.hpp"
+#include "numlab/nonlinear/gsl_multiroot.hpp"
+#include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/newton.hpp"
+#include "numlab/nonlinear/sequential_newton.hpp"
 
 namespace numlab::cli {
 
@@ -43,13 +47,31 @@ class SweepTracer : public linalg::GaussSeidel<Eigen::Dynamic>::Observer, public
   void on_step(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) override;
 };
 
+// Newton on a DynamicSystem with its linear method chosen at run time (solve nonlinear --method newton).
+using DynamicNewton = nonlinear::Newton<nonlinear::DynamicReference, nonlinear::RuntimeLinearStep>;
+
+// Every stepper that sends NewtonRecords, behind one interface: Newton, GSL's multiroot adapter and
+// sequential Newton. Whoever prints or keeps the records implements on_record() once; `block` is
+// sequential Newton's block (an index), -1 for the others.
+class NewtonTraceObserver : public DynamicNewton::Observer,
+                            public nonlinear::GslMultiroot::Observer,
+                            public nonlinear::SequentialNewton::Observer {
+ public:
+  virtual void on_record(const nonlinear::NewtonRecord& record, int block) = 0;
+  void on_step(const DynamicNewton&, const nonlinear::NewtonRecord& record) override { on_record(record, -1); }
+  void on_step(const nonlinear::GslMultiroot&, const nonlinear::NewtonRecord& record) override { on_record(record, -1); }
+  void on_step(const nonlinear::SequentialNewton&, const nonlinear::SequentialRecord& record) override {
+    on_record(record.newton, record.block);
+  }
+};
+
 // One row per Newton iteration: k, ||f||_inf, ||f||_2, ||dx||_inf, the inner linear solve's status
 // and iteration count (pivot columns for GEPP, sweeps for Gauss-Seidel), the damping factor and
-// the time since the start.
-class NewtonTracer : public nonlinear::NewtonObserver<Eigen::Dynamic>, public TraceOutput {
+// the time since the start; for sequential Newton, the block (1-based) first.
+class NewtonTracer : public NewtonTraceObserver, public TraceOutput {
  public:
   using TraceOutput::TraceOutput;
-  void on_iteration(const nonlinear::NewtonRecord& record) override;
+  void on_record(const nonlinear::NewtonRecord& record, int block) override;
 };
 
 // Prints [M | c] with aligned columns, each line indented.

@@ -104,7 +104,7 @@ class SequentialDerived final : public JansenPoseSolver {
   }
   PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
     closure_.set_crank_angle(crank_angle);
-    const auto result = nonlinear::sequential_newton(dynamic_, blocks_, angles, options_, "inverse2x2");
+    const auto result = nonlinear::sequential_newton(dynamic_, blocks_, angles, {options_, nonlinear::LinearMethod::inverse2x2});
     angles = result.x;
     return {result.status, result.iterations, result.residual_norm};
   }
@@ -121,10 +121,10 @@ template <typename Closure>
 class GslSolver final : public JansenPoseSolver {
  public:
   GslSolver(const std::string& type, const nonlinear::NewtonOptions& options)
-      : options_(options), closure_(0.0), dynamic_(closure_), gsl_(dynamic_, type) {}
+      : options_(options), closure_(0.0), dynamic_(closure_), gsl_(dynamic_, type, options) {}
   PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
     closure_.set_crank_angle(crank_angle);
-    const auto result = gsl_.solve(angles, options_);
+    const auto result = gsl_.solve(angles);
     angles = result.x;
     return {result.status, result.iterations, result.residual_norm};
   }

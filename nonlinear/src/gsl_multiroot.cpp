@@ -95,6 +95,14 @@ Status status_for(int gsl_status) {
   }
 }
 
+StopReason reason_for(int gsl_status) {
+  switch (status_for(gsl_status)) {
+    case Status::non_finite: return StopReason::non_finite;
+    case Status::singular: return StopReason::singular_jacobian;
+    default: return StopReason::no_progress;
+  }
+}
+
 // The two GSL solver kinds behind one interface: allocated once, then set (to start from a
 // point) and iterated any number of times; read x, f, dx.
 class Solver {
@@ -153,10 +161,11 @@ struct GslMultiroot::Workspace {
   CallbackState state;
   std::unique_ptr<Solver> solver;
   std::unique_ptr<gsl_vector, void (*)(gsl_vector*)> start{nullptr, gsl_vector_free};
+  std::chrono::steady_clock::time_point started_at;  // read only when an observer is attached
 };
 
-GslMultiroot::GslMultiroot(const DynamicSystem& system, const std::string& type)
-    : workspace_(std::make_unique<Workspace>()) {
+GslMultiroot::GslMultiroot(const DynamicSystem& system, const std::string& type, NewtonOptions options)
+    : workspace_(std::make_unique<Workspace>()), options_(options) {
   gsl_set_error_handler_off();  // GSL's default handler aborts; numlab reports statuses instead
   const auto n = static_cast<std::size_t>(system.dimension());
   workspace_->state.system = &system;
@@ -169,12 +178,12 @@ GslMultiroot::GslMultiroot(const DynamicSystem& system, const std::string& type)
                                 "' (expected hybrids, hybrid, dnewton, broyden, hybridsj, hybridj, newton or gnewton)");
   }
   workspace_->start.reset(gsl_vector_alloc(n));
+  x_.setZero(system.dimension());
 }
 
 GslMultiroot::~GslMultiroot() = default;
 
-GslMultirootResult GslMultiroot::solve(const Eigen::VectorXd& x0, const NewtonOptions& options,
-                                       NewtonObserver<Eigen::Dynamic>* observer) {
+void GslMultiroot::start(const Eigen::VectorXd& x0) {
   CallbackState& state = workspace_->state;
   if (x0.size() != state.system->dimension()) {
     throw std::invalid_argument("starting point has " + std::to_string(x0.size()) + " entries but the system has " +
@@ -183,57 +192,94 @@ GslMultirootResult GslMultiroot::solve(const Eigen::VectorXd& x0, const NewtonOp
   linalg::require_finite(x0, "starting point");
   state.function_evaluations = 0;
   state.jacobian_evaluations = 0;
-  Solver* solver = workspace_->solver.get();
-  view(workspace_->start.get()) = x0;
-  const int set_status = solver->set(workspace_->start.get());
-
-  GslMultirootResult result;
+  counts_ = NewtonCounts{};  // status: running
+  running_ = true;
   // Only a trace needs the time: without an observer the clock is not read (as in numlab's Newton).
-  const auto started = observer != nullptr ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-  auto finish = [&](Status status) {
-    result.status = status;
-    result.x = view(solver->x());
-    result.residual_norm = view(solver->f()).lpNorm<Eigen::Infinity>();
-    result.function_evaluations = state.function_evaluations;
-    result.jacobian_evaluations = state.jacobian_evaluations;
-    return result;
-  };
+  if (observer_ != nullptr) workspace_->started_at = std::chrono::steady_clock::now();
 
+  Solver& solver = *workspace_->solver;
+  view(workspace_->start.get()) = x0;
+  const int set_status = solver.set(workspace_->start.get());
+  x_ = view(solver.x());
+  counts_.step_norm = 0.0;  // no step yet
   if (set_status != GSL_SUCCESS) {
-    result.gsl_message = gsl_strerror(set_status);
-    return finish(status_for(set_status));
+    counts_.message = gsl_strerror(set_status);
+    finish(status_for(set_status), reason_for(set_status));
+  } else if (gsl_multiroot_test_residual(solver.f(), options_.residual_tolerance) == GSL_SUCCESS) {
+    finish(Status::converged, StopReason::residual_small);
+  } else if (counts_.iterations >= options_.max_iterations) {
+    finish(Status::max_iterations, StopReason::iteration_limit);
   }
-  if (gsl_multiroot_test_residual(solver->f(), options.residual_tolerance) == GSL_SUCCESS) return finish(Status::converged);
-
-  while (result.iterations < options.max_iterations) {
-    ++result.iterations;
-    const int status = solver->iterate();
-    result.step_norm = view(solver->dx()).lpNorm<Eigen::Infinity>();
-    if (observer != nullptr) {
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-      const auto f = view(solver->f());
-      observer->on_iteration({result.iterations, f.lpNorm<Eigen::Infinity>(), f.norm(), result.step_norm,
-                              Status::converged, NewtonRecord::no_linear_solve, 1.0, elapsed});
-    }
-    if (status != GSL_SUCCESS) {
-      result.gsl_message = gsl_strerror(status);
-      return finish(status_for(status));
-    }
-    if (!view(solver->x()).allFinite()) return finish(Status::non_finite);
-    if (gsl_multiroot_test_residual(solver->f(), options.residual_tolerance) == GSL_SUCCESS) {
-      return finish(Status::converged);
-    }
-    if (gsl_multiroot_test_delta(solver->dx(), solver->x(), options.step_tolerance, options.step_tolerance) ==
-        GSL_SUCCESS) {
-      return finish(Status::converged);
-    }
-  }
-  return finish(Status::max_iterations);
 }
 
-GslMultirootResult gsl_multiroot_solve(const DynamicSystem& system, const Eigen::VectorXd& x0, const std::string& type,
-                                       const NewtonOptions& options, NewtonObserver<Eigen::Dynamic>* observer) {
-  return GslMultiroot(system, type).solve(x0, options, observer);
+bool GslMultiroot::step() {
+  if (!running_) return false;
+  Solver& solver = *workspace_->solver;
+  ++counts_.iterations;
+
+  // 1. One iteration of GSL's method.
+  const int status = solver.iterate();
+  x_ = view(solver.x());
+  counts_.step_norm = view(solver.dx()).lpNorm<Eigen::Infinity>();
+
+  // 2. GSL's stop tests, in order.
+  if (status != GSL_SUCCESS) {
+    counts_.message = gsl_strerror(status);
+    finish(status_for(status), reason_for(status));
+  } else if (!x_.allFinite()) {
+    finish(Status::non_finite, StopReason::non_finite);
+  } else if (gsl_multiroot_test_residual(solver.f(), options_.residual_tolerance) == GSL_SUCCESS) {
+    finish(Status::converged, StopReason::residual_small);
+  } else if (gsl_multiroot_test_delta(solver.dx(), solver.x(), options_.step_tolerance, options_.step_tolerance) ==
+             GSL_SUCCESS) {
+    finish(Status::converged, StopReason::step_small);
+  } else if (counts_.iterations >= options_.max_iterations) {
+    finish(Status::max_iterations, StopReason::iteration_limit);
+  }
+  notify();  // after the tests: the observer sees the verdict
+  return running_;
+}
+
+NewtonResult<Eigen::Dynamic> GslMultiroot::solve(const Eigen::VectorXd& x0) {
+  start(x0);
+  while (step()) {
+  }
+  return result();
+}
+
+NewtonResult<Eigen::Dynamic> GslMultiroot::result() const {
+  NewtonResult<Eigen::Dynamic> result;
+  static_cast<NewtonCounts&>(result) = counts_;
+  result.x = x_;
+  return result;
+}
+
+bool GslMultiroot::finish(Status status, StopReason reason) {
+  const CallbackState& state = workspace_->state;
+  counts_.status = status;
+  counts_.reason = reason;
+  counts_.residual_norm = view(workspace_->solver->f()).lpNorm<Eigen::Infinity>();
+  counts_.function_evaluations = state.function_evaluations;
+  counts_.jacobian_evaluations = state.jacobian_evaluations;
+  running_ = false;
+  return false;
+}
+
+void GslMultiroot::notify() {
+  if (observer_ == nullptr) return;
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - workspace_->started_at).count();
+  const auto f = view(workspace_->solver->f());
+  observer_->on_step(*this, {counts_.iterations, f.lpNorm<Eigen::Infinity>(), f.norm(), counts_.step_norm,
+                             Status::converged, NewtonRecord::no_linear_solve, 1.0, elapsed});
+}
+
+NewtonResult<Eigen::Dynamic> gsl_multiroot_solve(const DynamicSystem& system, const Eigen::VectorXd& x0,
+                                                 const std::string& type, const NewtonOptions& options,
+                                                 GslMultiroot::Observer* observer) {
+  GslMultiroot gsl(system, type, options);
+  gsl.set_observer(observer);
+  return gsl.solve(x0);
 }
 
 }  // namespace numlab::nonlinear

@@ -10,23 +10,36 @@ const std::vector<std::string>& newton_linear_methods() {
   return names;
 }
 
-RuntimeLinearStep::RuntimeLinearStep(const std::string& method, int n, linalg::GaussSeidelOptions gauss_seidel)
-    : method_(method), gauss_seidel_(gauss_seidel) {
+LinearMethod linear_method_named(const std::string& name) {
   const auto& names = newton_linear_methods();
-  if (std::find(names.begin(), names.end(), method) == names.end()) {
-    throw std::invalid_argument("unknown linear method '" + method +
+  const auto found = std::find(names.begin(), names.end(), name);
+  if (found == names.end()) {
+    throw std::invalid_argument("unknown linear method '" + name +
                                 "' (expected gepp, gauss-seidel, gsl-lu, eigen-lu or inverse2x2)");
   }
-  if (method == "inverse2x2" && n != 2) {
+  return static_cast<LinearMethod>(found - names.begin());
+}
+
+std::string_view to_string(LinearMethod method) { return newton_linear_methods()[static_cast<std::size_t>(method)]; }
+
+RuntimeLinearStep::RuntimeLinearStep(LinearMethod method, int n, linalg::GaussSeidelOptions gauss_seidel)
+    : method_(method), gauss_seidel_(gauss_seidel) {
+  if (method == LinearMethod::inverse2x2 && n != 2) {
     throw std::invalid_argument("inverse2x2 needs a 2x2 system, but this one has " + std::to_string(n) + " unknowns");
   }
 }
 
+RuntimeLinearStep::RuntimeLinearStep(const std::string& method, int n, linalg::GaussSeidelOptions gauss_seidel)
+    : RuntimeLinearStep(linear_method_named(method), n, gauss_seidel) {}
+
 linalg::LinearResult<Eigen::Dynamic> RuntimeLinearStep::solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& rhs) {
-  if (method_ == "gepp") return gepp_.solve(J, rhs);
-  if (method_ == "gauss-seidel") return gauss_seidel_.solve(J, rhs);
-  if (method_ == "gsl-lu") return gsl_lu_.solve(J, rhs);
-  if (method_ == "eigen-lu") return eigen_lu_.solve(J, rhs);
+  switch (method_) {
+    case LinearMethod::gepp: return gepp_.solve(J, rhs);
+    case LinearMethod::gauss_seidel: return gauss_seidel_.solve(J, rhs);
+    case LinearMethod::gsl_lu: return gsl_lu_.solve(J, rhs);
+    case LinearMethod::eigen_lu: return eigen_lu_.solve(J, rhs);
+    case LinearMethod::inverse2x2: break;
+  }
   // inverse2x2: the closed form on the 2x2 system.
   const linalg::LinearResult<2> fixed = linalg::solve2x2(J, rhs);
   linalg::LinearResult<Eigen::Dynamic> result;

@@ -1,60 +1,32 @@
 #include "numlab/nonlinear/sequential_newton.hpp"
 
 #include <stdexcept>
-
-#include "numlab/nonlinear/linear_step.hpp"
+#include <string>
 
 namespace numlab::nonlinear {
 
+void BlockSystem::residual(const Eigen::VectorXd& block_x, Eigen::VectorXd& f) const {
+  place(block_x);
+  whole_.residual(x_, full_f_);
+  ++evaluations_;
+  f.resize(dimension());
+  for (int i = 0; i < dimension(); ++i) f(i) = full_f_(block_->equations[i]);
+}
+
+void BlockSystem::jacobian(const Eigen::VectorXd& block_x, Eigen::MatrixXd& J) const {
+  place(block_x);
+  whole_.jacobian(x_, full_J_);
+  J.resize(dimension(), dimension());
+  for (int i = 0; i < dimension(); ++i) {
+    for (int j = 0; j < dimension(); ++j) J(i, j) = full_J_(block_->equations[i], block_->unknowns[j]);
+  }
+}
+
+void BlockSystem::place(const Eigen::VectorXd& block_x) const {
+  for (int j = 0; j < dimension(); ++j) x_(block_->unknowns[j]) = block_x(j);
+}
+
 namespace {
-
-// One block as a system of its own: its unknowns are free, every other unknown is held fixed.
-class BlockSystem final : public DynamicSystem {
- public:
-  BlockSystem(const DynamicSystem& whole, const Block& block, Eigen::VectorXd& x, int& evaluations)
-      : whole_(whole), block_(block), x_(x), evaluations_(evaluations) {}
-
-  int dimension() const override { return static_cast<int>(block_.unknowns.size()); }
-
-  void residual(const Eigen::VectorXd& block_x, Eigen::VectorXd& f) const override {
-    place(block_x);
-    whole_.residual(x_, full_f_);
-    ++evaluations_;
-    f.resize(dimension());
-    for (int i = 0; i < dimension(); ++i) f(i) = full_f_(block_.equations[i]);
-  }
-
-  void jacobian(const Eigen::VectorXd& block_x, Eigen::MatrixXd& J) const override {
-    place(block_x);
-    whole_.jacobian(x_, full_J_);
-    J.resize(dimension(), dimension());
-    for (int i = 0; i < dimension(); ++i) {
-      for (int j = 0; j < dimension(); ++j) J(i, j) = full_J_(block_.equations[i], block_.unknowns[j]);
-    }
-  }
-
- private:
-  void place(const Eigen::VectorXd& block_x) const {
-    for (int j = 0; j < dimension(); ++j) x_(block_.unknowns[j]) = block_x(j);
-  }
-
-  const DynamicSystem& whole_;
-  const Block& block_;
-  Eigen::VectorXd& x_;
-  int& evaluations_;
-  mutable Eigen::VectorXd full_f_;
-  mutable Eigen::MatrixXd full_J_;
-};
-
-class BlockRelay final : public NewtonObserver<Eigen::Dynamic> {
- public:
-  BlockRelay(SequentialObserver* observer, int block) : observer_(observer), block_(block) {}
-  void on_iteration(const NewtonRecord& record) override { observer_->on_block_iteration(block_, record); }
-
- private:
-  SequentialObserver* observer_;
-  int block_;
-};
 
 void require_partition(const std::vector<Block>& blocks, int n) {
   std::vector<int> equation_uses(n, 0), unknown_uses(n, 0);
@@ -83,44 +55,104 @@ void require_partition(const std::vector<Block>& blocks, int n) {
 
 }  // namespace
 
-SequentialNewtonResult sequential_newton(const DynamicSystem& system, const std::vector<Block>& blocks,
-                                         const Eigen::VectorXd& x0, const NewtonOptions& options,
-                                         const std::string& linear_method, SequentialObserver* observer) {
-  const int n = system.dimension();
+SequentialNewton::SequentialNewton(const DynamicSystem& system, const std::vector<Block>& blocks,
+                                   SequentialNewtonOptions options)
+    : system_(system), blocks_(blocks), options_(options),
+      block_system_(system, result_.x, result_.function_evaluations) {
+  require_partition(blocks_, system_.dimension());
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    if (options_.linear == LinearMethod::inverse2x2 && blocks_[b].unknowns.size() != 2) {
+      throw std::invalid_argument("inverse2x2 needs 2x2 blocks, but block " + std::to_string(b + 1) + " has " +
+                                  std::to_string(blocks_[b].unknowns.size()) + " unknowns");
+    }
+  }
+}
+
+void SequentialNewton::start(const Eigen::VectorXd& x0) {
+  const int n = system_.dimension();
   if (x0.size() != n) {
     throw std::invalid_argument("starting point has " + std::to_string(x0.size()) + " entries but the system has " +
                                 std::to_string(n) + " unknowns");
   }
-  require_partition(blocks, n);
+  result_ = SequentialNewtonResult{};  // status: running
+  result_.x = x0;
+  running_ = true;
+  begin_block(0);
+}
 
-  SequentialNewtonResult result;
-  result.x = x0;
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
-    const Block& block = blocks[b];
-    BlockSystem block_system(system, block, result.x, result.function_evaluations);
-    Eigen::VectorXd block_start(block.unknowns.size());
-    for (std::size_t j = 0; j < block.unknowns.size(); ++j) block_start(j) = result.x(block.unknowns[j]);
+bool SequentialNewton::step() {
+  if (!running_) return false;
+  const int stepped_block = block();
 
-    Newton<BlockSystem, RuntimeLinearStep> newton(block_system, options,
-                                                  RuntimeLinearStep(linear_method, block_system.dimension()));
-    BlockRelay relay(observer, static_cast<int>(b));
-    if (observer != nullptr) newton.set_observer(&relay);
-    const NewtonResult<Eigen::Dynamic> block_result = newton.solve(block_start);
-    for (std::size_t j = 0; j < block.unknowns.size(); ++j) result.x(block.unknowns[j]) = block_result.x(j);
+  // 1. One Newton iteration on the current block, the other unknowns held.
+  newton_->step();
+  ++result_.iterations;
+  const Block& current = blocks_[block_];
+  for (std::size_t j = 0; j < current.unknowns.size(); ++j) result_.x(current.unknowns[j]) = newton_->x()(j);
 
-    result.blocks.push_back(block_result);
-    result.iterations += block_result.iterations;
-    result.jacobian_evaluations += block_result.jacobian_evaluations;
-    if (block_result.status != Status::converged) {
-      result.status = block_result.status;
-      result.failed_block = static_cast<int>(b);
-      break;
-    }
+  // 2. When the block's Newton has ended: a converged block hands on to the next, a failed one ends the solve.
+  if (!newton_->running() && end_block()) begin_block(block_ + 1);
+
+  if (observer_ != nullptr && relay_.record) {
+    observer_->on_step(*this, {stepped_block, *relay_.record});
+    relay_.record.reset();
   }
+  return running_;
+}
+
+SequentialNewtonResult SequentialNewton::solve(const Eigen::VectorXd& x0) {
+  start(x0);
+  while (step()) {
+  }
+  return result_;
+}
+
+// Starts the Newton of block `first`, or of the next block that does not end where it starts
+// (already solved); finishes the solve when no block is left.
+void SequentialNewton::begin_block(std::size_t first) {
+  for (block_ = first; block_ < blocks_.size(); ++block_) {
+    const Block& block = blocks_[block_];
+    block_system_.select(block);
+    Eigen::VectorXd block_start(block.unknowns.size());
+    for (std::size_t j = 0; j < block.unknowns.size(); ++j) block_start(j) = result_.x(block.unknowns[j]);
+    newton_.emplace(block_system_, options_.newton, RuntimeLinearStep(options_.linear, block_system_.dimension()));
+    if (observer_ != nullptr) newton_->set_observer(&relay_);
+    newton_->start(block_start);
+    if (newton_->running()) return;
+    if (!end_block()) return;
+  }
+  finish(Status::converged);
+}
+
+// Records the block's result and puts its unknowns into x. Returns whether it converged; if not,
+// the solve ends with its status.
+bool SequentialNewton::end_block() {
+  const Block& block = blocks_[block_];
+  NewtonResult<Eigen::Dynamic> block_result = newton_->result();
+  for (std::size_t j = 0; j < block.unknowns.size(); ++j) result_.x(block.unknowns[j]) = block_result.x(j);
+  result_.jacobian_evaluations += block_result.jacobian_evaluations;
+  const Status status = block_result.status;
+  result_.blocks.push_back(std::move(block_result));
+  if (status == Status::converged) return true;
+  result_.failed_block = static_cast<int>(block_);
+  finish(status);
+  return false;
+}
+
+void SequentialNewton::finish(Status status) {
+  result_.status = status;
+  running_ = false;
   Eigen::VectorXd f;
-  system.residual(result.x, f);
-  result.residual_norm = f.lpNorm<Eigen::Infinity>();
-  return result;
+  system_.residual(result_.x, f);
+  result_.residual_norm = f.lpNorm<Eigen::Infinity>();
+}
+
+SequentialNewtonResult sequential_newton(const DynamicSystem& system, const std::vector<Block>& blocks,
+                                         const Eigen::VectorXd& x0, const SequentialNewtonOptions& options,
+                                         SequentialNewton::Observer* observer) {
+  SequentialNewton sequential(system, blocks, options);
+  sequential.set_observer(observer);
+  return sequential.solve(x0);
 }
 
 }  // namespace numlab::nonlinear

@@ -16,6 +16,7 @@ std::string_view to_string(StopReason reason) {
     case StopReason::non_finite: return "a value is no longer finite";
     case StopReason::diverged: return "the residual grew without bound";
     case StopReason::no_descent: return "damping found no step that decreases ||f||";
+    case StopReason::no_progress: return "the iteration is making no progress";
   }
   return "unknown";
 }

@@ -76,7 +76,7 @@ TEST_CASE("Sequential and full Newton agree on the block-triangular Jansen syste
   REQUIRE(full.status == Status::converged);
 
   const auto derived = block_triangular_order(jacobian_pattern(dynamic, start));
-  const auto sequential = sequential_newton(dynamic, derived, start, options);
+  const auto sequential = sequential_newton(dynamic, derived, start, {options});
   REQUIRE(sequential.status == Status::converged);
   CHECK(sequential.blocks.size() == 4);
   // Each block stopped at ||f_B|| <= 1e-12 with a well-conditioned 2x2 Jacobian, so both roots
@@ -86,7 +86,7 @@ TEST_CASE("Sequential and full Newton agree on the block-triangular Jansen syste
 
   // The seed's own order, given by hand, gives the same root.
   const std::vector<Block> by_hand = {{{0, 1}, {0, 1}}, {{2, 3}, {2, 3}}, {{4, 5}, {5, 6}}, {{6, 7}, {4, 7}}};
-  const auto seed_order = sequential_newton(dynamic, by_hand, start, options, "inverse2x2");
+  const auto seed_order = sequential_newton(dynamic, by_hand, start, {options, LinearMethod::inverse2x2});
   REQUIRE(seed_order.status == Status::converged);
   CHECK((seed_order.x - sequential.x).lpNorm<Eigen::Infinity>() <= 1e-10);
 

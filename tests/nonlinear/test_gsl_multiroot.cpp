@@ -21,7 +21,7 @@ TEST_CASE("All eight GSL types reach the known root on the well-behaved problems
     const TestProblem problem = make_test_problem(name);
     for (const std::string& type : gsl_multiroot_types()) {
       const auto result = gsl_multiroot_solve(*problem.system, problem.standard_start, type, lab_options());
-      INFO(name << " with " << type << ": " << result.gsl_message);
+      INFO(name << " with " << type << ": " << result.message);
       REQUIRE(result.status == Status::converged);
       // Powell singular's root is only linearly approached: error ~ sqrt(||f||) (see test_newton.cpp).
       const double allowed = name == "powell-singular" ? 1e-5 : 1e-9;
@@ -61,14 +61,14 @@ TEST_CASE("The hard cases, pinned as GSL 2.7 behaves on them", "[gsl][mgh][failu
     const TestProblem problem = make_test_problem(name);
     for (const auto& [type, status] : statuses) {
       const auto result = gsl_multiroot_solve(*problem.system, problem.standard_start, type, lab_options());
-      INFO(name << " with " << type << ": " << to_string(result.status) << " " << result.gsl_message);
+      INFO(name << " with " << type << ": " << to_string(result.status) << " " << result.message);
       CHECK(result.status == status);
       if (status == Status::converged && problem.known_root && name != "trigonometric") {
         CHECK((result.x - *problem.known_root).lpNorm<Eigen::Infinity>() <= 1e-8);
       }
       if (status == Status::no_progress) {
         CHECK(result.residual_norm > 1e-3);  // stuck away from a root, and reported so
-        CHECK_FALSE(result.gsl_message.empty());
+        CHECK_FALSE(result.message.empty());
       }
     }
   }

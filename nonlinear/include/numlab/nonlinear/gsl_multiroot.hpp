@@ -4,8 +4,16 @@
 //
 // Derivative-free (f only): hybrids, hybrid, dnewton, broyden.
 // With the Jacobian (f and J): hybridsj, hybridj, newton, gnewton.
-// Stop tests mirror numlab's Newton: gsl_multiroot_test_residual(f, residual_tolerance), or
-// gsl_multiroot_test_delta(dx, x, step_tolerance, step_tolerance).
+//
+// GslMultiroot is a stepper (numlab/solver.hpp), like numlab's Newton, and gives the same result
+// type, NewtonResult:
+//   start(x0)  gsl_multiroot_*solver_set, then the residual test at x0;
+//   step()     one gsl_multiroot_*solver_iterate, then GSL's stop tests, in order:
+//              GSL reported an error -> its status (the message kept in the result);
+//              x not finite -> non_finite;
+//              gsl_multiroot_test_residual(f, residual_tolerance) -> converged (residual_small);
+//              gsl_multiroot_test_delta(dx, x, step_tolerance, step_tolerance) -> converged (step_small);
+//              max_iterations reached -> max_iterations.
 
 #include <Eigen/Core>
 #include <memory>
@@ -14,45 +22,59 @@
 
 #include "numlab/nonlinear/newton.hpp"
 #include "numlab/nonlinear/system.hpp"
+#include "numlab/solver.hpp"
 
 namespace numlab::nonlinear {
 
 // hybrids, hybrid, dnewton, broyden, hybridsj, hybridj, newton, gnewton.
 const std::vector<std::string>& gsl_multiroot_types();
 
-struct GslMultirootResult {
-  Eigen::VectorXd x;
-  Status status = Status::max_iterations;
-  int iterations = 0;
-  double residual_norm = 0.0;  // ||f(x)||_inf
-  double step_norm = 0.0;      // ||dx||_inf of the last iteration
-  int function_evaluations = 0;
-  int jacobian_evaluations = 0;
-  std::string gsl_message;  // GSL's own words when an iteration reported an error
-};
-
-// A GSL solver of one type for one system, allocated once and reused by every solve (as numlab's
-// Newton object is from pose to pose in a sweep). Throws std::invalid_argument for an unknown type.
+// A GSL solver of one type for one system, allocated once and reused by every start() (as numlab's
+// Newton object is from pose to pose in a sweep). Only NewtonOptions' tolerances and iteration
+// limit apply (GSL's types do their own damping, if any).
 class GslMultiroot {
  public:
-  GslMultiroot(const DynamicSystem& system, const std::string& type);
+  using Observer = StepObserver<GslMultiroot, NewtonRecord>;
+
+  // Throws std::invalid_argument for an unknown type.
+  GslMultiroot(const DynamicSystem& system, const std::string& type, NewtonOptions options = {});
   ~GslMultiroot();
   GslMultiroot(const GslMultiroot&) = delete;
   GslMultiroot& operator=(const GslMultiroot&) = delete;
-  // As gsl_multiroot_solve() below, with this solver.
-  GslMultirootResult solve(const Eigen::VectorXd& x0, const NewtonOptions& options = {},
-                           NewtonObserver<Eigen::Dynamic>* observer = nullptr);
+
+  // The observer, if any, receives one record per iteration (its linear fields are not applicable).
+  void set_observer(Observer* observer) { observer_ = observer; }
+
+  // Throws std::invalid_argument for a wrong-sized or non-finite x0.
+  void start(const Eigen::VectorXd& x0);
+  // One GSL iteration and the stop tests. Returns false once the iteration has ended.
+  bool step();
+  NewtonResult<Eigen::Dynamic> solve(const Eigen::VectorXd& x0);
+  NewtonResult<Eigen::Dynamic> result() const;
+
+  bool running() const { return running_; }
+  Status status() const { return counts_.status; }  // running until the iteration has ended
+  int iterations() const { return counts_.iterations; }
+  const Eigen::VectorXd& x() const { return x_; }
+  const NewtonOptions& options() const { return options_; }
 
  private:
+  bool finish(Status status, StopReason reason);
+  void notify();
+
   struct Workspace;
   std::unique_ptr<Workspace> workspace_;
+  NewtonOptions options_;
+  Observer* observer_ = nullptr;
+  Eigen::VectorXd x_;
+  NewtonCounts counts_;
+  bool running_ = false;
 };
 
-// Solves system from x0 with GSL type `type` (one of gsl_multiroot_types()). The observer, if
-// any, receives one record per iteration (its linear fields are not applicable).
-// Throws std::invalid_argument for an unknown type, a wrong-sized or non-finite x0.
-GslMultirootResult gsl_multiroot_solve(const DynamicSystem& system, const Eigen::VectorXd& x0, const std::string& type,
-                                       const NewtonOptions& options = {},
-                                       NewtonObserver<Eigen::Dynamic>* observer = nullptr);
+// Solves system from x0 with GSL type `type` (one of gsl_multiroot_types()): a GslMultiroot's
+// solve(). Throws std::invalid_argument for an unknown type, a wrong-sized or non-finite x0.
+NewtonResult<Eigen::Dynamic> gsl_multiroot_solve(const DynamicSystem& system, const Eigen::VectorXd& x0,
+                                                 const std::string& type, const NewtonOptions& options = {},
+                                                 GslMultiroot::Observer* observer = nullptr);
 
 }  // namespace numlab::nonlinear

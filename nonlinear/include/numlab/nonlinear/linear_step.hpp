@@ -5,10 +5,11 @@
 //   linalg::LinearResult<N> solve(const Matrix<N>& J, const Vector<N>& rhs);
 // GEPP, Gauss-Seidel (normal equations), Eigen LU and, for N = 2, the closed form already have it.
 // GSL LU needs a dynamic matrix, so fixed sizes go through GslLuStep's copy.
-// RuntimeLinearStep picks one of them by name, for the command line.
+// RuntimeLinearStep picks one of them at run time (a LinearMethod, or its command-line name).
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "numlab/linalg/eigen_reference.hpp"
@@ -43,19 +44,27 @@ class GslLuStep {
   std::unique_ptr<linalg::GslLu> lu_;
 };
 
-// The linear methods Newton can use by name: gepp, gauss-seidel, gsl-lu, eigen-lu, inverse2x2 (n = 2).
+// The linear methods Newton can use at run time (inverse2x2: the closed form, for n = 2 only).
+enum class LinearMethod { gepp, gauss_seidel, gsl_lu, eigen_lu, inverse2x2 };
+
+// Their command-line names, in LinearMethod's order: gepp, gauss-seidel, gsl-lu, eigen-lu, inverse2x2.
 const std::vector<std::string>& newton_linear_methods();
+// The method of a command-line name. Throws std::invalid_argument for an unknown name.
+LinearMethod linear_method_named(const std::string& name);
+std::string_view to_string(LinearMethod method);
 
 // One of the linear methods, chosen at run time (dynamic sizes only).
 class RuntimeLinearStep {
  public:
-  // Throws std::invalid_argument for an unknown name, or inverse2x2 when n != 2.
+  // Throws std::invalid_argument for inverse2x2 when n != 2.
+  RuntimeLinearStep(LinearMethod method, int n, linalg::GaussSeidelOptions gauss_seidel = {});
+  // By command-line name; also throws std::invalid_argument for an unknown name.
   RuntimeLinearStep(const std::string& method, int n, linalg::GaussSeidelOptions gauss_seidel = {});
   linalg::LinearResult<Eigen::Dynamic> solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& rhs);
-  const std::string& method() const { return method_; }
+  LinearMethod method() const { return method_; }
 
  private:
-  std::string method_;
+  LinearMethod method_;
   linalg::GaussElimination<Eigen::Dynamic> gepp_;
   linalg::GaussSeidel<Eigen::Dynamic> gauss_seidel_;
   linalg::EigenLu<Eigen::Dynamic> eigen_lu_;

@@ -2,27 +2,32 @@
 // Full Newton-Raphson (seed 000 Listing 1, seed 001 jansen_estimate), with any linear solver:
 //
 //   repeat:  solve J(x) dx = -f(x)      (GEPP, Gauss-Seidel, GSL LU, Eigen LU, 2x2 closed form)
-//            x <- x + lambda dx         (lambda = 1; with damping, halved until ||f||^2 decreases)
-//   until    ||f(x)||_inf <= residual_tolerance            -> converged (residual test)
-//         or ||dx||_inf <= step_tolerance (1 + ||x||_inf)  -> converged (step test)
+//            x <- x + lambda dx         (lambda = 1; with damping, the first of 1, 1/2, 1/4, ...
+//                                        that passes Armijo's sufficient decrease on ||f||_2^2)
+//   until    ||f(x)||_inf <= residual_tolerance            -> converged (residual_small)
+//         or ||dx||_inf <= step_tolerance (1 + ||x||_inf)  -> converged (step_small)
 //
 // Other endings, each a status with the numbers behind it: max_iterations; singular (the linear
 // solve found J singular); non_finite (f, J or x stopped being finite); diverged (||f||_inf grew
-// past divergence_factor times its start); no_progress (damping could not decrease ||f||).
+// past divergence_factor times its start); no_progress (damping found no sufficient decrease).
+// The tests are the named functions of stopping_tests.hpp.
 //
-// One step() is one iteration. Fixed sizes allocate nothing on the heap, in start() or step().
+// A stepper (numlab/solver.hpp): one step() is one iteration; status() is Status::running until
+// the iteration has ended. Fixed sizes allocate nothing on the heap, in start() or step().
 
 #include <Eigen/Core>
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/input_checks.hpp"
+#include "numlab/nonlinear/stopping_tests.hpp"
 #include "numlab/nonlinear/system.hpp"
+#include "numlab/solver.hpp"
 
 namespace numlab::nonlinear {
 
@@ -30,23 +35,28 @@ struct NewtonOptions {
   double residual_tolerance = 1e-9;  // seed 001's accuracy (seed 000 used 1e-5)
   double step_tolerance = 1e-12;     // relative: ||dx|| <= tol (1 + ||x||)
   int max_iterations = 20;           // seed 001's limit (seed 000 used 10)
-  bool damped = false;               // backtracking on ||f||^2, off by default
+  bool damped = false;               // backtracking (Armijo on ||f||_2^2), off by default
   int max_halvings = 30;             // damping gives up (no_progress) after this many
   double divergence_factor = 1e12;   // diverged when ||f|| > factor * max(||f(x0)||, 1)
 };
 
 // Why the iteration stopped.
-enum class StopReason { running, residual_small, step_small, iteration_limit, singular_jacobian, non_finite, diverged, no_descent };
+// no_progress: GSL's adapter only, when GSL reports that its iteration is not making progress.
+enum class StopReason {
+  running, residual_small, step_small, iteration_limit, singular_jacobian, non_finite, diverged, no_descent, no_progress
+};
 
-// The bookkeeping of a Newton run: everything in its result but x.
+// The bookkeeping of a Newton run: everything in its result but x. Shared by numlab's Newton and
+// GSL's multiroot adapter (gsl_multiroot.hpp).
 struct NewtonCounts {
-  Status status = Status::max_iterations;
+  Status status = Status::running;
   StopReason reason = StopReason::running;
   int iterations = 0;
   double residual_norm = std::numeric_limits<double>::quiet_NaN();  // ||f(x)||_inf at the end
   double step_norm = std::numeric_limits<double>::quiet_NaN();      // ||dx||_inf of the last step
   int function_evaluations = 0;
   int jacobian_evaluations = 0;
+  std::string_view message;  // GSL's own words (a static string) when it stopped on an error; else empty
 };
 
 template <int N>
@@ -54,24 +64,17 @@ struct NewtonResult : NewtonCounts {
   Vector<N> x = Vector<N>::Zero(N == Eigen::Dynamic ? 0 : N);
 };
 
-// One row of the trace, sent after every iteration.
+// One row of the trace, sent after every iteration (by Newton, GSL's adapter and sequential Newton).
 struct NewtonRecord {
   static constexpr int no_linear_solve = -1;  // linear_iterations of a method without one (GSL's)
   int iteration;
-  double residual_inf;    // ||f||_inf after the step
-  double residual_2;      // ||f||_2 after the step
-  double step_inf;        // ||lambda dx||_inf
-  Status linear_status;   // of the inner solve J dx = -f
-  int linear_iterations;  // sweeps, for Gauss-Seidel
-  double damping;         // lambda (1 unless damped)
-  double elapsed_s;       // since start()
-};
-
-template <int N>
-class NewtonObserver {
- public:
-  virtual ~NewtonObserver() = default;
-  virtual void on_iteration(const NewtonRecord& record) = 0;
+  double residual_norm;    // ||f||_inf after the step
+  double residual_2norm;   // ||f||_2 after the step
+  double step_norm;        // ||lambda dx||_inf
+  Status linear_status;    // of the inner solve J dx = -f
+  int linear_iterations;   // sweeps, for Gauss-Seidel
+  double damping;          // lambda (1 unless damped)
+  double elapsed_s;        // since start()
 };
 
 // "Termination: CONVERGED (||f||_inf = 3e-13 <= 1e-09 after 5 iterations)" and the like.
@@ -82,6 +85,7 @@ template <NonlinearSystem S, typename LinearStep = linalg::GaussElimination<S::s
 class Newton {
  public:
   static constexpr int N = S::size;
+  using Observer = StepObserver<Newton, NewtonRecord>;
 
   // The linear step is built in place (its default); or passed in, for one that needs arguments.
   explicit Newton(const S& system, NewtonOptions options = {}) : system_(system), options_(options) {
@@ -92,7 +96,7 @@ class Newton {
     check_options();
   }
 
-  void set_observer(NewtonObserver<N>* observer) { observer_ = observer; }
+  void set_observer(Observer* observer) { observer_ = observer; }
 
  private:
   void check_options() const {
@@ -118,7 +122,7 @@ class Newton {
     dx_.setZero(n);
     trial_x_.resize(n);
     trial_f_.resize(n);
-    result_ = NewtonCounts{};
+    result_ = NewtonCounts{};  // status: running
     jacobian_fresh_ = false;
     if (observer_ != nullptr) started_at_ = std::chrono::steady_clock::now();  // only traces need the time
     evaluate_at(x_, f_);
@@ -126,7 +130,7 @@ class Newton {
     running_ = true;
     if (!linalg::all_finite(f_)) {
       finish(Status::non_finite, StopReason::non_finite);
-    } else if (residual_at_start_ <= options_.residual_tolerance) {
+    } else if (residual_small(residual_at_start_, options_.residual_tolerance)) {
       finish(Status::converged, StopReason::residual_small);
     }
   }
@@ -151,7 +155,9 @@ class Newton {
     }
     dx_ = linear.x;  // an iterative inner solve that hit its limit still gives a usable (inexact) step
 
-    // 3. Move: the full step, or with damping the largest of 1, 1/2, 1/4, ... that decreases ||f||^2.
+    // 3. Move: the full step; or, damped, x + lambda dx with the first lambda = 1, 1/2, 1/4, ... whose
+    //    f is finite and passes Armijo's sufficient decrease on the merit ||f||_2^2 (c = armijo_constant):
+    //    ||f(x + lambda dx)||_2^2 <= (1 - 2 c lambda) ||f(x)||_2^2. After max_halvings halvings: no_progress.
     double lambda = 1.0;
     if (options_.damped) {
       const double merit = f_.squaredNorm();
@@ -159,7 +165,7 @@ class Newton {
       while (true) {
         trial_x_ = x_ + lambda * dx_;
         evaluate_at(trial_x_, trial_f_);
-        if (linalg::all_finite(trial_f_) && trial_f_.squaredNorm() <= (1.0 - 2e-4 * lambda) * merit) break;
+        if (linalg::all_finite(trial_f_) && sufficient_decrease(trial_f_.squaredNorm(), merit, lambda)) break;
         if (++halvings > options_.max_halvings) return finish(Status::no_progress, StopReason::no_descent);
         lambda *= 0.5;
       }
@@ -171,19 +177,21 @@ class Newton {
     }
     result_.step_norm = lambda * dx_.template lpNorm<Eigen::Infinity>();
     result_.residual_norm = f_.template lpNorm<Eigen::Infinity>();
-    notify(linear.status, linear.iterations, lambda);
 
-    // 4. Stop tests, in order.
-    if (!linalg::all_finite(x_) || !linalg::all_finite(f_)) return finish(Status::non_finite, StopReason::non_finite);
-    if (result_.residual_norm <= options_.residual_tolerance) return finish(Status::converged, StopReason::residual_small);
-    if (result_.step_norm <= options_.step_tolerance * (1.0 + x_.template lpNorm<Eigen::Infinity>())) {
-      return finish(Status::converged, StopReason::step_small);
+    // 4. Stop tests, in order: finite, residual small, step small, diverged, iteration limit.
+    if (!linalg::all_finite(x_) || !linalg::all_finite(f_)) {
+      finish(Status::non_finite, StopReason::non_finite);
+    } else if (residual_small(result_.residual_norm, options_.residual_tolerance)) {
+      finish(Status::converged, StopReason::residual_small);
+    } else if (step_small(result_.step_norm, x_.template lpNorm<Eigen::Infinity>(), options_.step_tolerance)) {
+      finish(Status::converged, StopReason::step_small);
+    } else if (diverged(result_.residual_norm, residual_at_start_, options_.divergence_factor)) {
+      finish(Status::diverged, StopReason::diverged);
+    } else if (result_.iterations >= options_.max_iterations) {
+      finish(Status::max_iterations, StopReason::iteration_limit);
     }
-    if (result_.residual_norm > options_.divergence_factor * std::max(residual_at_start_, 1.0)) {
-      return finish(Status::diverged, StopReason::diverged);
-    }
-    if (result_.iterations >= options_.max_iterations) return finish(Status::max_iterations, StopReason::iteration_limit);
-    return true;
+    notify(linear.status, linear.iterations, lambda);  // after the tests: the observer sees the verdict
+    return running_;
   }
 
   NewtonResult<N> solve(const Vector<N>& x0) {
@@ -203,6 +211,8 @@ class Newton {
 
   // State between iterations.
   bool running() const { return running_; }
+  Status status() const { return result_.status; }  // running until the iteration has ended
+  int iterations() const { return result_.iterations; }
   const Vector<N>& x() const { return x_; }
   const Vector<N>& residual() const { return f_; }
   const Matrix<N>& jacobian() const { return J_; }
@@ -243,14 +253,14 @@ class Newton {
   void notify(Status linear_status, int linear_iterations, double lambda) {
     if (observer_ == nullptr) return;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_at_).count();
-    observer_->on_iteration({result_.iterations, result_.residual_norm, f_.norm(), result_.step_norm, linear_status,
-                             linear_iterations, lambda, elapsed});
+    observer_->on_step(*this, {result_.iterations, result_.residual_norm, f_.norm(), result_.step_norm,
+                               linear_status, linear_iterations, lambda, elapsed});
   }
 
   const S& system_;
   NewtonOptions options_;
   LinearStep linear_step_;
-  NewtonObserver<N>* observer_ = nullptr;
+  Observer* observer_ = nullptr;
   Vector<N> x_ = linalg::zero_or_empty<Vector<N>>(), f_ = linalg::zero_or_empty<Vector<N>>();
   Vector<N> dx_ = linalg::zero_or_empty<Vector<N>>(), trial_x_ = linalg::zero_or_empty<Vector<N>>();
   Vector<N> trial_f_ = linalg::zero_or_empty<Vector<N>>();
