@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "numlab/force_inline.hpp"
 #include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/mechanisms/dyad_newton.hpp"
 #include "numlab/mechanisms/full_newton_pose_solver.hpp"
@@ -249,10 +250,14 @@ bool JansenSweepStepper::finish(Status status) {
 }
 
 // One solve, shown to the observer if there is one.
-PoseOutcome JansenSweepStepper::solve_pose(double deg, double step_deg, Eigen::VectorXd& x) {
+NUMLAB_FORCE_INLINE PoseOutcome JansenSweepStepper::solve_pose(double deg, double step_deg, Eigen::VectorXd& x) {
   const PoseOutcome outcome = solver_.solve(deg * degrees, x);
-  if (observer_ != nullptr) observer_->on_step(*this, {deg, step_deg, outcome, outcome.status == Status::converged, x});
+  if (observer_ != nullptr) [[unlikely]] notify(deg, step_deg, outcome, x);
   return outcome;
+}
+
+void JansenSweepStepper::notify(double deg, double step_deg, const PoseOutcome& outcome, const Eigen::VectorXd& x) {
+  observer_->on_step(*this, {deg, step_deg, outcome, outcome.status == Status::converged, x});
 }
 
 // Moves from current_deg_ to target_deg: tries the whole step; when a solve fails, halves the

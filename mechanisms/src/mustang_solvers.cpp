@@ -27,6 +27,7 @@ class Sequential final : public MustangPoseSolver {
   PoseOutcome solve(double theta, MustangAngles& x) override {
     closure_.set_crank_angle(theta);
     PoseOutcome outcome;
+    failed_loop_ = 0;
     for (int k = 0; k < MustangClosure::loops; ++k) {
       // The loop's known part reads the unknowns already solved; Newton finds its own pair.
       loop_.terms = closure_.loop(k, x);
@@ -35,7 +36,7 @@ class Sequential final : public MustangPoseSolver {
       outcome.iterations += result.iterations;
       if (result.status != Status::converged) {
         outcome.status = result.status;
-        outcome.failed_loop = k + 1;
+        failed_loop_ = k + 1;
         break;
       }
     }
@@ -54,9 +55,10 @@ class Analytic final : public MustangPoseSolver {
  public:
   PoseOutcome solve(double theta, MustangAngles& x) override {
     const MustangClosedForm exact = linkage_.closed_form(theta);
-    if (exact.status != Status::converged) return {exact.status, 0, 0.0, exact.failed_loop};
+    failed_loop_ = exact.failed_loop;
+    if (exact.status != Status::converged) return {exact.status, 0, 0.0};
     x = MustangLinkage::angles_of(exact.joints, x);
-    return {Status::converged, 0, 0.0, 0};
+    return {Status::converged, 0, 0.0};
   }
 
  private:

@@ -181,14 +181,14 @@ MustangLimit MustangSweepStepper::diagnose(double failed_deg, const PoseOutcome&
   limit.reached = true;
   limit.last_assembled_deg = deg_;
   limit.failed_deg = failed_deg;
-  limit.solver_loop = outcome.failed_loop;
+  limit.solver_loop = solver_.failed_loop();  // of the last solve, the one that failed
   const MustangClosedForm beyond = linkage_.closed_form((deg_ + direction_ * marching_.resolution_deg) * degrees);
   if (beyond.status == Status::cannot_assemble) {
     limit.status = Status::cannot_assemble;
     limit.loop = beyond.failed_loop;
   } else {
     limit.status = outcome.status == Status::converged ? Status::no_progress : outcome.status;  // left the branch
-    limit.loop = outcome.failed_loop;
+    limit.loop = solver_.failed_loop();
   }
   return limit;
 }

@@ -30,7 +30,7 @@ class FullNewtonPoseSolver final : public PoseSolver<Angles> {
     closure_.set_crank_angle(input_angle);
     const auto result = newton_.solve(typename Closure::Vector(x));
     x = result.x;
-    return {result.status, result.iterations, result.residual_norm, 0};
+    return {result.status, result.iterations, result.residual_norm};
   }
 
  private:

@@ -22,7 +22,7 @@ class GslPoseSolver final : public PoseSolver<Angles> {
     closure_.set_crank_angle(input_angle);
     const auto result = gsl_.solve(x, options_);
     if (result.x.allFinite()) x = result.x;  // a failed solve may end at no point at all
-    return {result.status, result.iterations, result.residual_norm, 0};
+    return {result.status, result.iterations, result.residual_norm};
   }
 
  private:

@@ -114,6 +114,7 @@ class JansenSweepStepper {
   bool finish(Status status);
   PoseOutcome advance_to(double target_deg);
   PoseOutcome solve_pose(double deg, double step_deg, Eigen::VectorXd& x);
+  [[gnu::noinline]] void notify(double deg, double step_deg, const PoseOutcome& outcome, const Eigen::VectorXd& x);
 
   JansenModel model_;
   JansenPoseSolver& solver_;

@@ -16,7 +16,6 @@ struct PoseOutcome {
   Status status = Status::converged;
   int iterations = 0;
   double residual_norm = 0.0;  // ||f||_inf of the whole closure at the end
-  int failed_loop = 0;         // a solver that works loop by loop: the loop (1 ...) that did not close, else 0
 };
 
 // Angles: the linkage's unknowns (an Eigen vector).
@@ -26,6 +25,12 @@ class PoseSolver {
   virtual ~PoseSolver() = default;
   // Solves the closure at `input_angle` (radians), starting from `x`, which it overwrites.
   virtual PoseOutcome solve(double input_angle, Angles& x) = 0;
+  // A solver that works loop by loop (the Mustang's sequential and analytic): the loop (1 ...)
+  // that its last solve could not close, else 0.
+  int failed_loop() const { return failed_loop_; }
+
+ protected:
+  int failed_loop_ = 0;
 };
 
 }  // namespace numlab::mechanisms
