@@ -14,6 +14,7 @@
 #include "numlab/nonlinear/linear_step.hpp"
 #include "scenes/jansen_scene.hpp"
 #include "commands/mustang_command.hpp"
+#include "commands/sweep_tracer.hpp"
 #include "output/table.hpp"
 
 namespace numlab::cli {
@@ -21,6 +22,7 @@ namespace numlab::cli {
 namespace {
 
 using mechanisms::JansenModel;
+using Tracer = SweepTracer<mechanisms::JansenSweepStepper>;
 
 double parse_degrees(const std::string& token, const std::string& whole) {
   double value = 0.0;
@@ -54,13 +56,13 @@ void print_csv(std::ostream& out, JansenModel model, const mechanisms::JansenSwe
     out << fmt::format("{:.10g}", pose.crank_deg);
     for (double angle : pose.angles) out << fmt::format(",{:.17g}", angle);
     for (const auto& joint : pose.joints) out << fmt::format(",{:.17g},{:.17g}", joint.x(), joint.y());
-    out << fmt::format(",{},{:.6g},{},{:.10g}\n", pose.outcome.iterations, pose.outcome.residual_inf,
+    out << fmt::format(",{},{:.6g},{},{:.10g}\n", pose.outcome.iterations, pose.outcome.residual_norm,
                        to_string(pose.outcome.status), foot_speed(model, pose));
   }
 }
 
 nlohmann::ordered_json json_of(const std::string& name, const std::string& solver, JansenModel model,
-                               const mechanisms::JansenSweep& sweep, double time_s) {
+                               const mechanisms::JansenSweep& sweep, const Tracer* tracer, double time_s) {
   const auto names = mechanisms::jansen_angle_names(model);
   nlohmann::ordered_json out = {{"mechanism", name}, {"solver", solver}, {"poses", nlohmann::ordered_json::array()}};
   for (const auto& pose : sweep.poses) {
@@ -74,7 +76,7 @@ nlohmann::ordered_json json_of(const std::string& name, const std::string& solve
                             {"joints", joints},
                             {"foot_speed", number_or_null(foot_speed(model, pose))},
                             {"iterations", pose.outcome.iterations},
-                            {"residual_inf", pose.outcome.residual_inf},
+                            {"residual_inf", pose.outcome.residual_norm},
                             {"status", std::string(to_string(pose.outcome.status))}});
   }
   out["status"] = std::string(to_string(sweep.status));
@@ -83,6 +85,10 @@ nlohmann::ordered_json json_of(const std::string& name, const std::string& solve
   out["branch_kept"] = sweep.orientation_kept;
   out["step_halvings"] = sweep.step_halvings;
   out["time_s"] = time_s;
+  if (tracer != nullptr) {
+    out["trace"] = nlohmann::ordered_json::array();
+    for (const auto& attempt : tracer->attempts()) out["trace"].push_back(attempt_json(attempt));
+  }
   return out;
 }
 
@@ -103,7 +109,7 @@ void print_text(std::ostream& out, const std::string& name, const std::string& s
     const auto& pose = sweep.poses[i];
     const auto& foot = pose.joints[static_cast<std::size_t>(mechanisms::JansenJoint::F)];
     table.add_row({fmt::format("{:g}", pose.crank_deg), fmt::format("{:.6f}", foot.x()), fmt::format("{:.6f}", foot.y()),
-                   fmt::format("{:.4f}", foot_speed(model, pose)), std::to_string(pose.outcome.iterations), scientific(pose.outcome.residual_inf),
+                   fmt::format("{:.4f}", foot_speed(model, pose)), std::to_string(pose.outcome.iterations), scientific(pose.outcome.residual_norm),
                    std::string(to_string(pose.outcome.status))});
   }
   table.print(out);
@@ -167,8 +173,13 @@ int MechanismCommand::run() const {
   if (common_.tolerance) options.residual_tolerance = *common_.tolerance;
   if (common_.max_iterations) options.max_iterations = *common_.max_iterations;
   const auto solver = mechanisms::make_jansen_solver(model, solver_, linear_, options);
+  // --trace: every pose attempt, printed as it happens (stderr) or kept for the JSON; --step
+  // pauses after each one.
+  Tracer tracer(common_.trace && common_.format != Format::json ? &std::cerr : nullptr, common_.step);
+  const bool observed = common_.trace || common_.step;
   const auto begin = std::chrono::steady_clock::now();
-  const mechanisms::JansenSweep sweep = mechanisms::crank_sweep(model, *solver, range.start, range.stop, range.step);
+  const mechanisms::JansenSweep sweep = mechanisms::crank_sweep(model, *solver, range.start, range.stop, range.step, {},
+                                                                observed ? &tracer : nullptr);
   const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 
   if (!sweep.poses.empty()) {
@@ -177,7 +188,7 @@ int MechanismCommand::run() const {
     if (!beest_.empty()) write_file_atomically(beest_, beest_svg(sweep, beest_seconds_));
   }
   if (common_.format == Format::json) {
-    std::cout << json_of(name_, solver_, model, sweep, time_s).dump(2) << '\n';
+    std::cout << json_of(name_, solver_, model, sweep, common_.trace ? &tracer : nullptr, time_s).dump(2) << '\n';
   } else if (common_.format == Format::csv) {
     print_csv(std::cout, model, sweep);
   } else {

@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
+#include <numbers>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "commands/sweep_tracer.hpp"
 #include "scenes/mustang_scene.hpp"
 #include "output/table.hpp"
 
@@ -15,6 +18,20 @@ namespace {
 
 using mechanisms::MustangLimit;
 using mechanisms::MustangSweep;
+using mechanisms::SweepAttempt;
+using Tracer = SweepTracer<mechanisms::MustangSweepStepper>;
+
+constexpr double degrees = std::numbers::pi / 180.0;
+
+// kappa_2 of J and the smallest loop margin where an attempt ended (NaN where it ended at no point).
+double condition_of(const SweepAttempt& attempt) {
+  return attempt.angles.allFinite() ? mechanisms::mustang_condition(attempt.crank_deg * degrees, attempt.angles)
+                                    : std::nan("");
+}
+double margin_of(const SweepAttempt& attempt) {
+  return attempt.angles.allFinite() ? mechanisms::mustang_smallest_margin(attempt.crank_deg * degrees, attempt.angles)
+                                    : std::nan("");
+}
 
 std::string loop_name(int loop) {
   return loop >= 1 && loop <= 4 ? std::string(mechanisms::mustang_loop_names[static_cast<std::size_t>(loop - 1)])
@@ -57,22 +74,17 @@ nlohmann::ordered_json assembly_range(const MustangSweep& sweep) {
   return {end(sweep.lower), end(sweep.upper)};
 }
 
-nlohmann::ordered_json trace_json(const MustangSweep& sweep) {
+nlohmann::ordered_json trace_json(const std::vector<SweepAttempt>& attempts) {
   nlohmann::ordered_json trace = nlohmann::ordered_json::array();
-  for (const auto& attempt : sweep.trace) {
-    trace.push_back({{"crank_deg", attempt.crank_deg},
-                     {"step_deg", attempt.step_deg},
-                     {"iterations", attempt.outcome.iterations},
-                     {"residual_inf", number_or_null(attempt.outcome.residual_inf)},
-                     {"status", std::string(to_string(attempt.outcome.status))},
-                     {"condition", number_or_null(attempt.condition)},
-                     {"margin", number_or_null(attempt.margin)},
-                     {"accepted", attempt.accepted}});
+  for (const auto& attempt : attempts) {
+    trace.push_back(attempt_json(attempt, {{"condition", number_or_null(condition_of(attempt))},
+                                           {"margin", number_or_null(margin_of(attempt))}}));
   }
   return trace;
 }
 
-nlohmann::ordered_json json_of(const MustangRequest& request, const MustangSweep& sweep, double time_s) {
+nlohmann::ordered_json json_of(const MustangRequest& request, const MustangSweep& sweep, const Tracer& tracer,
+                               double time_s) {
   nlohmann::ordered_json out = {{"mechanism", "mustang"}, {"solver", request.solver}, {"poses", nlohmann::ordered_json::array()}};
   for (const auto& pose : sweep.poses) {
     nlohmann::ordered_json angles, joints;
@@ -84,7 +96,7 @@ nlohmann::ordered_json json_of(const MustangRequest& request, const MustangSweep
                             {"angles", angles},
                             {"joints", joints},
                             {"iterations", pose.outcome.iterations},
-                            {"residual_inf", pose.outcome.residual_inf},
+                            {"residual_inf", pose.outcome.residual_norm},
                             {"status", std::string(to_string(pose.outcome.status))},
                             {"condition", number_or_null(pose.condition)}});
   }
@@ -99,7 +111,7 @@ nlohmann::ordered_json json_of(const MustangRequest& request, const MustangSweep
   out["branch_kept"] = sweep.branch_kept;
   out["step_halvings"] = sweep.step_halvings;
   out["time_s"] = time_s;
-  if (request.common.trace) out["trace"] = trace_json(sweep);
+  if (request.common.trace) out["trace"] = trace_json(tracer.attempts());
   return out;
 }
 
@@ -112,18 +124,19 @@ void print_csv(std::ostream& out, const MustangSweep& sweep) {
     out << fmt::format("{:.10g}", pose.crank_deg);
     for (double angle : pose.angles) out << fmt::format(",{:.17g}", angle);
     for (const auto& joint : pose.joints) out << fmt::format(",{:.17g},{:.17g}", joint.x(), joint.y());
-    out << fmt::format(",{},{:.6g},{},{:.6g}\n", pose.outcome.iterations, pose.outcome.residual_inf,
+    out << fmt::format(",{},{:.6g},{},{:.6g}\n", pose.outcome.iterations, pose.outcome.residual_norm,
                        to_string(pose.outcome.status), pose.condition);
   }
 }
 
 // --trace: every solve the sweep tried, in the order tried (stderr).
-void print_trace(std::ostream& out, const MustangSweep& sweep) {
+void print_trace(std::ostream& out, const std::vector<SweepAttempt>& attempts) {
   Table table({"theta (deg)", "step", "iterations", "||f||_inf", "kappa(J)", "margin", "status", "kept"});
-  for (const auto& attempt : sweep.trace) {
+  for (const auto& attempt : attempts) {
     table.add_row({fmt::format("{:.5f}", attempt.crank_deg), fmt::format("{:+.5f}", attempt.step_deg),
-                   std::to_string(attempt.outcome.iterations), scientific(attempt.outcome.residual_inf),
-                   scientific(attempt.condition), scientific(attempt.margin), std::string(to_string(attempt.outcome.status)),
+                   std::to_string(attempt.outcome.iterations), scientific(attempt.outcome.residual_norm),
+                   scientific(condition_of(attempt)), scientific(margin_of(attempt)),
+                   std::string(to_string(attempt.outcome.status)),
                    attempt.accepted ? "yes" : "no"});
   }
   table.print(out);
@@ -146,7 +159,7 @@ void print_text(std::ostream& out, const MustangRequest& request, const MustangS
     table.add_row({fmt::format("{:g}", pose.crank_deg), fmt::format("{:.6f}", pose.angles(2)),
                    fmt::format("{:.6f}", pose.angles(3)), fmt::format("{:.6f}", pose.joints[12].x()),
                    fmt::format("{:.6f}", pose.joints[12].y()), std::to_string(pose.outcome.iterations),
-                   scientific(pose.outcome.residual_inf), scientific(pose.condition),
+                   scientific(pose.outcome.residual_norm), scientific(pose.condition),
                    std::string(to_string(pose.outcome.status))});
   }
   if (!sweep.poses.empty()) table.print(out);
@@ -173,10 +186,14 @@ int run_mustang(const MustangRequest& request) {
   options.residual_tolerance = request.common.tolerance.value_or(1e-12);
   options.max_iterations = request.common.max_iterations.value_or(50);
   const auto solver = mechanisms::make_mustang_solver(request.solver, request.linear, options);
-  mechanisms::MustangSweepOptions sweep_options;
-  sweep_options.trace = request.common.trace;
+  // --trace keeps every attempt (printed as a table afterwards, or in the JSON); --step also
+  // prints each attempt as it happens and pauses after it.
+  const bool text = request.common.format != Format::json;
+  Tracer tracer(request.common.step && text ? &std::cerr : nullptr, request.common.step);
+  const bool observed = request.common.trace || request.common.step;
   const auto begin = std::chrono::steady_clock::now();
-  const MustangSweep sweep = mechanisms::mustang_sweep(*solver, request.start, request.stop, request.step, sweep_options);
+  const MustangSweep sweep =
+      mechanisms::mustang_sweep(*solver, request.start, request.stop, request.step, {}, observed ? &tracer : nullptr);
   const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 
   if (!sweep.poses.empty()) {
@@ -184,9 +201,9 @@ int run_mustang(const MustangRequest& request) {
     if (!request.animate.empty()) write_file_atomically(request.animate, mustang_animation_svg(sweep, 0.08 * static_cast<double>(sweep.poses.size())));
   }
   if (request.common.format == Format::json) {
-    std::cout << json_of(request, sweep, time_s).dump(2) << '\n';
+    std::cout << json_of(request, sweep, tracer, time_s).dump(2) << '\n';
   } else {
-    if (request.common.trace) print_trace(std::cerr, sweep);
+    if (request.common.trace) print_trace(std::cerr, tracer.attempts());
     if (request.common.format == Format::csv) {
       print_csv(std::cout, sweep);
     } else {

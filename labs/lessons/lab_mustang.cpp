@@ -48,14 +48,14 @@ std::string verdict(const SeedMethodPose& pose, double theta, const MustangLinka
   return distance < 1e-2 ? "on the branch (to the test's 1e-3)" : fmt::format("another branch ({:.2g} away)", distance);
 }
 
-MustangSweep fixed_sweep(const std::string& solver, double start, double stop, double step, bool trace) {
+// trace, if given, keeps every solve the sweep tried.
+MustangSweep fixed_sweep(const std::string& solver, double start, double stop, double step,
+                         SweepRecorder<MustangSweepStepper>* trace = nullptr) {
   nonlinear::NewtonOptions options;
   options.residual_tolerance = 1e-12;
   options.max_iterations = 50;
   const auto pose_solver = make_mustang_solver(solver, "gepp", options);
-  MustangSweepOptions sweep_options;
-  sweep_options.trace = trace;
-  return mustang_sweep(*pose_solver, start, stop, step, sweep_options);
+  return mustang_sweep(*pose_solver, start, stop, step, {}, trace);
 }
 
 }  // namespace
@@ -141,8 +141,9 @@ int run_mustang_lab(LabSession& session) {
                      "Continuation from the seed's start at 45 deg (every loop from [pi/18, pi/2], damped), a predictor "
                      "from the last two poses, and step halving that becomes a bisection on theta near a limit. "
                      "Sweep -90:90:0.5 with full and sequential Newton:");
-  const MustangSweep full = fixed_sweep("full", -90.0, 90.0, 0.5, true);
-  const MustangSweep sequential = fixed_sweep("sequential", -90.0, 90.0, 0.5, false);
+  SweepRecorder<MustangSweepStepper> full_trace;
+  const MustangSweep full = fixed_sweep("full", -90.0, 90.0, 0.5, &full_trace);
+  const MustangSweep sequential = fixed_sweep("sequential", -90.0, 90.0, 0.5);
   double agreement = 0.0;
   for (std::size_t i = 0; i < std::min(full.poses.size(), sequential.poses.size()); ++i) {
     agreement = std::max(agreement, (full.poses[i].angles - sequential.poses[i].angles).lpNorm<Eigen::Infinity>());
@@ -170,11 +171,13 @@ int run_mustang_lab(LabSession& session) {
                      "assemblies of loop 3 meet and J is singular there). Then one solve at a time, iteration by "
                      "iteration.");
   Table near({"theta (deg)", "step", "iterations", "||f||_inf", "kappa(J)", "margin", "status", "kept"});
-  for (const auto& attempt : full.trace) {
+  for (const auto& attempt : full_trace.attempts()) {
     if (attempt.crank_deg < 55.0) continue;
     near.add_row({fmt::format("{:.5f}", attempt.crank_deg), fmt::format("{:+.5f}", attempt.step_deg),
-                  std::to_string(attempt.outcome.iterations), scientific(attempt.outcome.residual_inf),
-                  scientific(attempt.condition), scientific(attempt.margin), std::string(to_string(attempt.outcome.status)),
+                  std::to_string(attempt.outcome.iterations), scientific(attempt.outcome.residual_norm),
+                  scientific(attempt.angles.allFinite() ? mustang_condition(attempt.crank_deg * degrees, attempt.angles) : std::nan("")),
+                  scientific(attempt.angles.allFinite() ? mustang_smallest_margin(attempt.crank_deg * degrees, attempt.angles)
+                                                        : std::nan("")), std::string(to_string(attempt.outcome.status)),
                   attempt.accepted ? "yes" : "no"});
   }
   session.show(near, "upper-limit-trace");
@@ -204,7 +207,7 @@ int run_mustang_lab(LabSession& session) {
 
   session.begin_step("The scenes", "The linkage at 45 deg with the path of the roof tip P12, and the sweep animated "
                                    "forth and back (open the SVG files in a browser).");
-  const MustangSweep scene = fixed_sweep("full", -41.0, 56.0, 1.0, false);
+  const MustangSweep scene = fixed_sweep("full", -41.0, 56.0, 1.0);
   std::size_t at45 = 0;
   while (at45 + 1 < scene.poses.size() && scene.poses[at45].crank_deg < 45.0) ++at45;
   const std::string still = write_lab_file(session, "mustang.svg", mustang_pose_svg(scene, at45));

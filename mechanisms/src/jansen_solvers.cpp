@@ -6,16 +6,15 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "numlab/linalg/eigen_reference.hpp"
-#include "numlab/linalg/gauss_elimination.hpp"
-#include "numlab/linalg/gauss_seidel.hpp"
+#include "numlab/force_inline.hpp"
 #include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/mechanisms/dyad_newton.hpp"
+#include "numlab/mechanisms/full_newton_pose_solver.hpp"
+#include "numlab/mechanisms/gsl_pose_solver.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/nonlinear/block_order.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
-#include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/sequential_newton.hpp"
 
 namespace numlab::mechanisms {
@@ -26,27 +25,6 @@ constexpr double degrees = std::numbers::pi / 180.0;
 std::size_t at(JansenJoint joint) { return static_cast<std::size_t>(joint); }
 Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
 double direction(const Eigen::Vector2d& from, const Eigen::Vector2d& to) { return std::atan2(to.y() - from.y(), to.x() - from.x()); }
-
-PoseOutcome outcome_of(const nonlinear::NewtonCounts& result) { return {result.status, result.iterations, result.residual_norm}; }
-
-// Full Newton on a fixed-size closure (8 or 10 equations) with a compile-time linear solver.
-template <typename Closure, typename LinearStep>
-class FullNewton final : public JansenPoseSolver {
- public:
-  explicit FullNewton(const nonlinear::NewtonOptions& options) : closure_(0.0), newton_(closure_, options) {}
-  FullNewton(const nonlinear::NewtonOptions& options, LinearStep linear_step)
-      : closure_(0.0), newton_(closure_, options, std::move(linear_step)) {}
-  PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
-    closure_.set_crank_angle(crank_angle);
-    const auto result = newton_.solve(typename Closure::Vector(angles));
-    angles = result.x;
-    return outcome_of(result);
-  }
-
- private:
-  Closure closure_;
-  nonlinear::Newton<Closure, LinearStep> newton_;
-};
 
 // Seed 000's sequential solve: the dyads (theta1, theta2), (theta3, theta4), (theta6, theta7),
 // (theta5, theta8), each by its own Newton with the closed-form 2x2 inverse (dyad_newton.hpp). A
@@ -73,7 +51,7 @@ class SequentialEight final : public JansenPoseSolver {
       total.iterations += newton.iterations();
       // Block lower-triangular: a block's equations never see later unknowns, so its final
       // residual is its part of the whole system's, and the maximum over blocks is ||f||_inf.
-      total.residual_inf = std::max(total.residual_inf, newton.residual_norm());
+      total.residual_norm = std::max(total.residual_norm, newton.residual_norm());
       if (status != Status::converged) total.status = status;
       return status == Status::converged;
     };
@@ -116,26 +94,6 @@ class SequentialDerived final : public JansenPoseSolver {
   std::vector<nonlinear::Block> blocks_;
 };
 
-// One of GSL's solvers, allocated once and reused for every pose (as FullNewton's Newton is).
-template <typename Closure>
-class GslSolver final : public JansenPoseSolver {
- public:
-  GslSolver(const std::string& type, const nonlinear::NewtonOptions& options)
-      : options_(options), closure_(0.0), dynamic_(closure_), gsl_(dynamic_, type, options) {}
-  PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
-    closure_.set_crank_angle(crank_angle);
-    const auto result = gsl_.solve(angles);
-    angles = result.x;
-    return {result.status, result.iterations, result.residual_norm};
-  }
-
- private:
-  nonlinear::NewtonOptions options_;
-  Closure closure_;
-  nonlinear::AsDynamicSystem<Closure> dynamic_;
-  nonlinear::GslMultiroot gsl_;
-};
-
 // The closed form, producing the same outputs (the angles) as the iterative solvers.
 class Analytic final : public JansenPoseSolver {
  public:
@@ -165,24 +123,6 @@ void predict_next_pose(const Eigen::MatrixXd& poses, int next, Eigen::VectorXd& 
     case 4: prediction = 4 * pose(1) - 6 * pose(2) + 4 * pose(3) - pose(4); break;
     default: prediction = 5 * pose(1) - 10 * pose(2) + 10 * pose(3) - 5 * pose(4) + pose(5); break;
   }
-}
-
-template <typename Closure>
-std::unique_ptr<JansenPoseSolver> make_full(const std::string& linear, const nonlinear::NewtonOptions& options) {
-  constexpr int N = Closure::size;
-  if (linear == "gepp") return std::make_unique<FullNewton<Closure, linalg::GaussElimination<N>>>(options);
-  if (linear == "gauss-seidel") {
-    // An inexact inner solve slows Newton down, a very inexact one stops it: sweep the normal
-    // equations until the update is far below Newton's own tolerance.
-    linalg::GaussSeidelOptions inner;
-    inner.tolerance = std::min(1e-9, 1e-3 * options.residual_tolerance);
-    inner.max_iterations = 100000;
-    return std::make_unique<FullNewton<Closure, linalg::GaussSeidel<N>>>(options, linalg::GaussSeidel<N>(inner));
-  }
-  if (linear == "gsl-lu") return std::make_unique<FullNewton<Closure, nonlinear::GslLuStep<N>>>(options);
-  if (linear == "eigen-lu") return std::make_unique<FullNewton<Closure, linalg::EigenLu<N>>>(options);
-  throw std::invalid_argument("unknown linear method '" + linear + "' for full Newton (expected gepp, gauss-seidel, "
-                              "gsl-lu or eigen-lu)");
 }
 
 }  // namespace
@@ -245,7 +185,10 @@ const std::vector<std::string>& jansen_solver_names() {
 std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const std::string& solver,
                                                      const std::string& linear, const nonlinear::NewtonOptions& options) {
   const bool eight = model == JansenModel::eight_equations;
-  if (solver == "full") return eight ? make_full<JansenClosure>(linear, options) : make_full<Jansen10Closure>(linear, options);
+  if (solver == "full") {
+    return eight ? make_full_newton<JansenClosure, Eigen::VectorXd>(linear, options)
+                 : make_full_newton<Jansen10Closure, Eigen::VectorXd>(linear, options);
+  }
   if (solver == "sequential") {
     if (eight) return std::make_unique<SequentialEight>(options);
     return std::make_unique<SequentialDerived<Jansen10Closure>>(options, jansen_seed_estimates(model, JansenLeg()));
@@ -257,108 +200,171 @@ std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const st
     if (std::find(types.begin(), types.end(), type) == types.end()) {
       throw std::invalid_argument("unknown solver '" + solver + "'");
     }
-    if (eight) return std::make_unique<GslSolver<JansenClosure>>(type, options);
-    return std::make_unique<GslSolver<Jansen10Closure>>(type, options);
+    if (eight) return std::make_unique<GslPoseSolver<JansenClosure, Eigen::VectorXd>>(type, options);
+    return std::make_unique<GslPoseSolver<Jansen10Closure, Eigen::VectorXd>>(type, options);
   }
   throw std::invalid_argument("unknown solver '" + solver + "' (expected full, sequential, analytic or gsl-<type>)");
 }
 
-JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
-                                    double step_deg) {
+void JansenSweepStepper::start(double start_deg, double stop_deg, double step_deg) {
   if (!(step_deg != 0.0) || !std::isfinite(start_deg) || !std::isfinite(stop_deg) || !std::isfinite(step_deg) ||
       (stop_deg - start_deg) * step_deg < 0.0) {
     throw std::invalid_argument("sweep " + std::to_string(start_deg) + ":" + std::to_string(stop_deg) + ":" +
                                 std::to_string(step_deg) + " does not step from its start towards its stop");
   }
-  JansenSweepAngles sweep;
-  Eigen::VectorXd angles = jansen_seed_estimates(model, JansenLeg());
-  double current_deg = JansenClosure::seed_crank_angle / degrees;
+  sweep_ = JansenSweepAngles{};
+  start_deg_ = start_deg;
+  step_deg_ = step_deg;
+  count_ = static_cast<int>(std::floor((stop_deg - start_deg) / step_deg + 1e-9)) + 1;
+  next_ = 0;
+  poses_ = 0;
+  angles_ = jansen_seed_estimates(model_, JansenLeg());
+  trial_ = angles_;  // buffer reused from pose to pose (no allocation per pose)
+  current_deg_ = JansenClosure::seed_crank_angle / degrees;
+  phase_ = Phase::seed;
+  status_ = Status::running;
+}
 
-  // Moves from current_deg to target_deg: tries the whole step; when a solve fails, halves the
-  // step and tries again from the last pose that solved (at most 20 halvings in all).
-  Eigen::VectorXd trial = angles;  // buffer reused from pose to pose (no allocation per pose)
-  auto advance_to = [&](double target_deg) -> PoseOutcome {
-    double reached = current_deg, step = target_deg - current_deg;
-    int halvings = 0;
-    while (true) {
-      const bool whole_way = step == target_deg - reached;
-      const double next = whole_way ? target_deg : reached + step;
-      trial = angles;
-      const PoseOutcome outcome = solver.solve(next * degrees, trial);
-      if (outcome.status == Status::converged) {
-        angles = trial;
-        reached = next;
-        if (whole_way) return outcome;
-        step = target_deg - reached;  // aim for the target again
-      } else {
-        if (++halvings > 20) return outcome;
-        ++sweep.step_halvings;
-        step *= 0.5;
-      }
-    }
-  };
-
-  // Solve at 1.57 rad from the seed's estimates, then walk to the first requested angle.
-  PoseOutcome outcome = solver.solve(current_deg * degrees, angles);
-  if (outcome.status != Status::converged) {
-    sweep.status = outcome.status;
-    return sweep;
+bool JansenSweepStepper::step() {
+  switch (phase_) {
+    case Phase::requested: return solve_requested_pose();
+    case Phase::walk_in: return walk_in_one_pose();
+    case Phase::seed: return solve_seed_pose();
+    case Phase::finished: break;
   }
-  const double walk_step = std::abs(step_deg);
-  while (std::abs(start_deg - current_deg) > 1e-12) {
-    const double next = std::abs(start_deg - current_deg) <= walk_step
-                            ? start_deg
-                            : current_deg + std::copysign(walk_step, start_deg - current_deg);
-    outcome = advance_to(next);
-    if (outcome.status != Status::converged) {
-      sweep.status = outcome.status;
-      return sweep;
-    }
-    current_deg = next;
-    ++sweep.walk_in_poses;
-  }
+  return false;
+}
 
-  // Storage for every pose, allocated once: the loop below allocates nothing.
-  const int count = static_cast<int>(std::floor((stop_deg - start_deg) / step_deg + 1e-9)) + 1;
-  sweep.angles.resize(angles.size(), count);
-  sweep.crank_deg.reserve(static_cast<std::size_t>(count));
-  sweep.outcomes.reserve(static_cast<std::size_t>(count));
-  for (int i = 0; i < count; ++i) {
-    const double target = start_deg + i * step_deg;
-    if (i > 0) {
-      // The usual case: one solve from the prediction (made in `trial`, so that `angles` keeps the
-      // last pose solved for the fallbacks).
-      predict_next_pose(sweep.angles, i, trial);
-      outcome = solver.solve(target * degrees, trial);
-      if (outcome.status == Status::converged) {
-        angles.swap(trial);
-      } else {
-        // Halve the step from the prediction; if that fails too, from the last pose.
-        predict_next_pose(sweep.angles, i, angles);
-        outcome = advance_to(target);
-        if (outcome.status != Status::converged && i > 1) {
-          angles = sweep.angles.col(i - 1);
-          outcome = advance_to(target);
-        }
-      }
+JansenSweepAngles JansenSweepStepper::solve(double start_deg, double stop_deg, double step_deg) {
+  start(start_deg, stop_deg, step_deg);
+  while (step()) {
+  }
+  return std::move(sweep_);
+}
+
+bool JansenSweepStepper::finish(Status status) {
+  sweep_.status = status;
+  status_ = status;
+  phase_ = Phase::finished;
+  return false;
+}
+
+// One solve, shown to the observer if there is one.
+NUMLAB_FORCE_INLINE PoseOutcome JansenSweepStepper::solve_pose(double deg, double step_deg, Eigen::VectorXd& x) {
+  const PoseOutcome outcome = solver_.solve(deg * degrees, x);
+  if (observer_ != nullptr) [[unlikely]] notify(deg, step_deg, outcome, x);
+  return outcome;
+}
+
+void JansenSweepStepper::notify(double deg, double step_deg, const PoseOutcome& outcome, const Eigen::VectorXd& x) {
+  observer_->on_step(*this, {deg, step_deg, outcome, outcome.status == Status::converged, x});
+}
+
+// Moves from current_deg_ to target_deg: tries the whole step; when a solve fails, halves the
+// step and tries again from the last pose that solved (at most max_halvings halvings in all).
+PoseOutcome JansenSweepStepper::advance_to(double target_deg) {
+  double reached = current_deg_, step = target_deg - current_deg_;
+  int halvings = 0;
+  while (true) {
+    const bool whole_way = step == target_deg - reached;
+    const double next = whole_way ? target_deg : reached + step;
+    trial_ = angles_;
+    const PoseOutcome outcome = solve_pose(next, next - reached, trial_);
+    if (outcome.status == Status::converged) {
+      angles_ = trial_;
+      reached = next;
+      if (whole_way) return outcome;
+      step = target_deg - reached;  // aim for the target again
     } else {
-      outcome = solver.solve(target * degrees, angles);  // refine at the start itself
+      if (++halvings > options_.max_halvings) return outcome;
+      ++sweep_.step_halvings;
+      step *= 0.5;
     }
-    if (outcome.status != Status::converged) {
-      sweep.status = outcome.status;
-      break;
-    }
-    current_deg = target;
-    sweep.angles.col(i) = angles;
-    sweep.crank_deg.push_back(target);
-    sweep.outcomes.push_back(outcome);
   }
-  return sweep;
+}
+
+// 1. The pose at 1.57 rad, from the seed's estimates.
+bool JansenSweepStepper::solve_seed_pose() {
+  const PoseOutcome outcome = solve_pose(current_deg_, 0.0, angles_);
+  if (outcome.status != Status::converged) return finish(outcome.status);
+  ++poses_;
+  if (std::abs(start_deg_ - current_deg_) > 1e-12) {
+    phase_ = Phase::walk_in;
+  } else {
+    begin_requested_poses();
+  }
+  return true;
+}
+
+// 2. One pose of the walk from 1.57 rad to the first requested angle.
+bool JansenSweepStepper::walk_in_one_pose() {
+  const double walk_step = std::abs(step_deg_);
+  const double next = std::abs(start_deg_ - current_deg_) <= walk_step
+                          ? start_deg_
+                          : current_deg_ + std::copysign(walk_step, start_deg_ - current_deg_);
+  const PoseOutcome outcome = advance_to(next);
+  if (outcome.status != Status::converged) return finish(outcome.status);
+  current_deg_ = next;
+  ++sweep_.walk_in_poses;
+  ++poses_;
+  if (std::abs(start_deg_ - current_deg_) <= 1e-12) begin_requested_poses();
+  return true;
+}
+
+// Storage for every requested pose, allocated once: the requested poses allocate nothing.
+void JansenSweepStepper::begin_requested_poses() {
+  sweep_.angles.resize(angles_.size(), count_);
+  sweep_.crank_deg.reserve(static_cast<std::size_t>(count_));
+  sweep_.outcomes.reserve(static_cast<std::size_t>(count_));
+  phase_ = Phase::requested;
+}
+
+// 3. The next requested angle.
+bool JansenSweepStepper::solve_requested_pose() {
+  const int i = next_;
+  const double target = start_deg_ + i * step_deg_;
+  PoseOutcome outcome;
+  if (i > 0) {
+    // The usual case: one solve from the prediction (made in trial_, so that angles_ keeps the
+    // last pose solved for the fallbacks).
+    predict_next_pose(sweep_.angles, i, trial_);
+    outcome = solve_pose(target, target - current_deg_, trial_);
+    if (outcome.status == Status::converged) {
+      angles_.swap(trial_);
+    } else {
+      // 4. Halve the step from the prediction; if that fails too, from the last pose.
+      predict_next_pose(sweep_.angles, i, angles_);
+      outcome = advance_to(target);
+      if (outcome.status != Status::converged && i > 1) {
+        angles_ = sweep_.angles.col(i - 1);
+        outcome = advance_to(target);
+      }
+    }
+  } else {
+    outcome = solve_pose(target, target - current_deg_, angles_);  // refine at the start itself
+  }
+  if (outcome.status != Status::converged) return finish(outcome.status);
+  current_deg_ = target;
+  sweep_.angles.col(i) = angles_;
+  sweep_.crank_deg.push_back(target);
+  sweep_.outcomes.push_back(outcome);
+  ++poses_;
+  if (++next_ == count_) return finish(Status::converged);
+  return true;
+}
+
+JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
+                                    double step_deg, const JansenSweepOptions& options,
+                                    SweepObserver<JansenSweepStepper>* observer) {
+  JansenSweepStepper stepper(model, solver, options);
+  stepper.set_observer(observer);
+  return stepper.solve(start_deg, stop_deg, step_deg);
 }
 
 JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
-                        double step_deg) {
-  const JansenSweepAngles solved = solve_crank_sweep(model, solver, start_deg, stop_deg, step_deg);
+                        double step_deg, const JansenSweepOptions& options,
+                        SweepObserver<JansenSweepStepper>* observer) {
+  const JansenSweepAngles solved = solve_crank_sweep(model, solver, start_deg, stop_deg, step_deg, options, observer);
   const JansenLeg leg;
   JansenSweep sweep;
   sweep.status = solved.status;
@@ -371,6 +377,10 @@ JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double star
     pose.angles = solved.angles.col(static_cast<Eigen::Index>(i));
     pose.outcome = solved.outcomes[i];
     pose.joints = jansen_joints(model, leg, pose.crank_deg * degrees, pose.angles);
+    if (!options.checks) {
+      sweep.poses.push_back(std::move(pose));
+      continue;
+    }
     pose.length_error = leg.worst_length_error(pose.joints);
     if (const auto exact = leg.closed_form_joints(pose.crank_deg * degrees)) {
       for (int j = 0; j < jansen_joint_count; ++j) {

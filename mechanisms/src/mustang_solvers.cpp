@@ -4,14 +4,10 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "numlab/linalg/eigen_reference.hpp"
-#include "numlab/linalg/gauss_elimination.hpp"
-#include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/mechanisms/full_newton_pose_solver.hpp"
+#include "numlab/mechanisms/gsl_pose_solver.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
-#include "numlab/nonlinear/dynamic_adapter.hpp"
-#include "numlab/nonlinear/gsl_multiroot.hpp"
-#include "numlab/nonlinear/linear_step.hpp"
 
 namespace numlab::mechanisms {
 
@@ -28,9 +24,10 @@ double residual_inf(const MustangClosure& closure, const MustangAngles& x) {
 class Sequential final : public MustangPoseSolver {
  public:
   explicit Sequential(const nonlinear::NewtonOptions& options) : closure_(0.0), newton_(loop_, options) {}
-  MustangOutcome solve(double theta, MustangAngles& x) override {
+  PoseOutcome solve(double theta, MustangAngles& x) override {
     closure_.set_crank_angle(theta);
-    MustangOutcome outcome;
+    PoseOutcome outcome;
+    failed_loop_ = 0;
     for (int k = 0; k < MustangClosure::loops; ++k) {
       // The loop's known part reads the unknowns already solved; Newton finds its own pair.
       loop_.terms = closure_.loop(k, x);
@@ -39,11 +36,11 @@ class Sequential final : public MustangPoseSolver {
       outcome.iterations += result.iterations;
       if (result.status != Status::converged) {
         outcome.status = result.status;
-        outcome.failed_loop = k + 1;
+        failed_loop_ = k + 1;
         break;
       }
     }
-    outcome.residual_inf = residual_inf(closure_, x);
+    outcome.residual_norm = residual_inf(closure_, x);
     return outcome;
   }
 
@@ -53,69 +50,20 @@ class Sequential final : public MustangPoseSolver {
   nonlinear::Newton<MustangLoop, linalg::ClosedForm2x2> newton_;
 };
 
-// Full Newton on all eight equations with a compile-time linear solver.
-template <typename LinearStep>
-class Full final : public MustangPoseSolver {
- public:
-  explicit Full(const nonlinear::NewtonOptions& options) : closure_(0.0), newton_(closure_, options) {}
-  Full(const nonlinear::NewtonOptions& options, LinearStep step) : closure_(0.0), newton_(closure_, options, std::move(step)) {}
-  MustangOutcome solve(double theta, MustangAngles& x) override {
-    closure_.set_crank_angle(theta);
-    const auto result = newton_.solve(x);
-    x = result.x;
-    return {result.status, result.iterations, result.residual_norm, 0};
-  }
-
- private:
-  MustangClosure closure_;
-  nonlinear::Newton<MustangClosure, LinearStep> newton_;
-};
-
-class Gsl final : public MustangPoseSolver {
- public:
-  Gsl(std::string type, const nonlinear::NewtonOptions& options)
-      : type_(std::move(type)), options_(options), closure_(0.0), dynamic_(closure_) {}
-  MustangOutcome solve(double theta, MustangAngles& x) override {
-    closure_.set_crank_angle(theta);
-    const auto result = nonlinear::gsl_multiroot_solve(dynamic_, Eigen::VectorXd(x), type_, options_);
-    if (result.x.allFinite()) x = result.x;
-    return {result.status, result.iterations, result.residual_norm, 0};
-  }
-
- private:
-  std::string type_;
-  nonlinear::NewtonOptions options_;
-  MustangClosure closure_;
-  nonlinear::AsDynamicSystem<MustangClosure> dynamic_;
-};
-
 // The closed form, giving the same outputs (the angles) as the iterative solvers.
 class Analytic final : public MustangPoseSolver {
  public:
-  MustangOutcome solve(double theta, MustangAngles& x) override {
+  PoseOutcome solve(double theta, MustangAngles& x) override {
     const MustangClosedForm exact = linkage_.closed_form(theta);
-    if (exact.status != Status::converged) return {exact.status, 0, 0.0, exact.failed_loop};
+    failed_loop_ = exact.failed_loop;
+    if (exact.status != Status::converged) return {exact.status, 0, 0.0};
     x = MustangLinkage::angles_of(exact.joints, x);
-    return {Status::converged, 0, 0.0, 0};
+    return {Status::converged, 0, 0.0};
   }
 
  private:
   MustangLinkage linkage_;
 };
-
-std::unique_ptr<MustangPoseSolver> make_full(const std::string& linear, const nonlinear::NewtonOptions& options) {
-  if (linear == "gepp") return std::make_unique<Full<linalg::GaussElimination<8>>>(options);
-  if (linear == "gauss-seidel") {
-    linalg::GaussSeidelOptions inner;  // far below Newton's tolerance, as for the Jansen leg
-    inner.tolerance = std::min(1e-9, 1e-3 * options.residual_tolerance);
-    inner.max_iterations = 100000;
-    return std::make_unique<Full<linalg::GaussSeidel<8>>>(options, linalg::GaussSeidel<8>(inner));
-  }
-  if (linear == "gsl-lu") return std::make_unique<Full<nonlinear::GslLuStep<8>>>(options);
-  if (linear == "eigen-lu") return std::make_unique<Full<linalg::EigenLu<8>>>(options);
-  throw std::invalid_argument("unknown linear method '" + linear + "' for full Newton (expected gepp, gauss-seidel, "
-                              "gsl-lu or eigen-lu)");
-}
 
 }  // namespace
 
@@ -124,12 +72,12 @@ const std::vector<std::string>& mustang_solver_names() { return jansen_solver_na
 
 std::unique_ptr<MustangPoseSolver> make_mustang_solver(const std::string& solver, const std::string& linear,
                                                        const nonlinear::NewtonOptions& options) {
-  if (solver == "full") return make_full(linear, options);
+  if (solver == "full") return make_full_newton<MustangClosure, MustangAngles>(linear, options);
   if (solver == "sequential") return std::make_unique<Sequential>(options);
   if (solver == "analytic") return std::make_unique<Analytic>();
   const auto& names = mustang_solver_names();
   if (solver.starts_with("gsl-") && std::find(names.begin(), names.end(), solver) != names.end()) {
-    return std::make_unique<Gsl>(solver.substr(4), options);
+    return std::make_unique<GslPoseSolver<MustangClosure, MustangAngles>>(solver.substr(4), options);
   }
   throw std::invalid_argument("unknown solver '" + solver + "' (expected full, sequential, analytic or gsl-<type>)");
 }

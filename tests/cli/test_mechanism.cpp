@@ -12,6 +12,7 @@
 using numlab::test::require_bad_input;
 using numlab::test::run_json;
 using numlab::test::run_numlab;
+using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
 TEST_CASE("mechanism jansen: a whole turn, every pose checked against the closed form", "[cli][mechanism]") {
@@ -92,4 +93,48 @@ TEST_CASE("mechanism --svg and --animate write the scene", "[cli][mechanism][sce
   CHECK(still_svg.find("<polygon") != std::string::npos);   // the foot path
   CHECK(moving_svg.find("repeatCount=\"indefinite\"") != std::string::npos);
   std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("mechanism jansen --trace: every pose attempt on stderr, or in the JSON", "[cli][mechanism][trace]") {
+  // Text: the poses on stdout as without --trace, and one row per attempt on stderr.
+  const auto plain = run_numlab("mechanism jansen --sweep 0:10:5");
+  const auto traced = run_numlab("mechanism jansen --sweep 0:10:5 --trace");
+  REQUIRE(traced.exit_code == 0);
+  CHECK(plain.err.empty());
+  CHECK_THAT(traced.err, Contains("crank (deg)") && Contains("converged"));
+  // From 1.57 rad (89.95 deg) the walk-in reaches 0 deg in steps of 5 deg: 89.95 ... 4.95, then 0,
+  // 5 and 10; every one of those attempts is a row, with its crank angle.
+  CHECK_THAT(traced.err, Contains("89.95437") && Contains("4.95437") && Contains("10.00000"));
+
+  // JSON: a "trace" array with one entry per attempt, in order, ending at the last pose.
+  const auto out = run_json("mechanism jansen", "--sweep 0:10:5 --trace", 0);
+  REQUIRE(out.contains("trace"));
+  const auto& trace = out["trace"];
+  // One solve at the seed's angle, 18 walk-in poses (89.95 -> 4.95 in steps of 5, then 0), and
+  // the three requested poses: 22 attempts when none fails (step_halvings 0).
+  REQUIRE(out["step_halvings"] == 0);
+  CHECK(trace.size() == 1 + 18 + 3);
+  for (const auto& attempt : trace) {
+    CHECK(attempt.contains("crank_deg"));
+    CHECK(attempt.contains("step_deg"));
+    CHECK(attempt.contains("iterations"));
+    CHECK(attempt.contains("residual_inf"));
+    CHECK(attempt["status"] == "converged");
+    CHECK(attempt["accepted"] == true);
+  }
+  CHECK(trace.back()["crank_deg"] == 10.0);
+  CHECK(trace.back()["step_deg"] == 5.0);
+  CHECK(trace.back()["iterations"] == out["poses"][2]["iterations"]);
+  // Without --trace, no "trace".
+  CHECK_FALSE(run_json("mechanism jansen", "--sweep 0:10:5", 0).contains("trace"));
+}
+
+TEST_CASE("mechanism jansen10 --trace and --step: no terminal, no pause", "[cli][mechanism][trace]") {
+  // stdin is not a terminal here, so --step must not wait for Enter.
+  const auto run = run_numlab("mechanism jansen10 --sweep 0:10:5 --trace --step");
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.err, Contains("crank (deg)"));
+  CHECK_THAT(run.err, !Contains("press Enter"));
+  const auto out = run_json("mechanism jansen10", "--sweep 0:10:5 --step", 0);
+  CHECK(out["poses"].size() == 3);
 }

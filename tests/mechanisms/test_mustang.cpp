@@ -10,6 +10,7 @@
 #include "numlab/mechanisms/mustang_solvers.hpp"
 #include "numlab/mechanisms/mustang_sweep.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
+#include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/jacobian_check.hpp"
 
 using namespace numlab;
@@ -234,5 +235,29 @@ TEST_CASE("Mustang: the seed's loop-3 Jacobian row is what stops its Newton, fro
     const SeedMethodPose fixed = seed_method_pose(deg * degrees, corrected);
     CHECK(fixed.loops[2].status == Status::converged);      // the same guess, the right Jacobian
     CHECK(fixed.loops[2].residual_inf <= 1e-3);
+  }
+}
+
+TEST_CASE("Mustang gsl-<type> pose solver: one workspace for every pose, the same results as a fresh one",
+          "[mechanisms][mustang][solvers]") {
+  nonlinear::NewtonOptions options;
+  options.residual_tolerance = 1e-12;
+  options.max_iterations = 50;
+  for (const std::string type : {"hybrids", "newton"}) {
+    INFO(type);
+    const auto reused = make_mustang_solver("gsl-" + type, "gepp", options);
+    MustangAngles x = mustang_seed_start().x;
+    for (double deg = 45.0; deg <= 55.0; deg += 2.0) {
+      // Reference: GSL's own solve with a workspace allocated for this pose alone.
+      const MustangClosure closure(deg * degrees);
+      const nonlinear::AsDynamicSystem<MustangClosure> system(closure);
+      const auto fresh = nonlinear::gsl_multiroot_solve(system, Eigen::VectorXd(x), type, options);
+      const PoseOutcome outcome = reused->solve(deg * degrees, x);
+      INFO(deg);
+      REQUIRE(outcome.status == Status::converged);
+      CHECK(outcome.iterations == fresh.iterations);
+      CHECK(outcome.residual_norm == fresh.residual_norm);
+      CHECK(x == MustangAngles(fresh.x));
+    }
   }
 }

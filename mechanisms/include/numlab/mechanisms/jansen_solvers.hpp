@@ -13,24 +13,16 @@
 #include <vector>
 
 #include "numlab/mechanisms/jansen_leg.hpp"
+#include "numlab/mechanisms/pose_solver.hpp"
+#include "numlab/mechanisms/sweep_observer.hpp"
 #include "numlab/nonlinear/newton.hpp"
 
 namespace numlab::mechanisms {
 
 enum class JansenModel { eight_equations, ten_equations };  // seed 000, seed 001
 
-struct PoseOutcome {
-  Status status = Status::converged;
-  int iterations = 0;
-  double residual_inf = 0.0;
-};
-
-class JansenPoseSolver {
- public:
-  virtual ~JansenPoseSolver() = default;
-  // Solves the closure at `crank_angle` (radians), starting from `angles`, which it overwrites.
-  virtual PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) = 0;
-};
+// The Jansen leg's pose solvers work on a dynamic vector: 8 or 10 angles, by model.
+using JansenPoseSolver = PoseSolver<Eigen::VectorXd>;
 
 // The unknowns' names: theta1 ... theta8, or theta3 ... theta12.
 std::vector<std::string> jansen_angle_names(JansenModel model);
@@ -80,15 +72,71 @@ struct JansenSweepAngles {
   int walk_in_poses = 0;
 };
 
-// Solves start, start + step, ... up to stop (degrees), each pose starting from a prediction
-// extrapolated from the poses before. The sweep begins with seed 000's estimates at 1.57 rad and,
-// if `start` is elsewhere, first walks there in steps no larger than `step`. A failed step is
-// halved (up to 20 times) before the sweep stops with that status.
-JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
-                                    double step_deg);
+struct JansenSweepOptions {
+  int max_halvings = 20;  // a failed step is halved at most this often (in all) before the sweep stops
+  bool checks = true;     // crank_sweep(): joints, lengths and orientation checked against the closed form
+};
 
-// solve_crank_sweep(), then each pose's joints and its checks against the closed form.
+// The crank sweep as a stepper (numlab/solver.hpp). Solves start, start + step, ... up to stop
+// (degrees), each pose starting from a prediction extrapolated from the poses before.
+//
+//  1. Solve at 1.57 rad from seed 000's estimates (the first step).
+//  2. If `start` is elsewhere, walk there in steps no larger than `step` (a step each).
+//  3. Solve each requested angle from the polynomial through the last poses (a step each).
+//  4. A failed solve is retried with the step halved, from the prediction and then from the last
+//     pose, up to options.max_halvings times; then the sweep stops with the solver's status.
+//
+// step() moves the sweep one pose on (its retries included); the observer sees every attempt.
+class JansenSweepStepper {
+ public:
+  JansenSweepStepper(JansenModel model, JansenPoseSolver& solver, const JansenSweepOptions& options = {})
+      : model_(model), solver_(solver), options_(options) {}
+  void set_observer(SweepObserver<JansenSweepStepper>* observer) { observer_ = observer; }
+
+  // Throws std::invalid_argument for a step of zero or one that points away from stop.
+  void start(double start_deg, double stop_deg, double step_deg);
+  bool step();
+  JansenSweepAngles solve(double start_deg, double stop_deg, double step_deg);
+
+  bool running() const { return status_ == Status::running; }
+  Status status() const { return status_; }
+  int iterations() const { return poses_; }                // poses solved so far (walk-in included)
+  const Eigen::VectorXd& x() const { return angles_; }    // the last pose solved
+  double crank_deg() const { return current_deg_; }        // ... and its crank angle
+  const JansenSweepAngles& result() const { return sweep_; }
+
+ private:
+  enum class Phase { seed, walk_in, requested, finished };
+  bool solve_seed_pose();
+  bool walk_in_one_pose();
+  bool solve_requested_pose();
+  void begin_requested_poses();
+  bool finish(Status status);
+  PoseOutcome advance_to(double target_deg);
+  PoseOutcome solve_pose(double deg, double step_deg, Eigen::VectorXd& x);
+  [[gnu::noinline]] void notify(double deg, double step_deg, const PoseOutcome& outcome, const Eigen::VectorXd& x);
+
+  JansenModel model_;
+  JansenPoseSolver& solver_;
+  JansenSweepOptions options_;
+  SweepObserver<JansenSweepStepper>* observer_ = nullptr;
+  JansenSweepAngles sweep_;
+  Phase phase_ = Phase::finished;
+  Status status_ = Status::converged;
+  double start_deg_ = 0.0, step_deg_ = 0.0, current_deg_ = 0.0;
+  int count_ = 0, next_ = 0, poses_ = 0;
+  Eigen::VectorXd angles_, trial_;  // the last pose solved; the pose being tried
+};
+
+// JansenSweepStepper(...).solve(): the solved angles and nothing derived from them, what
+// `numlab bench jansen` times.
+JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
+                                    double step_deg, const JansenSweepOptions& options = {},
+                                    SweepObserver<JansenSweepStepper>* observer = nullptr);
+
+// solve_crank_sweep(), then each pose's joints and (with options.checks) its checks against the closed form.
 JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
-                        double step_deg);
+                        double step_deg, const JansenSweepOptions& options = {},
+                        SweepObserver<JansenSweepStepper>* observer = nullptr);
 
 }  // namespace numlab::mechanisms

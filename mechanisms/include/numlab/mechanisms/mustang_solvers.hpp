@@ -9,23 +9,14 @@
 #include <vector>
 
 #include "numlab/mechanisms/mustang_linkage.hpp"
+#include "numlab/mechanisms/pose_solver.hpp"
 #include "numlab/nonlinear/newton.hpp"
 
 namespace numlab::mechanisms {
 
-struct MustangOutcome {
-  Status status = Status::converged;
-  int iterations = 0;
-  double residual_inf = 0.0;  // ||f||_inf of all 8 equations at the end
-  int failed_loop = 0;        // sequential and analytic: the loop (1 ... 4) that did not close
-};
-
-class MustangPoseSolver {
- public:
-  virtual ~MustangPoseSolver() = default;
-  // Solves the closure at theta (radians) from `x`, which it overwrites.
-  virtual MustangOutcome solve(double theta, MustangAngles& x) = 0;
-};
+// The Mustang's pose solvers work on its eight angles A ... H. Their outcome's failed_loop names
+// the loop (1 ... 4) that did not close (sequential and analytic only).
+using MustangPoseSolver = PoseSolver<MustangAngles>;
 
 const std::vector<std::string>& mustang_solver_names();
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "numlab/mechanisms/mustang_solvers.hpp"
+#include "numlab/mechanisms/sweep_observer.hpp"
 
 namespace numlab::mechanisms {
 
@@ -23,21 +24,12 @@ struct MustangPose {
   double crank_deg = 0.0;
   MustangAngles angles;
   MustangJoints joints;
-  MustangOutcome outcome;
+  PoseOutcome outcome;
   double condition = 0.0;             // kappa_2 of the 8x8 Jacobian at the pose
   double closed_form_distance = 0.0;  // max over joints of |joint - closed-form joint|
   double length_error = 0.0;          // worst link-length error
   double rigid_error = 0.0;           // worst rigid-body shape error
   double fixed_error = 0.0;           // worst fixed-point error
-};
-
-// One solve the sweep tried (the trace): where, the step, how it went.
-struct MustangAttempt {
-  double crank_deg, step_deg;
-  MustangOutcome outcome;
-  double condition;  // kappa_2 of J where the solve ended
-  double margin;     // the smallest loop margin there (0 at a limit)
-  bool accepted;
 };
 
 struct MustangLimit {
@@ -57,19 +49,71 @@ struct MustangSweep {
   bool branch_kept = true;         // every pose within 1e-6 of the closed form on the seed's branch
   double worst_angle_rate = 0.0;   // max over neighbours of ||dx||_inf / |d theta| (continuity)
   double worst_closed_form_distance = 0.0, worst_length_error = 0.0, worst_rigid_error = 0.0, worst_fixed_error = 0.0;
-  std::vector<MustangAttempt> trace;  // every solve tried, when asked for
 };
 
 struct MustangSweepOptions {
   double resolution_deg = 0.01;  // how closely a limit is located
   double max_step_deg = 1.0;     // no continuation step is larger
   bool checks = true;            // closed form, lengths, rigid bodies, condition (off for timing)
-  bool trace = false;            // record every attempt
 };
 
-// Solves start, start + step, ... up to stop (degrees). Throws std::invalid_argument for a
-// step of zero or one that points away from stop.
+// The sweep as a stepper (numlab/solver.hpp): the first step is the seed's start (1), then each
+// step reaches one requested angle (2-4), upwards first, then downwards; a limit ends a direction.
+// The observer sees every solve attempted (as the trace), except the refinement of a requested
+// angle the sweep already stands on.
+class MustangSweepStepper {
+ public:
+  explicit MustangSweepStepper(MustangPoseSolver& solver, const MustangSweepOptions& options = {})
+      : solver_(solver), options_(options) {}
+  void set_observer(SweepObserver<MustangSweepStepper>* observer) { observer_ = observer; }
+
+  // Throws std::invalid_argument for a step of zero or one that points away from stop.
+  void start(double start_deg, double stop_deg, double step_deg);
+  bool step();
+  MustangSweep solve(double start_deg, double stop_deg, double step_deg);
+
+  bool running() const { return status_ == Status::running; }
+  Status status() const { return status_; }
+  int iterations() const { return poses_; }              // poses solved so far (the seed's start included)
+  const MustangAngles& x() const { return x_; }          // the last pose solved
+  double crank_deg() const { return deg_; }              // ... and its crank angle
+  const MustangSweep& result() const { return sweep_; }
+
+ private:
+  bool start_from_seed();
+  bool reach_next_target();
+  void begin_direction(int direction);
+  bool finish();
+  bool advance_to(double target_deg, PoseOutcome& last, MustangLimit& limit);
+  bool try_solve(double next, bool predict, MustangAngles& trial, PoseOutcome& outcome);
+  MustangLimit diagnose(double failed_deg, const PoseOutcome& outcome) const;
+
+  MustangPoseSolver& solver_;
+  MustangSweepOptions options_;   // as given
+  MustangSweepOptions marching_;  // with max_step_deg no larger than the requested step
+  SweepObserver<MustangSweepStepper>* observer_ = nullptr;
+  MustangLinkage linkage_;
+  MustangSweep sweep_;
+  std::vector<MustangPose> poses_found_;
+  std::vector<double> up_, down_;  // the requested angles above and below the start, in marching order
+  double step_deg_ = 0.0;
+  bool seeded_ = false;
+  Status status_ = Status::converged;
+  int poses_ = 0;
+  std::size_t next_target_ = 0;
+  // The march in the current direction: the last pose, the one before it, and the step between.
+  MustangAngles start_x_ = MustangAngles::Zero(), x_ = MustangAngles::Zero(), previous_ = MustangAngles::Zero();
+  double deg_ = 0.0, previous_step_ = 0.0;
+  bool has_previous_ = false;
+  int direction_ = +1;
+};
+
+// MustangSweepStepper(...).solve(): solves start, start + step, ... up to stop (degrees).
 MustangSweep mustang_sweep(MustangPoseSolver& solver, double start_deg, double stop_deg, double step_deg,
-                           const MustangSweepOptions& options = {});
+                           const MustangSweepOptions& options = {},
+                           SweepObserver<MustangSweepStepper>* observer = nullptr);
+
+// The smallest loop's distance from its limit at (theta, x) (0 where a dyad's circles just touch).
+double mustang_smallest_margin(double theta, const MustangAngles& x);
 
 }  // namespace numlab::mechanisms
