@@ -245,10 +245,13 @@ const std::vector<std::string>& jansen_solver_names() {
 std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const std::string& solver,
                                                      const std::string& linear, const nonlinear::NewtonOptions& options) {
   const bool eight = model == JansenModel::eight_equations;
-  if (solver == "full") return eight ? make_full<JansenClosure>(linear, options) : make_full<Jansen10Closure>(linear, options);
+  if (solver == "full") {
+    return eight ? make_full<JansenClosureOf<TableSines>>(linear, options)
+                 : make_full<Jansen10ClosureOf<TableSines>>(linear, options);
+  }
   if (solver == "sequential") {
     if (eight) return std::make_unique<SequentialEight>(options);
-    return std::make_unique<SequentialDerived<Jansen10Closure>>(options, jansen_seed_estimates(model, JansenLeg()));
+    return std::make_unique<SequentialDerived<Jansen10ClosureOf<TableSines>>>(options, jansen_seed_estimates(model, JansenLeg()));
   }
   if (solver == "analytic") return std::make_unique<Analytic>(model);
   if (solver.starts_with("gsl-")) {
@@ -257,8 +260,8 @@ std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const st
     if (std::find(types.begin(), types.end(), type) == types.end()) {
       throw std::invalid_argument("unknown solver '" + solver + "'");
     }
-    if (eight) return std::make_unique<GslSolver<JansenClosure>>(type, options);
-    return std::make_unique<GslSolver<Jansen10Closure>>(type, options);
+    if (eight) return std::make_unique<GslSolver<JansenClosureOf<TableSines>>>(type, options);
+    return std::make_unique<GslSolver<Jansen10ClosureOf<TableSines>>>(type, options);
   }
   throw std::invalid_argument("unknown solver '" + solver + "' (expected full, sequential, analytic or gsl-<type>)");
 }
