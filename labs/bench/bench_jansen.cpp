@@ -30,7 +30,8 @@ constexpr const char* library_sines = "full-std-sin";
 template <typename Closure>
 class FullNewtonOnLibrarySines final : public mechanisms::JansenPoseSolver {
  public:
-  explicit FullNewtonOnLibrarySines(const nonlinear::NewtonOptions& options) : closure_(0.0), newton_(closure_, options) {}
+  explicit FullNewtonOnLibrarySines(const nonlinear::NewtonOptions& options)
+      : closure_(0.0), newton_(closure_, options) {}
   mechanisms::PoseOutcome solve(double crank_angle, Eigen::VectorXd& angles) override {
     closure_.set_crank_angle(crank_angle);
     const auto result = newton_.solve(typename Closure::Vector(angles));

@@ -13,7 +13,8 @@
 namespace numlab::cli {
 
 struct JansenBenchRow {
-  std::string solver;  // full, full-std-sin, full-gauss-seidel, full-gsl-lu, full-eigen-lu, sequential, analytic, gsl-<type>
+  std::string solver;  // full, full-std-sin, full-gauss-seidel, full-gsl-lu, full-eigen-lu, sequential, analytic,
+                       // gsl-<type>
   mechanisms::JansenModel model;
   double tolerance;
   double time_s;  // median per cycle

@@ -51,6 +51,7 @@ class FullNewton final : public JansenPoseSolver {
 // Seed 000's sequential solve: the dyads (theta1, theta2), (theta3, theta4), (theta6, theta7),
 // (theta5, theta8), each by its own Newton with the closed-form 2x2 inverse (dyad_newton.hpp). A
 // later block's known part uses the directions of the blocks already solved, as they left them.
+// The fast path of TextbookSequentialJansen (jansen_sequential.hpp).
 class SequentialEight final : public JansenPoseSolver {
  public:
   explicit SequentialEight(const nonlinear::NewtonOptions& options)
@@ -251,7 +252,8 @@ std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const st
   }
   if (solver == "sequential") {
     if (eight) return std::make_unique<SequentialEight>(options);
-    return std::make_unique<SequentialDerived<Jansen10ClosureOf<TableSines>>>(options, jansen_seed_estimates(model, JansenLeg()));
+    return std::make_unique<SequentialDerived<Jansen10ClosureOf<TableSines>>>(options,
+                                                                              jansen_seed_estimates(model, JansenLeg()));
   }
   if (solver == "analytic") return std::make_unique<Analytic>(model);
   if (solver.starts_with("gsl-")) {

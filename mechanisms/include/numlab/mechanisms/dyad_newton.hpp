@@ -1,7 +1,6 @@
 #pragma once
-// Newton's method on one dyad (dyad_block.hpp), the block of seed 000's sequential solve:
-// specialised copy of Newton<DyadBlock, ClosedForm2x2>; equality tested in
-// tests/mechanisms/test_dyad_newton.cpp.
+// Newton's method on one dyad (dyad_block.hpp), the block of seed 000's sequential solve.
+// Specialised copy of Newton<DyadBlock, ClosedForm2x2>; equality tested in tests/mechanisms/test_dyad_newton.cpp.
 //
 //   f(alpha, beta) = k + p u(alpha) - q u(beta),   u(t) = (sin t, cos t)  (sine row first)
 //   repeat:  solve J dx = -f by the closed-form 2x2 inverse (linalg::ClosedForm2x2),  x <- x + dx
