@@ -6,8 +6,12 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <numbers>
 
+#include "numlab/mechanisms/jansen10_closure.hpp"
+#include "numlab/mechanisms/jansen_closure.hpp"
+#include "numlab/mechanisms/full_newton_pose_solver.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "output/table.hpp"
 #include "bench/timing.hpp"
@@ -18,12 +22,27 @@ namespace {
 
 using mechanisms::JansenModel;
 
+// The row "full, std::sin": full Newton (GEPP) on the textbook closure, whose sines come from
+// std::sin and std::cos rather than the table every other row's closure uses.
+constexpr const char* library_sines = "full-std-sin";
+
+std::unique_ptr<mechanisms::JansenPoseSolver> make_solver(JansenModel model, const std::string& label,
+                                                          const std::string& solver, const std::string& linear,
+                                                          const nonlinear::NewtonOptions& options) {
+  if (label != library_sines) return mechanisms::make_jansen_solver(model, solver, linear, options);
+  if (model == JansenModel::eight_equations) {
+    return mechanisms::make_full_newton<mechanisms::JansenClosure, Eigen::VectorXd>(linear, options);
+  }
+  return mechanisms::make_full_newton<mechanisms::Jansen10Closure, Eigen::VectorXd>(linear, options);
+}
+
 struct SolverChoice {
   std::string label, solver, linear;
 };
 
 std::vector<SolverChoice> solver_choices(bool quick) {
   std::vector<SolverChoice> choices = {{"full", "full", "gepp"},
+                                       {library_sines, "full", "gepp"},
                                        {"full-gauss-seidel", "full", "gauss-seidel"},
                                        {"full-gsl-lu", "full", "gsl-lu"},
                                        {"full-eigen-lu", "full", "eigen-lu"},
@@ -44,6 +63,10 @@ double time_of(const std::vector<JansenBenchRow>& rows, const std::string& solve
 
 }  // namespace
 
+std::string jansen_bench_label(const std::string& solver) {
+  return solver == library_sines ? "full, std::sin" : solver;
+}
+
 std::vector<JansenBenchRow> bench_jansen(JansenModel model, double tolerance, bool quick) {
   // A cycle is 360 poses, 1 degree apart, starting at the seed's crank angle (no walk-in).
   const double start = mechanisms::JansenClosure::seed_crank_angle * 180.0 / std::numbers::pi;
@@ -54,7 +77,7 @@ std::vector<JansenBenchRow> bench_jansen(JansenModel model, double tolerance, bo
   std::vector<JansenBenchRow> rows;
   for (const SolverChoice& choice : solver_choices(quick)) {
     if (isatty(STDERR_FILENO) != 0) std::cerr << "\r\033[Kbench jansen: " << choice.label << std::flush;
-    const auto solver = mechanisms::make_jansen_solver(model, choice.solver, choice.linear, options);
+    const auto solver = make_solver(model, choice.label, choice.solver, choice.linear, options);
     // Timed: the sweep solve itself, the same for every solver (the start from the seed's
     // estimates, 360 predictions and pose solves, the angles stored). Not timed: the joints and
     // the checks against the closed form, computed once afterwards from the same solver.
@@ -79,7 +102,7 @@ void print_jansen_bench(std::ostream& out, const std::vector<JansenBenchRow>& ro
                      rows.empty() ? 0.0 : rows.front().tolerance);
   Table table({"solver", "time per cycle", "per pose", "x closed form", "iterations", "error"});
   for (const auto& row : rows) {
-    table.add_row({row.solver, fmt::format("{:.3g} s", row.time_s), fmt::format("{:.3g} us", row.time_s / 360 * 1e6),
+    table.add_row({jansen_bench_label(row.solver), fmt::format("{:.3g} s", row.time_s), fmt::format("{:.3g} us", row.time_s / 360 * 1e6),
                    fmt::format("{:.2f}", row.time_s / analytic), std::to_string(row.iterations), scientific(row.error)});
   }
   table.print(out);

@@ -13,7 +13,8 @@
 namespace numlab::cli {
 
 struct JansenBenchRow {
-  std::string solver;  // full, full-gauss-seidel, full-gsl-lu, full-eigen-lu, sequential, analytic, gsl-<type>
+  std::string solver;  // full, full-std-sin, full-gauss-seidel, full-gsl-lu, full-eigen-lu, sequential, analytic,
+                       // gsl-<type>
   mechanisms::JansenModel model;
   double tolerance;
   double time_s;  // median per cycle
@@ -21,8 +22,13 @@ struct JansenBenchRow {
   int iterations; // summed over the cycle
 };
 
-// One row per solver (all eight GSL types included unless `quick`).
+// One row per solver (all eight GSL types included unless `quick`). Every closure takes its sines
+// from the table (sine_sources.hpp) but the row full-std-sin's: full Newton on the textbook
+// closure, std::sin and std::cos, so that the table's gain is measured.
 std::vector<JansenBenchRow> bench_jansen(mechanisms::JansenModel model, double tolerance, bool quick);
+
+// How a solver is named in printed tables: "full, std::sin" for full-std-sin, else its name.
+std::string jansen_bench_label(const std::string& solver);
 
 // Prints the table and the three target ratios; returns the JSON rows.
 void print_jansen_bench(std::ostream& out, const std::vector<JansenBenchRow>& rows);

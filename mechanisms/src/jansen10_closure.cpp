@@ -16,17 +16,19 @@ constexpr Term terms[] = {{0, 0, 50.0},  {0, 1, 41.5},  {2, 1, -41.5}, {2, 2, 55
                           {6, 7, -61.9}, {8, 6, 36.7},  {8, 8, 49.0},  {8, 9, 65.7}};
 }  // namespace
 
-void Jansen10Closure::set_crank_angle(double crank_angle) {
+template <typename Sines>
+void Jansen10ClosureOf<Sines>::set_crank_angle(double crank_angle) {
   const JansenLengths lengths;
-  Eigen::Matrix<double, 1, 1> c, s;
-  crank_sines_.evaluate(Eigen::Matrix<double, 1, 1>(crank_angle), c, s);
-  crank_x_ = lengths.b + lengths.crank * c(0);
-  crank_y_ = lengths.a + lengths.crank * s(0);
+  double c, s;
+  Sines::one(crank_angle, c, s);
+  crank_x_ = lengths.b + lengths.crank * c;
+  crank_y_ = lengths.a + lengths.crank * s;
 }
 
-void Jansen10Closure::residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const {
+template <typename Sines>
+void Jansen10ClosureOf<Sines>::residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const {
   Vector c, s;  // each sine and cosine once, for f and J
-  sines_.evaluate(theta, c, s);
+  Sines::evaluate(theta, c, s);
   f.setZero();
   f(0) = f(6) = crank_x_;
   f(1) = f(7) = crank_y_;
@@ -38,5 +40,8 @@ void Jansen10Closure::residual_and_jacobian(const Vector& theta, Vector& f, Matr
     J(term.row + 1, term.column) = term.length * c(term.column);  // d(L sin t)/dt
   }
 }
+
+template class Jansen10ClosureOf<LibrarySines>;
+template class Jansen10ClosureOf<TableSines>;
 
 }  // namespace numlab::mechanisms

@@ -4,17 +4,19 @@
 
 namespace numlab::mechanisms {
 
-void JansenClosure::set_crank_angle(double crank_angle) {
-  Eigen::Matrix<double, 1, 1> c, s;
-  crank_sines_.evaluate(Eigen::Matrix<double, 1, 1>(crank_angle), c, s);
-  crank_x_ = lengths_.crank * c(0) + lengths_.b;
-  crank_y_ = lengths_.crank * s(0) + lengths_.a;
+template <typename Sines>
+void JansenClosureOf<Sines>::set_crank_angle(double crank_angle) {
+  double c, s;
+  Sines::one(crank_angle, c, s);
+  crank_x_ = lengths_.crank * c + lengths_.b;
+  crank_y_ = lengths_.crank * s + lengths_.a;
 }
 
-void JansenClosure::residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const {
+template <typename Sines>
+void JansenClosureOf<Sines>::residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const {
   const JansenLengths& L = lengths_;
   Vector c, s;  // cos theta_k, sin theta_k, once each
-  sines_.evaluate(theta, c, s);
+  Sines::evaluate(theta, c, s);
   // Sine rows (odd equations) and cosine rows (even equations) of seed 000 eqs (1)-(8).
   f(0) = crank_y_ + L.l1 * s(0) - L.l2 * s(1);
   f(1) = crank_x_ + L.l1 * c(0) - L.l2 * c(1);
@@ -37,10 +39,14 @@ void JansenClosure::residual_and_jacobian(const Vector& theta, Vector& f, Matrix
   J(7, 0) = -L.l1 * s(0); J(7, 2) = -L.l3 * s(2); J(7, 4) = -L.l5 * s(4); J(7, 6) = L.l7 * s(6);  J(7, 7) = L.l8 * s(7);
 }
 
-JansenClosure::Vector JansenClosure::seed_estimates() {
+template <typename Sines>
+typename JansenClosureOf<Sines>::Vector JansenClosureOf<Sines>::seed_estimates() {
   Vector theta;
   theta << 2.62, 1.40, 3.73, 2.90, 5.26, 4.12, 5.14, 2.81;
   return theta;
 }
+
+template class JansenClosureOf<LibrarySines>;
+template class JansenClosureOf<TableSines>;
 
 }  // namespace numlab::mechanisms

@@ -91,7 +91,7 @@ JansenAngles JansenLeg::angles_of(const JansenJoints& p, const JansenAngles& nea
 }
 
 JansenRates JansenLeg::rates(double crank_angle, const JansenAngles& theta) const {
-  const JansenClosure closure(crank_angle, lengths_);
+  const JansenClosureOf<TableSines> closure(crank_angle, lengths_);  // the sweep's closure
   JansenClosure::Vector f;
   JansenClosure::Matrix J;
   closure.residual_and_jacobian(theta, f, J);

@@ -29,6 +29,7 @@ double direction(const Eigen::Vector2d& from, const Eigen::Vector2d& to) { retur
 // Seed 000's sequential solve: the dyads (theta1, theta2), (theta3, theta4), (theta6, theta7),
 // (theta5, theta8), each by its own Newton with the closed-form 2x2 inverse (dyad_newton.hpp). A
 // later block's known part uses the directions of the blocks already solved, as they left them.
+// The fast path of TextbookSequentialJansen (jansen_sequential.hpp).
 class SequentialEight final : public JansenPoseSolver {
  public:
   explicit SequentialEight(const nonlinear::NewtonOptions& options)
@@ -186,12 +187,13 @@ std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const st
                                                      const std::string& linear, const nonlinear::NewtonOptions& options) {
   const bool eight = model == JansenModel::eight_equations;
   if (solver == "full") {
-    return eight ? make_full_newton<JansenClosure, Eigen::VectorXd>(linear, options)
-                 : make_full_newton<Jansen10Closure, Eigen::VectorXd>(linear, options);
+    return eight ? make_full_newton<JansenClosureOf<TableSines>, Eigen::VectorXd>(linear, options)
+                 : make_full_newton<Jansen10ClosureOf<TableSines>, Eigen::VectorXd>(linear, options);
   }
   if (solver == "sequential") {
     if (eight) return std::make_unique<SequentialEight>(options);
-    return std::make_unique<SequentialDerived<Jansen10Closure>>(options, jansen_seed_estimates(model, JansenLeg()));
+    return std::make_unique<SequentialDerived<Jansen10ClosureOf<TableSines>>>(options,
+                                                                              jansen_seed_estimates(model, JansenLeg()));
   }
   if (solver == "analytic") return std::make_unique<Analytic>(model);
   if (solver.starts_with("gsl-")) {
@@ -200,8 +202,8 @@ std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const st
     if (std::find(types.begin(), types.end(), type) == types.end()) {
       throw std::invalid_argument("unknown solver '" + solver + "'");
     }
-    if (eight) return std::make_unique<GslPoseSolver<JansenClosure, Eigen::VectorXd>>(type, options);
-    return std::make_unique<GslPoseSolver<Jansen10Closure, Eigen::VectorXd>>(type, options);
+    if (eight) return std::make_unique<GslPoseSolver<JansenClosureOf<TableSines>, Eigen::VectorXd>>(type, options);
+    return std::make_unique<GslPoseSolver<Jansen10ClosureOf<TableSines>, Eigen::VectorXd>>(type, options);
   }
   throw std::invalid_argument("unknown solver '" + solver + "' (expected full, sequential, analytic or gsl-<type>)");
 }

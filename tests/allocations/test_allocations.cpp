@@ -38,6 +38,7 @@ void operator delete[](void* memory, std::size_t) noexcept { std::free(memory); 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/mechanisms/dyad_block.hpp"
 #include "numlab/mechanisms/dyad_newton.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
 #include "numlab/mechanisms/mustang_closure.hpp"
@@ -159,32 +160,46 @@ TEST_CASE("Fixed-size Newton allocates nothing, in solve() or per iteration", "[
   nonlinear::NewtonOptions options;
   options.residual_tolerance = 1e-12;
   nonlinear::Newton<JansenClosure> full(closure, options);  // GEPP<8>
+  // The sweep's closure, on the sine table (filled on first use: a static, not the heap).
+  const numlab::mechanisms::JansenClosureOf<numlab::mechanisms::TableSines> tabled(JansenClosure::seed_crank_angle);
+  nonlinear::Newton<numlab::mechanisms::JansenClosureOf<numlab::mechanisms::TableSines>> full_tabled(tabled, options);
   nonlinear::Newton<test::FixedRosenbrock, linalg::ClosedForm2x2> two_by_two(test::FixedRosenbrock{}, options);
-  nonlinear::NewtonResult<8> result8;
+  nonlinear::NewtonResult<8> result8, tabled8;
   nonlinear::NewtonResult<2> result2;
   const AllocationCount counted = allocations_during([&] {
     for (int repeat = 0; repeat < 20; ++repeat) {
       result8 = full.solve(start);
+      tabled8 = full_tabled.solve(start);
       result2 = two_by_two.solve(test::Vector2(-1.2, 1.0));
     }
   });
   REQUIRE(result8.status == Status::converged);
   REQUIRE(result8.iterations >= 2);
+  REQUIRE(tabled8.status == Status::converged);
   REQUIRE(result2.status == Status::converged);
   CHECK(counted.eigen == 0);
   if (counts_operator_new) CHECK(counted.other == 0);
 }
 
-TEST_CASE("The Jansen dyad's Newton (sequential Newton's block) allocates nothing", "[allocations][newton]") {
+TEST_CASE("The Jansen dyad's Newton (sequential Newton's block) allocates nothing, fast and textbook",
+          "[allocations][newton]") {
   numlab::nonlinear::NewtonOptions options;
   options.residual_tolerance = 1e-12;
   numlab::mechanisms::DyadNewton dyad(options);
   dyad.set_block(22.8, 38.0, 50.0, 41.5);  // seed 000's first block at crank angle pi/2
+  // Its textbook form: the generic Newton on the block, with the closed-form 2x2 inverse.
+  const numlab::mechanisms::DyadBlock block(22.8, 38.0, 50.0, 41.5);
+  nonlinear::Newton<numlab::mechanisms::DyadBlock, linalg::ClosedForm2x2> textbook(block, options);
   Status status = Status::max_iterations;
+  nonlinear::NewtonResult<2> result;
   const AllocationCount counted = allocations_during([&] {
-    for (int repeat = 0; repeat < 20; ++repeat) status = dyad.solve(2.62 + 1e-3 * repeat, 1.40);
+    for (int repeat = 0; repeat < 20; ++repeat) {
+      status = dyad.solve(2.62 + 1e-3 * repeat, 1.40);
+      result = textbook.solve(Eigen::Vector2d(2.62 + 1e-3 * repeat, 1.40));
+    }
   });
   REQUIRE(status == Status::converged);
+  REQUIRE(result.status == Status::converged);
   CHECK(counted.eigen == 0);
   if (counts_operator_new) CHECK(counted.other == 0);
 }

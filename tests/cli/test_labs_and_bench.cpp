@@ -12,6 +12,7 @@
 
 #include "run_numlab.hpp"
 
+using numlab::test::run_json;
 using numlab::test::run_numlab;
 using numlab::test::temporary_folder;
 using Catch::Matchers::Contains;
@@ -168,6 +169,22 @@ TEST_CASE("numlab bench linear: JSON rows, a chart, and its data and script besi
   CHECK_THAT(bad_chart.err, Contains(".svg or .png"));
 }
 
+TEST_CASE("numlab bench jansen measures full Newton on std::sin beside the table's (the row 'full std::sin')",
+          "[cli][bench]") {
+  const auto out = run_json("bench jansen", "--quick", 0);
+  int found = 0;
+  for (const auto& row : out["rows"]) {
+    if (row["solver"] != "full-std-sin") continue;
+    ++found;
+    CHECK(row["error"].get<double>() < 1e-8);
+    CHECK(row["time_s"].get<double>() > 0.0);
+  }
+  CHECK(found == 1);
+  const auto text = run_numlab("bench jansen --quick");
+  CHECK(text.exit_code == 0);
+  CHECK_THAT(text.out, Contains("full, std::sin"));
+}
+
 TEST_CASE("numlab bench with no argument: work-precision rows for every Jansen solver, and every chart",
           "[cli][bench]") {
   const std::string folder = temporary_folder();
@@ -193,7 +210,8 @@ TEST_CASE("numlab bench with no argument: work-precision rows for every Jansen s
     if (row["bench"] == "mustang" && row["solver"] == "sequential") mustang_tolerances.insert(row["tolerance"].get<double>());
   }
   CHECK(mustang_tolerances == std::set<double>{1e-2, 1e-6, 1e-10, 1e-13});
-  for (const char* solver : {"full", "full-gauss-seidel", "full-gsl-lu", "full-eigen-lu", "sequential", "gsl-newton"}) {
+  for (const char* solver :
+       {"full", "full-std-sin", "full-gauss-seidel", "full-gsl-lu", "full-eigen-lu", "sequential", "gsl-newton"}) {
     INFO(solver);
     CHECK(tolerances.at(solver) == std::set<double>{1e-2, 1e-6, 1e-10, 1e-13});
   }

@@ -5,29 +5,19 @@
 
 #include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/mechanisms/circle_intersection.hpp"
+#include "numlab/mechanisms/dyad_block.hpp"
 #include "numlab/mechanisms/dyad_newton.hpp"
+#include "numlab/mechanisms/jansen_sequential.hpp"
+#include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/nonlinear/newton.hpp"
 
 using numlab::Status;
+using numlab::mechanisms::DyadBlock;
 using numlab::mechanisms::DyadNewton;
 
 namespace {
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
-
-// The dyad k + p u(alpha) - q u(beta) = 0 (u = (sin, cos)) as a plain system for the generic
-// Newton, with its sines and cosines from the library: the reference DyadNewton must reproduce.
-struct LibraryDyad {
-  static constexpr int size = 2;
-  double ky, kx, p, q;
-  int dimension() const { return 2; }
-  void residual(const Eigen::Vector2d& x, Eigen::Vector2d& f) const {
-    f << ky + p * std::sin(x(0)) - q * std::sin(x(1)), kx + p * std::cos(x(0)) - q * std::cos(x(1));
-  }
-  void jacobian(const Eigen::Vector2d& x, Eigen::Matrix2d& J) const {
-    J << p * std::cos(x(0)), -q * std::cos(x(1)), -p * std::sin(x(0)), q * std::sin(x(1));
-  }
-};
 
 // Seed 000's first dyad at crank angle 1.57: B is where circle(A - P1, l1) meets circle(0, l2),
 // seen from P1 (the known part is A - P1 = (li sin 1.57 + a, li cos 1.57 + b) in (y, x) order).
@@ -66,14 +56,14 @@ TEST_CASE("Dyad Newton finds the circle-intersection pose and repeats the generi
     // The angles are within ||J^-1|| times the residual tolerance of the closed form (plus the
     // closed form's own rounding, a few eps times the lengths).
     Eigen::Matrix2d J;
-    LibraryDyad{dyad.ky, dyad.kx, dyad.p, dyad.q}.jacobian(exact, J);
+    DyadBlock(dyad.ky, dyad.kx, dyad.p, dyad.q).jacobian(exact, J);
     const double bound = J.inverse().cwiseAbs().rowwise().sum().maxCoeff() * (1e-12 + 100 * eps * dyad.p);
     CHECK(std::abs(newton.alpha() - exact(0)) <= bound);
     CHECK(std::abs(newton.beta() - exact(1)) <= bound);
 
     // The generic stepper on the same block takes the same steps: same count, same point (to the
     // few ulp by which anchored sines differ from the library's, amplified by ||J^-1||).
-    const LibraryDyad library{dyad.ky, dyad.kx, dyad.p, dyad.q};
+    const DyadBlock library(dyad.ky, dyad.kx, dyad.p, dyad.q);
     const auto generic = numlab::nonlinear::newton_solve(library, start, options, numlab::linalg::ClosedForm2x2());
     REQUIRE(generic.status == Status::converged);
     CHECK(newton.iterations() == generic.iterations);
@@ -153,4 +143,126 @@ TEST_CASE("Dyad Newton's failures: singular Jacobian, a non-finite start, a dyad
     CHECK(newton.iterations() <= 50);
     CHECK(newton.residual_norm() >= 100.0 - dyad.p - dyad.q - 1e-9);  // the gap cannot be closed
   }
+}
+
+namespace {
+
+using numlab::mechanisms::JansenDyad;
+using numlab::mechanisms::PoseOutcome;
+
+// A pose solver for the crank sweep that solves every block twice, from the same start and with
+// the same known part: by DyadNewton (one per block, kept from pose to pose as the sequential
+// solver keeps them; the sweep goes on from its answer) and by Newton<DyadBlock, ClosedForm2x2>.
+class BothDyadNewtons final : public numlab::mechanisms::JansenPoseSolver {
+ public:
+  explicit BothDyadNewtons(const numlab::nonlinear::NewtonOptions& options)
+      : options_(options), fast_{DyadNewton(options), DyadNewton(options), DyadNewton(options), DyadNewton(options)} {}
+
+  PoseOutcome solve(double crank_angle, Eigen::VectorXd& theta) override {
+    PoseOutcome total;
+    const auto dyads = numlab::mechanisms::jansen_dyads();
+    for (int b = 0; b < 4; ++b) {
+      const JansenDyad& dyad = dyads[static_cast<std::size_t>(b)];
+      const Eigen::Vector2d known = numlab::mechanisms::jansen_dyad_known(b, crank_angle, theta);
+      const Eigen::Vector2d start(theta(dyad.alpha), theta(dyad.beta));
+      DyadNewton& fast = fast_[b];
+      fast.set_block(known(0), known(1), dyad.p, dyad.q);
+      const Status status = fast.solve(start(0), start(1));
+      const DyadBlock block(known(0), known(1), dyad.p, dyad.q);
+      const auto textbook = numlab::nonlinear::newton_solve(block, start, options_, numlab::linalg::ClosedForm2x2());
+
+      ++blocks_compared;
+      if (status != textbook.status || fast.iterations() != textbook.iterations) {
+        ++different_endings;
+        UNSCOPED_INFO("crank " << crank_angle << " block " << b << ": " << fast.iterations() << " vs "
+                               << textbook.iterations << " iterations");
+      }
+      // Conditioning: the anchored sines differ from the library's by a few ulp, which moves f by
+      // at most a few eps (|k| + p + q) and the root by ||J^-1||_inf times that.
+      Eigen::Matrix2d J;
+      block.jacobian(textbook.x, J);
+      const double amplification = J.inverse().cwiseAbs().rowwise().sum().maxCoeff();
+      const double bound = amplification * 8.0 * eps * (known.cwiseAbs().maxCoeff() + dyad.p + dyad.q);
+      const double difference = (fast.x() - textbook.x).cwiseAbs().maxCoeff();
+      worst_difference = std::max(worst_difference, difference);
+      worst_ratio_to_bound = std::max(worst_ratio_to_bound, difference / bound);
+
+      theta(dyad.alpha) = fast.alpha();
+      theta(dyad.beta) = fast.beta();
+      total.iterations += fast.iterations();
+      total.residual_norm = std::max(total.residual_norm, fast.residual_norm());
+      if (status != Status::converged) {
+        total.status = status;
+        return total;
+      }
+    }
+    return total;
+  }
+
+  int blocks_compared = 0, different_endings = 0;
+  double worst_difference = 0.0, worst_ratio_to_bound = 0.0;
+
+ private:
+  numlab::nonlinear::NewtonOptions options_;
+  DyadNewton fast_[4];
+};
+
+}  // namespace
+
+TEST_CASE("Dyad Newton and the generic Newton on DyadBlock take the same iterations to the same roots in every "
+          "block over a crank cycle",
+          "[dyad][reference][sweep]") {
+  using numlab::mechanisms::JansenModel;
+  for (const double tolerance : {1e-6, 1e-10}) {
+    BothDyadNewtons both(options_with(tolerance));
+    // 360 poses 1 degree apart (and the 90 that walk in from the seed's 1.57 rad), each block
+    // warm-started from the sweep's prediction.
+    const auto sweep = numlab::mechanisms::solve_crank_sweep(JansenModel::eight_equations, both, 0.0, 359.0, 1.0);
+    INFO("tolerance " << tolerance << ": worst difference " << both.worst_difference << ", "
+                      << both.worst_ratio_to_bound << " of its bound");
+    REQUIRE(sweep.status == Status::converged);
+    CHECK(sweep.outcomes.size() == 360);
+    CHECK(both.blocks_compared >= 4 * (360 + 90 + 1));
+    CHECK(both.different_endings == 0);
+    CHECK(both.worst_ratio_to_bound <= 1.0);
+    CHECK(both.worst_difference > 0.0);  // the anchored sines are in use (the library's would agree exactly)
+  }
+}
+
+TEST_CASE("The textbook sequential solver (four generic Newtons on DyadBlock) repeats the fast one over a cycle",
+          "[dyad][sequential][sweep]") {
+  using namespace numlab::mechanisms;
+  const auto options = options_with(1e-10);
+  TextbookSequentialJansen textbook(options);
+  const auto fast = make_jansen_solver(JansenModel::eight_equations, "sequential", "gepp", options);
+  const JansenSweep a = crank_sweep(JansenModel::eight_equations, textbook, 0.0, 359.0, 1.0);
+  const JansenSweep b = crank_sweep(JansenModel::eight_equations, *fast, 0.0, 359.0, 1.0);
+  REQUIRE(a.status == Status::converged);
+  REQUIRE(b.status == Status::converged);
+  REQUIRE(a.poses.size() == 360);
+  REQUIRE(b.poses.size() == 360);
+  CHECK(a.worst_closed_form_distance <= 1e-8);
+  CHECK(a.orientation_kept);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.poses.size(); ++i) {
+    INFO("crank " << a.poses[i].crank_deg);
+    CHECK(a.poses[i].outcome.iterations == b.poses[i].outcome.iterations);
+    worst = std::max(worst, (a.poses[i].angles - b.poses[i].angles).cwiseAbs().maxCoeff());
+  }
+  CHECK(worst <= 1e-12);  // a few ulp of the sines, amplified by the blocks' conditioning (measured: 4e-15)
+}
+
+TEST_CASE("Damping is rejected where it would be ignored: the dyad stepper and the sequential Jansen solver",
+          "[dyad][options]") {
+  auto damped = options_with(1e-10);
+  damped.damped = true;
+  CHECK_THROWS_AS(DyadNewton(damped), std::invalid_argument);
+  CHECK_THROWS_AS(numlab::mechanisms::make_jansen_solver(numlab::mechanisms::JansenModel::eight_equations, "sequential",
+                                                         "gepp", damped),
+                  std::invalid_argument);
+  // The textbook path honours it (its Newton damps), so it accepts it.
+  CHECK_NOTHROW(numlab::mechanisms::TextbookSequentialJansen(damped));
+  auto negative = options_with(-1.0);
+  CHECK_THROWS_AS(DyadNewton(negative), std::invalid_argument);
+  CHECK_NOTHROW(DyadNewton(options_with(1e-10)));
 }

@@ -1,11 +1,15 @@
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <random>
 
+#include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/mechanisms/circle_intersection.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
+#include "numlab/mechanisms/sine_sources.hpp"
 #include "numlab/nonlinear/autodiff_system.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/jacobian_check.hpp"
@@ -161,4 +165,72 @@ TEST_CASE("Foot velocity from one extra solve agrees with finite differences of 
     slowest = std::min(slowest, rates.foot_speed);
   }
   CHECK(fastest > 2.0 * slowest);  // a walking foot: slow on the ground, fast in the air
+}
+
+TEST_CASE("The Jansen closures on the sine table agree with the textbook ones (std::sin) to a few ulp",
+          "[mechanisms][jansen][sines]") {
+  const double eps = std::numeric_limits<double>::epsilon();
+  std::mt19937 random(15);
+  std::uniform_real_distribution<double> angle(-7.0, 7.0);
+  double worst8 = 0.0, worst10 = 0.0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const double crank = angle(random);
+    const JansenClosure library8(crank);
+    const JansenClosureOf<TableSines> table8(crank);
+    JansenClosure::Vector theta8, f8, g8;
+    JansenClosure::Matrix J8, K8;
+    for (int k = 0; k < 8; ++k) theta8(k) = angle(random);
+    library8.residual_and_jacobian(theta8, f8, J8);
+    table8.residual_and_jacobian(theta8, g8, K8);
+    worst8 = std::max({worst8, (f8 - g8).cwiseAbs().maxCoeff(), (J8 - K8).cwiseAbs().maxCoeff()});
+
+    const Jansen10Closure library10(crank);
+    const Jansen10ClosureOf<TableSines> table10(crank);
+    Jansen10Closure::Vector theta10, f10, g10;
+    Jansen10Closure::Matrix J10, K10;
+    for (int k = 0; k < 10; ++k) theta10(k) = angle(random);
+    library10.residual_and_jacobian(theta10, f10, J10);
+    table10.residual_and_jacobian(theta10, g10, K10);
+    worst10 = std::max({worst10, (f10 - g10).cwiseAbs().maxCoeff(), (J10 - K10).cwiseAbs().maxCoeff()});
+  }
+  // Each term is a length (at most 65.7) times a sine within 2 ulp, summed over at most six terms.
+  CHECK(worst8 <= 2.0 * eps * 400.0);
+  CHECK(worst10 <= 2.0 * eps * 400.0);
+  CHECK(worst8 > 0.0);  // the table is in use
+  CHECK(worst10 > 0.0);
+}
+
+TEST_CASE("Evaluating a closure changes nothing: the same point gives the same bits whatever came between",
+          "[mechanisms][jansen][sines]") {
+  // A cache in the closure would make f at theta depend on the evaluations before: reached by a
+  // Newton correction from a nearby angle, theta's sines take another path than from the table.
+  const JansenClosureOf<TableSines> eight(0.4);
+  const Jansen10ClosureOf<TableSines> ten(0.4);
+  const JansenClosure::Vector theta8 = JansenClosure::seed_estimates();
+  const Jansen10Closure::Vector theta10 = jansen_seed_estimates(JansenModel::ten_equations, JansenLeg());
+  JansenClosure::Vector f8, first8;
+  JansenClosure::Matrix J8, first_J8;
+  Jansen10Closure::Vector f10, first10;
+  Jansen10Closure::Matrix J10, first_J10;
+  eight.residual_and_jacobian(theta8, first8, first_J8);
+  ten.residual_and_jacobian(theta10, first10, first_J10);
+  // Such a cache (AnchoredSinCos, DyadNewton's) does give other bits after this sequence.
+  AnchoredSinCos<8> cache;
+  JansenClosure::Vector c, s, first_c, first_s;
+  cache.evaluate(theta8, first_c, first_s);
+  bool cache_differs = false;
+  for (const double nudge : {3e-7, -5e-7, 1e-9}) {
+    for (const double step : {0.25, nudge, 0.0}) {  // far away, a Newton correction away, back at theta
+      eight.residual_and_jacobian(theta8 + JansenClosure::Vector::Constant(step), f8, J8);
+      ten.residual_and_jacobian(theta10 + Jansen10Closure::Vector::Constant(step), f10, J10);
+      cache.evaluate(theta8 + JansenClosure::Vector::Constant(step), c, s);
+    }
+    INFO("back from a nudge of " << nudge);
+    CHECK(f8 == first8);
+    CHECK(J8 == first_J8);
+    CHECK(f10 == first10);
+    CHECK(J10 == first_J10);
+    cache_differs = cache_differs || c != first_c || s != first_s;
+  }
+  CHECK(cache_differs);
 }

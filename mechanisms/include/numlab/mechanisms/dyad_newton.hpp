@@ -1,38 +1,46 @@
 #pragma once
-// Newton-Raphson on one dyad, the block of seed 000's sequential solve:
+// Newton's method on one dyad (dyad_block.hpp), the block of seed 000's sequential solve.
+// Specialised copy of Newton<DyadBlock, ClosedForm2x2>; equality tested in tests/mechanisms/test_dyad_newton.cpp.
 //
-//   f(alpha, beta) = k + p u(alpha) - q u(beta) = 0,   u(t) = (sin t, cos t)  (sine row first),
-//
-//   J = [  p cos alpha   -q cos beta ]
-//       [ -p sin alpha    q sin beta ]
-//
+//   f(alpha, beta) = k + p u(alpha) - q u(beta),   u(t) = (sin t, cos t)  (sine row first)
 //   repeat:  solve J dx = -f by the closed-form 2x2 inverse (linalg::ClosedForm2x2),  x <- x + dx
-//   until    ||f||_inf <= residual_tolerance, or ||dx||_inf <= step_tolerance (1 + ||x||_inf).
+//   until    a stopping test of stopping_tests.hpp ends it, in Newton's order.
 //
-// It is nonlinear::Newton<Block, ClosedForm2x2> written out for this one block: the same options,
-// stop tests (in the same order) and statuses, and the same stepper shape (start, step, solve,
-// state readable between steps), without damping (a crank sweep halves its step instead). Its
-// state is a few scalars rather than Eigen members that every evaluation might overwrite, which
-// is what makes it fast: one crank cycle of sequential Newton at tolerance 1e-10 took 94 us with
-// the generic stepper and 51-54 us with this one (best of repeated in-process runs).
-//
-// The sines and cosines come from an anchored cache (anchored_sincos.hpp), so one DyadNewton
-// serves one block of a sweep, pose after pose.
+// The same options, stopping tests, statuses and stepper shape (start, step, solve, state readable
+// between steps) as the generic Newton; no damping (a crank sweep halves its step instead), so
+// NewtonOptions::damped is rejected. Fast path: its state is a few scalars, and its sines and
+// cosines come from a cache kept from step to step and pose to pose (anchored_sincos.hpp).
 
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
+#include "numlab/force_inline.hpp"
+#include "numlab/linalg/input_checks.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/nonlinear/newton.hpp"
+#include "numlab/nonlinear/stopping_tests.hpp"
 
 namespace numlab::mechanisms {
 
 class DyadNewton {
  public:
-  explicit DyadNewton(const nonlinear::NewtonOptions& options = {}) : options_(options) {}
+  // Throws std::invalid_argument for options Newton rejects, and for damping (not available here).
+  explicit DyadNewton(const nonlinear::NewtonOptions& options = {}) : options_(options) {
+    linalg::require_non_negative(options_.residual_tolerance, "residual tolerance");
+    linalg::require_non_negative(options_.step_tolerance, "step tolerance");
+    if (options_.max_iterations < 1) {
+      throw std::invalid_argument("iteration limit must be at least 1, got " + std::to_string(options_.max_iterations));
+    }
+    if (options_.damped) {
+      throw std::invalid_argument("damping is not available for the dyad's Newton (sequential Jansen solver): "
+                                  "it takes full steps, and a sweep halves its crank step instead");
+    }
+  }
 
   // The block: known part k = (k_y, k_x) and the lengths p, q.
   void set_block(double known_y, double known_x, double p, double q) {
@@ -51,9 +59,7 @@ class DyadNewton {
   // The first half of start(): x = (alpha, beta) and the sines and cosines there, which is all of
   // the first evaluation (and of the first J) that the known part does not enter. A caller solving
   // blocks in turn can place every block first: their sines do not wait for the blocks before.
-  // Forced inline (as evaluate() is): GCC otherwise calls both out of line once the sine cache's
-  // code is inlined into them, and a crank cycle of sequential Newton took 45 us instead of 41.
-  [[gnu::always_inline]] void place(double alpha, double beta) {
+  NUMLAB_FORCE_INLINE void place(double alpha, double beta) {
     alpha_ = alpha;
     beta_ = beta;
     sines_.evaluate(Eigen::Vector2d(alpha_, beta_), cos_, sin_);
@@ -64,11 +70,12 @@ class DyadNewton {
     iterations_ = 0;
     step_norm_ = 0.0;
     running_ = true;
+    status_ = Status::running;
     evaluate_residual();
     residual_at_start_ = residual_norm_;
     if (!std::isfinite(residual_norm_)) {
       finish(Status::non_finite);
-    } else if (residual_norm_ <= options_.residual_tolerance) {
+    } else if (nonlinear::residual_small(residual_norm_, options_.residual_tolerance)) {
       finish(Status::converged);
     }
   }
@@ -90,11 +97,13 @@ class DyadNewton {
     evaluate();
     // 4. Stop tests, in Newton's order.
     if (!std::isfinite(residual_norm_)) return finish(Status::non_finite);
-    if (residual_norm_ <= options_.residual_tolerance) return finish(Status::converged);
-    if (step_norm_ <= options_.step_tolerance * (1.0 + std::max(std::abs(alpha_), std::abs(beta_)))) {
+    if (nonlinear::residual_small(residual_norm_, options_.residual_tolerance)) return finish(Status::converged);
+    if (nonlinear::step_small(step_norm_, std::max(std::abs(alpha_), std::abs(beta_)), options_.step_tolerance)) {
       return finish(Status::converged);
     }
-    if (residual_norm_ > options_.divergence_factor * std::max(residual_at_start_, 1.0)) return finish(Status::diverged);
+    if (nonlinear::diverged(residual_norm_, residual_at_start_, options_.divergence_factor)) {
+      return finish(Status::diverged);
+    }
     if (iterations_ >= options_.max_iterations) return finish(Status::max_iterations);
     return true;
   }
@@ -114,8 +123,9 @@ class DyadNewton {
 
   // State between iterations.
   bool running() const { return running_; }
-  Status status() const { return status_; }
+  Status status() const { return status_; }  // Status::running until the iteration has ended
   int iterations() const { return iterations_; }
+  Eigen::Vector2d x() const { return {alpha_, beta_}; }
   double alpha() const { return alpha_; }
   double beta() const { return beta_; }
   double residual_norm() const { return residual_norm_; }  // ||f||_inf at the current point
@@ -125,7 +135,7 @@ class DyadNewton {
   Eigen::Vector2d direction(int which) const { return {sin_(which), cos_(which)}; }
 
  private:
-  [[gnu::always_inline]] void evaluate() {
+  NUMLAB_FORCE_INLINE void evaluate() {
     sines_.evaluate(Eigen::Vector2d(alpha_, beta_), cos_, sin_);
     evaluate_residual();
   }

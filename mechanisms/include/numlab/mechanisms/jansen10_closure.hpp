@@ -6,14 +6,15 @@
 //   theta8 P1->D, theta9 E->D, theta10 D->A, theta11 D->F, theta12 F->E.
 // It models the same leg as the 8-equation JansenClosure with two more unknowns and a closure
 // equation pair for a triangle that is rigid anyway: over-modelling, kept to measure its cost.
-// Its sines and cosines come from the same kind of cache as the 8-equation model's
-// (anchored_sincos.hpp), so that the two models' costs compare like with like.
+// Its sines and cosines come from a sine source as the 8-equation model's do (sine_sources.hpp):
+// Jansen10Closure calls the library, the sweep uses the table, so the two models' costs compare
+// like with like.
 
 #include <Eigen/Core>
 
 #include "numlab/linalg/linear_result.hpp"
-#include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
+#include "numlab/mechanisms/sine_sources.hpp"
 
 namespace numlab::mechanisms {
 
@@ -36,13 +37,14 @@ void jansen10_residual(double crank_x, double crank_y, const Eigen::Matrix<Scala
   f(9) = 36.7 * sin(x(6)) + 49.0 * sin(x(8)) + 65.7 * sin(x(9));
 }
 
-class Jansen10Closure : public nonlinear::EvaluatesTogether<Jansen10Closure, 10> {
+template <typename Sines>
+class Jansen10ClosureOf : public nonlinear::EvaluatesTogether<Jansen10ClosureOf<Sines>, 10> {
  public:
   static constexpr int size = 10;
   using Vector = linalg::Vector<10>;
   using Matrix = linalg::Matrix<10>;
 
-  explicit Jansen10Closure(double crank_angle) { set_crank_angle(crank_angle); }
+  explicit Jansen10ClosureOf(double crank_angle) { set_crank_angle(crank_angle); }
   void set_crank_angle(double crank_angle);
   int dimension() const { return size; }
   void residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const;
@@ -51,8 +53,12 @@ class Jansen10Closure : public nonlinear::EvaluatesTogether<Jansen10Closure, 10>
 
  private:
   double crank_x_ = 0.0, crank_y_ = 0.0;
-  mutable AnchoredSinCos<10> sines_;  // a cache (agrees with std::cos, std::sin to a few ulp)
-  AnchoredSinCos<1> crank_sines_;     // the crank's, from pose to pose
 };
+
+using Jansen10Closure = Jansen10ClosureOf<LibrarySines>;  // the textbook closure
+
+// Both instantiations are compiled once, in jansen10_closure.cpp.
+extern template class Jansen10ClosureOf<LibrarySines>;
+extern template class Jansen10ClosureOf<TableSines>;
 
 }  // namespace numlab::mechanisms

@@ -7,14 +7,15 @@
 //   (5,6)  D:  O -> A -> D            = P1 -> D                 (theta6, theta7)
 //   (7,8)  E:  O -> A -> B -> C -> E  = P1 -> D -> E            (theta1, theta3, theta5, theta7, theta8)
 // Its Jacobian is block lower-triangular in the pairs (1,2), (3,4), (6,7), (5,8).
-// residual_and_jacobian() computes each sine and cosine once for both, and from the previous
-// evaluation's when the angles moved little (anchored_sincos.hpp). That cache is why one closure
-// must not be evaluated from two threads at once (numlab runs none).
+//
+// residual_and_jacobian() computes each sine and cosine once for both, from the sine source
+// (sine_sources.hpp): JansenClosure calls std::sin and std::cos; the crank sweep and the
+// benchmark use JansenClosureOf<TableSines>, the same equations with a table's sines.
 
 #include <Eigen/Core>
 
 #include "numlab/linalg/linear_result.hpp"
-#include "numlab/mechanisms/anchored_sincos.hpp"
+#include "numlab/mechanisms/sine_sources.hpp"
 #include "numlab/nonlinear/system.hpp"
 
 namespace numlab::mechanisms {
@@ -26,13 +27,16 @@ struct JansenLengths {
   double b = 38.0;  // and b to its left
 };
 
-class JansenClosure : public nonlinear::EvaluatesTogether<JansenClosure, 8> {
+template <typename Sines>
+class JansenClosureOf : public nonlinear::EvaluatesTogether<JansenClosureOf<Sines>, 8> {
  public:
   static constexpr int size = 8;
   using Vector = linalg::Vector<8>;
   using Matrix = linalg::Matrix<8>;
 
-  explicit JansenClosure(double crank_angle, JansenLengths lengths = {}) : lengths_(lengths) { set_crank_angle(crank_angle); }
+  explicit JansenClosureOf(double crank_angle, JansenLengths lengths = {}) : lengths_(lengths) {
+    set_crank_angle(crank_angle);
+  }
 
   void set_crank_angle(double crank_angle);
   int dimension() const { return size; }
@@ -45,8 +49,12 @@ class JansenClosure : public nonlinear::EvaluatesTogether<JansenClosure, 8> {
  private:
   JansenLengths lengths_;
   double crank_x_ = 0.0, crank_y_ = 0.0;  // A - P1 = (li cos theta_i + b, li sin theta_i + a)
-  mutable AnchoredSinCos<8> sines_;       // a cache (agrees with std::cos, std::sin to a few ulp)
-  AnchoredSinCos<1> crank_sines_;         // the crank's, from pose to pose
 };
+
+using JansenClosure = JansenClosureOf<LibrarySines>;  // the textbook closure
+
+// Both instantiations are compiled once, in jansen_closure.cpp.
+extern template class JansenClosureOf<LibrarySines>;
+extern template class JansenClosureOf<TableSines>;
 
 }  // namespace numlab::mechanisms
