@@ -39,7 +39,7 @@ std::string verdict(const SeedMethodPose& pose, double theta, const MustangLinka
       }
     }
   }
-  if (pose.residual_inf > 1e-2) return fmt::format("not a root (||f|| = {:.2g})", pose.residual_inf);
+  if (pose.residual_norm > 1e-2) return fmt::format("not a root (||f|| = {:.2g})", pose.residual_norm);
   const MustangClosedForm exact = linkage.closed_form(theta);
   if (exact.status != Status::converged) return "a root, but theta is outside the range";
   const MustangJoints joints = linkage.joints(theta, pose.x);
@@ -88,7 +88,7 @@ int run_mustang_lab(LabSession& session) {
       row.push_back(run.status == Status::converged ? fmt::format("{} its", run.iterations) : std::string(to_string(run.status)));
     }
     row.push_back(scientific(pose.loops[3].test_value));
-    row.push_back(scientific(pose.residual_inf));
+    row.push_back(scientific(pose.residual_norm));
     row.push_back(verdict(pose, theta, linkage));
     seed_table.add_row(row);
   }

@@ -29,7 +29,7 @@ SeedMethodPose seed_method_pose(double theta, const SeedMethodOptions& options, 
     while (true) {
       // 1. The seed's test: stop when it is at or below 0.001.
       run.test_value = test_of(f);
-      run.residual_inf = f.lpNorm<Eigen::Infinity>();
+      run.residual_norm = f.lpNorm<Eigen::Infinity>();
       if (!f.allFinite() || !v.allFinite()) {
         run.status = Status::non_finite;
         break;
@@ -57,7 +57,7 @@ SeedMethodPose seed_method_pose(double theta, const SeedMethodOptions& options, 
   }
   MustangClosure::Vector f;
   closure.residual(pose.x, f);  // the exact equations
-  pose.residual_inf = f.allFinite() ? f.lpNorm<Eigen::Infinity>() : std::numeric_limits<double>::infinity();
+  pose.residual_norm = f.allFinite() ? f.lpNorm<Eigen::Infinity>() : std::numeric_limits<double>::infinity();
   return pose;
 }
 

@@ -14,7 +14,7 @@ namespace numlab::mechanisms {
 namespace {
 
 // ||f||_inf of all eight equations at (theta, x).
-double residual_inf(const MustangClosure& closure, const MustangAngles& x) {
+double residual_norm_of(const MustangClosure& closure, const MustangAngles& x) {
   MustangClosure::Vector f;
   closure.residual(x, f);
   return f.lpNorm<Eigen::Infinity>();
@@ -40,7 +40,7 @@ class Sequential final : public MustangPoseSolver {
         break;
       }
     }
-    outcome.residual_norm = residual_inf(closure_, x);
+    outcome.residual_norm = residual_norm_of(closure_, x);
     return outcome;
   }
 

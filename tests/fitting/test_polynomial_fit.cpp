@@ -158,7 +158,7 @@ TEST_CASE("bad fit input is refused with a message naming it", "[fitting][input]
   CHECK_THROWS_WITH(normal_solver_from_string("jacobi"), Catch::Contains("unknown linear solver 'jacobi'"));
 }
 
-TEST_CASE("numbers in NIST's notation parse; anything else is refused", "[fitting][input]") {
+TEST_CASE("numbers in NIST's notation parse, anything else is refused", "[fitting][input]") {
   CHECK(parse_number("760.", "") == 760.0);
   CHECK(parse_number(".11019", "") == 0.11019);
   CHECK(parse_number("0.1E-01", "") == 0.01);

@@ -72,7 +72,7 @@ TEST_CASE("Wilkinson's matrix: the growth factor is exactly 2^(n-1)", "[gepp][wi
   }
 }
 
-TEST_CASE("Wilkinson n = 60: GEPP loses every digit and reports the growth; QR does not", "[gepp][wilkinson][failure]") {
+TEST_CASE("Wilkinson n = 60: GEPP loses every digit and reports the growth, QR does not", "[gepp][wilkinson][failure]") {
   const GeneratedSystem system = generate_system("wilkinson", 60);
   const LinearResult<Eigen::Dynamic> gepp = gauss_elimination<Eigen::Dynamic>(system.A, system.b);
   const LinearResult<Eigen::Dynamic> qr = gsl_qr_solve(system.A, system.b);

@@ -30,7 +30,7 @@ TEST_CASE("All eight GSL types reach the known root on the well-behaved problems
   }
 }
 
-TEST_CASE("Derivative-free GSL types never evaluate the Jacobian; the others do", "[gsl]") {
+TEST_CASE("Derivative-free GSL types never evaluate the Jacobian, the others do", "[gsl]") {
   const TestProblem problem = make_test_problem("rosenbrock");
   for (const std::string& type : gsl_multiroot_types()) {
     const auto result = gsl_multiroot_solve(*problem.system, problem.standard_start, type, lab_options());

@@ -29,14 +29,14 @@ struct SeedLoopRun {
   Status status = Status::converged;  // converged (its test passed), max_iterations, singular, non_finite
   int iterations = 0;
   double test_value = 0.0;    // what the seed's test saw at the end: |f_i + f_j| (or max |f|)
-  double residual_inf = 0.0;  // max(|f_i|, |f_j|) at the end
+  double residual_norm = 0.0;  // max(|f_i|, |f_j|) at the end
 };
 
 struct SeedMethodPose {
   MustangAngles x;
   std::array<SeedLoopRun, 4> loops;
   Status status = Status::converged;  // the first loop's failure, if any
-  double residual_inf = 0.0;          // of all eight exact equations (MustangClosure) at x
+  double residual_norm = 0.0;          // of all eight exact equations (MustangClosure) at x
 };
 
 // One pose at theta (radians). `previous` is the start when restart is off.
