@@ -24,9 +24,7 @@ double median_time(Work&& work, TimingPlan plan = {}) {
     return std::chrono::duration<double>(Clock::now() - begin).count();
   };
   // Warm-up (caches, lazy allocations, page faults), then choose the batch size. The first
-  // measurement of a process warms up for a quarter of a second as well: on the shared machine
-  // these figures come from, the first 0.3 s of work ran slower in about half the runs (the first
-  // Jansen row read 0.18 ms per cycle instead of 0.14).
+  // measurement of a process warms up for a quarter of a second as well (why: docs/performance.md).
   static bool process_warmed_up = false;
   if (!process_warmed_up) {
     process_warmed_up = true;

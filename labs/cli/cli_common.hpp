@@ -24,7 +24,7 @@ struct CommonOptions {
 // Adds --format, --trace, --step, --tol, --max-iter and --out to a sub-command.
 void add_common_options(CLI::App& command, CommonOptions& options);
 
-// Exit codes of design/cli.md: 0 the method succeeded, 1 it ran but did not succeed, 2 bad input.
+// Exit codes of docs/cli.md: 0 the method succeeded, 1 it ran but did not succeed, 2 bad input.
 constexpr int exit_success = 0;
 constexpr int exit_method_failed = 1;
 constexpr int exit_bad_input = 2;

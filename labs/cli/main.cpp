@@ -1,4 +1,4 @@
-// numlab: the command-line program (design/cli.md).
+// numlab: the command-line program (docs/cli.md).
 // Exit codes: 0 the method succeeded, 1 it ran but did not succeed, 2 bad usage or bad input.
 
 #include <CLI/CLI.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// `numlab fit --data FILE --degree D --method M [--linear L] [--chart FILE]` (design/cli.md), and
+// `numlab fit --data FILE --degree D --method M [--linear L] [--chart FILE]` (docs/cli.md), and
 // `--foot-path upper|lower` to fit an arc of the Jansen foot's path instead of a file.
 
 #include <CLI/CLI.hpp>

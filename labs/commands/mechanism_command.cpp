@@ -51,7 +51,7 @@ void print_csv(std::ostream& out, JansenModel model, const mechanisms::JansenSwe
   out << "crank_deg";
   for (const std::string& name : mechanisms::jansen_angle_names(model)) out << ',' << name;
   for (std::string_view joint : mechanisms::jansen_joint_names) out << ",x_" << joint << ",y_" << joint;
-  out << ",iterations,residual_inf,status,foot_speed\n";  // design/cli.md's columns, then ours
+  out << ",iterations,residual_inf,status,foot_speed\n";  // docs/cli.md's columns, then ours
   for (const auto& pose : sweep.poses) {
     out << fmt::format("{:.10g}", pose.crank_deg);
     for (double angle : pose.angles) out << fmt::format(",{:.17g}", angle);

@@ -1,5 +1,5 @@
 #pragma once
-// `numlab mechanism NAME (--crank DEG | --sweep START:STOP:STEP) [--solver S] [--linear L]` (design/cli.md).
+// `numlab mechanism NAME (--crank DEG | --sweep START:STOP:STEP) [--solver S] [--linear L]` (docs/cli.md).
 
 #include <CLI/CLI.hpp>
 #include <optional>

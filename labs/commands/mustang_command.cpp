@@ -119,7 +119,7 @@ void print_csv(std::ostream& out, const MustangSweep& sweep) {
   out << "crank_deg";
   for (std::string_view name : mechanisms::mustang_angle_names) out << ',' << name;
   for (std::string_view joint : mechanisms::mustang_joint_names) out << ",x_" << joint << ",y_" << joint;
-  out << ",iterations,residual_inf,status,condition\n";  // design/cli.md's columns, then ours
+  out << ",iterations,residual_inf,status,condition\n";  // docs/cli.md's columns, then ours
   for (const auto& pose : sweep.poses) {
     out << fmt::format("{:.10g}", pose.crank_deg);
     for (double angle : pose.angles) out << fmt::format(",{:.17g}", angle);

@@ -1,5 +1,5 @@
 #pragma once
-// `numlab mechanism mustang (--crank DEG | --sweep START:STOP:STEP)` (design/cli.md): seed 003's
+// `numlab mechanism mustang (--crank DEG | --sweep START:STOP:STEP)` (docs/cli.md): seed 003's
 // roof linkage by continuation from the seed's branch, with its assembly limits.
 
 #include <string>

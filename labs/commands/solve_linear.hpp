@@ -1,5 +1,5 @@
 #pragma once
-// `numlab solve linear`: one linear system, any method, text/JSON/CSV (design/cli.md).
+// `numlab solve linear`: one linear system, any method, text/JSON/CSV (docs/cli.md).
 
 #include <CLI/CLI.hpp>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// `numlab solve nonlinear`: one MGH test problem, hand-written Newton or a GSL type (design/cli.md).
+// `numlab solve nonlinear`: one MGH test problem, hand-written Newton or a GSL type (docs/cli.md).
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>

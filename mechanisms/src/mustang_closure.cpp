@@ -5,7 +5,7 @@
 namespace numlab::mechanisms {
 
 namespace {
-// The fixed points' offsets used by loops 1 and 2 (design/mechanisms.md).
+// The fixed points' offsets used by loops 1 and 2 (docs/mechanisms.md).
 const Eigen::Vector2d P0(std::sqrt(0.5), 0.0), P1(0.0, std::sqrt(0.5)), P2(0.0, 1.0 + std::sqrt(0.5));
 }  // namespace
 

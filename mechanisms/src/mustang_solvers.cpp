@@ -67,7 +67,7 @@ class Analytic final : public MustangPoseSolver {
 
 }  // namespace
 
-// The same names as the Jansen leg's solvers (design/cli.md).
+// The same names as the Jansen leg's solvers (docs/cli.md).
 const std::vector<std::string>& mustang_solver_names() { return jansen_solver_names(); }
 
 std::unique_ptr<MustangPoseSolver> make_mustang_solver(const std::string& solver, const std::string& linear,

@@ -1,4 +1,4 @@
-// `numlab fit` (design/cli.md): JSON fields, NIST's certified digits through the CLI, warnings,
+// `numlab fit` (docs/cli.md): JSON fields, NIST's certified digits through the CLI, warnings,
 // failures, charts, the Jansen foot path, and bad input.
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// `numlab mechanism` against design/cli.md: CSV columns, JSON fields, exit codes, bad input.
+// `numlab mechanism` against docs/cli.md: CSV columns, JSON fields, exit codes, bad input.
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

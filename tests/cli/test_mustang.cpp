@@ -1,4 +1,4 @@
-// `numlab mechanism mustang` and `numlab bench mustang` against design/cli.md: the sweep that
+// `numlab mechanism mustang` and `numlab bench mustang` against docs/cli.md: the sweep that
 // stops at the assembly limits, exit 1, the range and the loops, the trace, the scenes.
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// `numlab solve linear` against design/cli.md: fields, statuses, exit codes, traces, bad input.
+// `numlab solve linear` against docs/cli.md: fields, statuses, exit codes, traces, bad input.
 
 #include <catch2/catch.hpp>
 #include <algorithm>

@@ -1,4 +1,4 @@
-// `numlab solve nonlinear` against design/cli.md: fields, statuses, exit codes, traces, bad input.
+// `numlab solve nonlinear` against docs/cli.md: fields, statuses, exit codes, traces, bad input.
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

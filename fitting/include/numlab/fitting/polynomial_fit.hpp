@@ -1,5 +1,5 @@
 #pragma once
-// Least-squares polynomial fits y ~ b0 + b1 x + ... + bD x^D, by four methods (design/cli.md):
+// Least-squares polynomial fits y ~ b0 + b1 x + ... + bD x^D, by four methods (docs/cli.md):
 //
 //   normal         seed 001's curve_fit: the normal equations (V^T V) b = V^T y built from power
 //                  sums, solved by the hand-written GEPP (or Gauss-Seidel);

@@ -1,6 +1,6 @@
 #pragma once
 // The Jansen leg's eight loop-closure equations, seed 000 eqs (1)-(8), in theta1 ... theta8 at a
-// given crank angle theta_i (radians, counter-clockwise from +x). Frame and lengths: design/mechanisms.md.
+// given crank angle theta_i (radians, counter-clockwise from +x). Frame and lengths: docs/mechanisms.md.
 // O (crank pivot) is the origin, P1 = (-b, -a); each equation equates two paths to one joint:
 //   (1,2)  B:  O -> A -> B            = P1 -> B                 (theta1, theta2)
 //   (3,4)  C:  O -> A -> B -> C       = P1 -> C                 (theta1, theta3, theta4)

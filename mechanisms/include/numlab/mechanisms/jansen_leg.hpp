@@ -1,6 +1,6 @@
 #pragma once
 // The Jansen leg of seed 000: joints, the closed-form (circle-intersection) solution, and the
-// checks every pose must pass. Frame, names and lengths: design/mechanisms.md.
+// checks every pose must pass. Frame, names and lengths: docs/mechanisms.md.
 //
 // Joints: O (crank pivot, origin), P1 = (-b, -a) (fixed), A (crank tip), B, C, D, E, F (foot).
 // Angles theta1 ... theta8 (radians from +x) are the directions A->B, P1->B, B->C, P1->C, C->E,

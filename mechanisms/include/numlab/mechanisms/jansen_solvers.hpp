@@ -1,7 +1,7 @@
 #pragma once
 // Ways to find one pose of the Jansen leg, behind one interface, and the crank sweep over them.
 //
-// Solver names (design/cli.md): full (hand-written Newton, inner solver from `linear`: gepp,
+// Solver names (docs/cli.md): full (hand-written Newton, inner solver from `linear`: gepp,
 // gauss-seidel, gsl-lu, eigen-lu), sequential (block by block: seed 000's four 2x2 blocks with the
 // closed-form inverse; seed 001's five, found from the pattern), analytic (circle intersections),
 // gsl-<type> (GSL's multiroot types).

@@ -1,6 +1,6 @@
 #pragma once
 // The Ford Mustang roof linkage of seed 003: eight loop-closure equations in the unknown angles
-// A ... H at the input angle theta (radians). Frame, names and lengths: design/mechanisms.md.
+// A ... H at the input angle theta (radians). Frame, names and lengths: docs/mechanisms.md.
 //
 // Assumptions of this model (each also stated where it is used):
 //  - Fixed points P0 = (sqrt 0.5, 0), P1 = (0, sqrt 0.5), P2 = (0, 1 + sqrt 0.5); theta is the

@@ -1,5 +1,5 @@
 #pragma once
-// Ways to find one pose of the Mustang linkage, behind one interface (design/cli.md's names):
+// Ways to find one pose of the Mustang linkage, behind one interface (docs/cli.md's names):
 // full (Newton on all 8 equations, inner solver `linear`: gepp, gauss-seidel, gsl-lu, eigen-lu),
 // sequential (seed 003's four 2x2 loops in order, each by Newton with the closed-form 2x2 inverse),
 // analytic (the circle intersections), gsl-<type> (GSL's multiroot types on all 8 equations).
