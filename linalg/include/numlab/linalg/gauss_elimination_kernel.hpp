@@ -27,25 +27,24 @@ template <int N, typename WorkMatrix, typename VectorType>
 EliminationOutcome gepp_kernel(WorkMatrix& U, VectorType& c, VectorType& inverse_pivots, VectorType& x,
                                double negligible_pivot, bool partial_pivoting) {
   const int n = N == Eigen::Dynamic ? static_cast<int>(U.rows()) : N;
+  // Differs from the textbook: rows as raw pointers (row-major, so each row is contiguous).
   double* const rows = U.data();
   const auto row = [rows, n](int i) { return rows + static_cast<Eigen::Index>(i) * n; };
 
   for (int k = 0; k < n; ++k) {
     int pivot_row = k;
     if (partial_pivoting) {
-      // Differs from the textbook: a select, not a branch, so there is no branch to mispredict.
       double largest = std::abs(row(k)[k]);
       for (int i = k + 1; i < n; ++i) {
         const double candidate = std::abs(row(i)[k]);
-        const bool larger = candidate > largest;
-        largest = larger ? candidate : largest;
-        pivot_row = larger ? i : pivot_row;
+        if (candidate > largest) {
+          largest = candidate;
+          pivot_row = i;
+        }
       }
     }
 
-    // Differs from the textbook: the pivot row is found by comparing it with each row index, never
-    // used as an index, so the swap need not wait for the search (and no `break` after it, which
-    // would let the compiler index by pivot_row again).
+    // Differs from the textbook: the swap is found by comparing indices (no break), not by indexing.
     for (int i = k + 1; i < n && pivot_row != k; ++i) {
       if (i != pivot_row) continue;
       U.row(k).swap(U.row(i));
