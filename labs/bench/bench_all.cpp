@@ -78,7 +78,7 @@ void draw_work_precision(const ChartFiles& files, const std::string& title, cons
   // Hand-written solvers solid, GSL's dashed; every line its own colour and marker.
   static const std::vector<std::string> colours = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
                                                    "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#000080", "#808000",
-                                                   "#800000", "#008080", "#ff1493"};
+                                                   "#800000", "#008080", "#ff1493", "#556b2f"};
   std::string plots;
   for (std::size_t s = 0; s < solvers.size(); ++s) {
     const bool closed_form = solvers[s] == "analytic";

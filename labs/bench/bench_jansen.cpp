@@ -11,6 +11,7 @@
 
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
+#include "numlab/mechanisms/jansen_sequential.hpp"
 #include "numlab/mechanisms/full_newton_pose_solver.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "output/table.hpp"
@@ -25,10 +26,14 @@ using mechanisms::JansenModel;
 // The row "full, std::sin": full Newton (GEPP) on the textbook closure, whose sines come from
 // std::sin and std::cos rather than the table every other row's closure uses.
 constexpr const char* library_sines = "full-std-sin";
+// The row "sequential, textbook": the four Newton<DyadBlock, ClosedForm2x2> a student reads
+// (TextbookSequentialJansen), beside `sequential`, their specialised copy DyadNewton.
+constexpr const char* textbook_sequential = "sequential-textbook";
 
 std::unique_ptr<mechanisms::JansenPoseSolver> make_solver(JansenModel model, const std::string& label,
                                                           const std::string& solver, const std::string& linear,
                                                           const nonlinear::NewtonOptions& options) {
+  if (label == textbook_sequential) return std::make_unique<mechanisms::TextbookSequentialJansen>(options);
   if (label != library_sines) return mechanisms::make_jansen_solver(model, solver, linear, options);
   if (model == JansenModel::eight_equations) {
     return mechanisms::make_full_newton<mechanisms::JansenClosure, Eigen::VectorXd>(linear, options);
@@ -40,14 +45,15 @@ struct SolverChoice {
   std::string label, solver, linear;
 };
 
-std::vector<SolverChoice> solver_choices(bool quick) {
+std::vector<SolverChoice> solver_choices(JansenModel model, bool quick) {
   std::vector<SolverChoice> choices = {{"full", "full", "gepp"},
                                        {library_sines, "full", "gepp"},
                                        {"full-gauss-seidel", "full", "gauss-seidel"},
                                        {"full-gsl-lu", "full", "gsl-lu"},
                                        {"full-eigen-lu", "full", "eigen-lu"},
-                                       {"sequential", "sequential", "gepp"},
-                                       {"analytic", "analytic", "gepp"}};
+                                       {"sequential", "sequential", "gepp"}};
+  if (model == JansenModel::eight_equations) choices.push_back({textbook_sequential, "sequential", "inverse2x2"});
+  choices.push_back({"analytic", "analytic", "gepp"});
   for (const std::string& type : nonlinear::gsl_multiroot_types()) {
     if (!quick || type == "newton") choices.push_back({"gsl-" + type, "gsl-" + type, "gepp"});
   }
@@ -64,7 +70,9 @@ double time_of(const std::vector<JansenBenchRow>& rows, const std::string& solve
 }  // namespace
 
 std::string jansen_bench_label(const std::string& solver) {
-  return solver == library_sines ? "full, std::sin" : solver;
+  if (solver == library_sines) return "full, std::sin";
+  if (solver == textbook_sequential) return "sequential, textbook";
+  return solver;
 }
 
 std::vector<JansenBenchRow> bench_jansen(JansenModel model, double tolerance, bool quick) {
@@ -75,7 +83,7 @@ std::vector<JansenBenchRow> bench_jansen(JansenModel model, double tolerance, bo
   options.max_iterations = 100;
   const TimingPlan plan = quick ? TimingPlan{3, 10, 0.0} : TimingPlan{7, 1000, 0.3};
   std::vector<JansenBenchRow> rows;
-  for (const SolverChoice& choice : solver_choices(quick)) {
+  for (const SolverChoice& choice : solver_choices(model, quick)) {
     if (isatty(STDERR_FILENO) != 0) std::cerr << "\r\033[Kbench jansen: " << choice.label << std::flush;
     const auto solver = make_solver(model, choice.label, choice.solver, choice.linear, options);
     // Timed: the sweep solve itself, the same for every solver (the start from the seed's

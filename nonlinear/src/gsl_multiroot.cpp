@@ -167,6 +167,9 @@ struct GslMultiroot::Workspace {
 GslMultiroot::GslMultiroot(const DynamicSystem& system, const std::string& type, NewtonOptions options)
     : workspace_(std::make_unique<Workspace>()), options_(options) {
   gsl_set_error_handler_off();  // GSL's default handler aborts; numlab reports statuses instead
+  if (options_.damped) {
+    throw std::invalid_argument("damping applies to numlab's Newton only: GSL's types choose their own steps");
+  }
   const auto n = static_cast<std::size_t>(system.dimension());
   workspace_->state.system = &system;
   if (const auto* f_type = derivative_free_type(type)) {

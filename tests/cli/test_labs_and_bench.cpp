@@ -169,20 +169,29 @@ TEST_CASE("numlab bench linear: JSON rows, a chart, and its data and script besi
   CHECK_THAT(bad_chart.err, Contains(".svg or .png"));
 }
 
-TEST_CASE("numlab bench jansen measures full Newton on std::sin beside the table's (the row 'full std::sin')",
+TEST_CASE("numlab bench jansen measures the textbook paths beside the fast ones",
           "[cli][bench]") {
   const auto out = run_json("bench jansen", "--quick", 0);
-  int found = 0;
-  for (const auto& row : out["rows"]) {
-    if (row["solver"] != "full-std-sin") continue;
-    ++found;
+  const auto row_of = [&](const std::string& solver) {
+    for (const auto& row : out["rows"]) {
+      if (row["solver"] == solver) return row;
+    }
+    FAIL("no row " << solver);
+    return out["rows"][0];
+  };
+  for (const std::string solver : {"full-std-sin", "sequential-textbook"}) {
+    INFO(solver);
+    const auto row = row_of(solver);
     CHECK(row["error"].get<double>() < 1e-8);
     CHECK(row["time_s"].get<double>() > 0.0);
   }
-  CHECK(found == 1);
+  // The same method, so the same iterations: only the sines (full) or the stepper (sequential) differ.
+  CHECK(row_of("full-std-sin")["iterations"] == row_of("full")["iterations"]);
+  CHECK(row_of("sequential-textbook")["iterations"] == row_of("sequential")["iterations"]);
   const auto text = run_numlab("bench jansen --quick");
   CHECK(text.exit_code == 0);
   CHECK_THAT(text.out, Contains("full, std::sin"));
+  CHECK_THAT(text.out, Contains("sequential, textbook"));
 }
 
 TEST_CASE("numlab bench with no argument: work-precision rows for every Jansen solver, and every chart",

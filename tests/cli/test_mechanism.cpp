@@ -70,7 +70,8 @@ TEST_CASE("mechanism: bad input gets one error line and exit 2", "[cli][mechanis
 
 TEST_CASE("bench jansen: JSON rows with solver, tolerance, time and error", "[cli][bench][mechanism]") {
   const auto out = run_json("bench jansen", "--quick", 0);
-  REQUIRE(out["rows"].size() == 8);  // full x4 linear solvers, full-std-sin, sequential, analytic, gsl-newton
+  // full x4 linear solvers, full-std-sin, sequential, sequential-textbook, analytic, gsl-newton
+  REQUIRE(out["rows"].size() == 9);
   for (const auto& row : out["rows"]) {
     INFO(row["solver"]);
     CHECK(row["tolerance"].get<double>() == 1e-10);

@@ -82,3 +82,11 @@ TEST_CASE("The GSL adapter rejects bad input", "[gsl][bad-input]") {
   CHECK_THROWS_WITH(gsl_multiroot_solve(*problem.system, Eigen::VectorXd::Ones(2), "hybrids"),
                     Contains("2 entries but the system has 4"));
 }
+
+TEST_CASE("GSL's types refuse damping, which only numlab's Newton does", "[gsl][input]") {
+  const TestProblem problem = make_test_problem("rosenbrock");
+  NewtonOptions damped = lab_options();
+  damped.damped = true;
+  CHECK_THROWS_AS(GslMultiroot(*problem.system, "newton", damped), std::invalid_argument);
+  CHECK_THROWS_AS(gsl_multiroot_solve(*problem.system, problem.standard_start, "hybridsj", damped), std::invalid_argument);
+}

@@ -161,7 +161,7 @@ class DyadNewton {
   Eigen::Vector2d cos_ = Eigen::Vector2d::Zero(), sin_ = Eigen::Vector2d::Zero();  // at the current point
   AnchoredSinCos<2> sines_;
   int iterations_ = 0;
-  Status status_ = Status::max_iterations;
+  Status status_ = Status::running;  // no verdict before a solve has finished
   bool running_ = false;
 };
 

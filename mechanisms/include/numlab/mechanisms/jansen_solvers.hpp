@@ -122,7 +122,7 @@ class JansenSweepStepper {
   SweepObserver<JansenSweepStepper>* observer_ = nullptr;
   JansenSweepAngles sweep_;
   Phase phase_ = Phase::finished;
-  Status status_ = Status::converged;
+  Status status_ = Status::running;  // no verdict before the sweep has finished
   double start_deg_ = 0.0, step_deg_ = 0.0, current_deg_ = 0.0;
   int count_ = 0, next_ = 0, poses_ = 0;
   Eigen::VectorXd angles_, trial_;  // the last pose solved; the pose being tried

@@ -14,8 +14,8 @@
 
 namespace numlab::mechanisms {
 
-// The Mustang's pose solvers work on its eight angles A ... H. Their outcome's failed_loop names
-// the loop (1 ... 4) that did not close (sequential and analytic only).
+// The Mustang's pose solvers work on its eight angles A ... H. After a failed solve, the loop-wise
+// ones (sequential and analytic) name the loop (1 ... 4) that did not close by failed_loop().
 using MustangPoseSolver = PoseSolver<MustangAngles>;
 
 const std::vector<std::string>& mustang_solver_names();

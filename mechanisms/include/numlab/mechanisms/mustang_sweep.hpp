@@ -98,7 +98,7 @@ class MustangSweepStepper {
   std::vector<double> up_, down_;  // the requested angles above and below the start, in marching order
   double step_deg_ = 0.0;
   bool seeded_ = false;
-  Status status_ = Status::converged;
+  Status status_ = Status::running;  // no verdict before the sweep has finished
   int poses_ = 0;
   std::size_t next_target_ = 0;
   // The march in the current direction: the last pose, the one before it, and the step between.
