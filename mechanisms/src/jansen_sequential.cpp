@@ -27,8 +27,9 @@ Eigen::Vector2d jansen_dyad_known(int b, double crank_angle, const Eigen::Vector
 
 PoseOutcome TextbookSequentialJansen::solve(double crank_angle, Eigen::VectorXd& theta) {
   PoseOutcome total;
+  const std::array<JansenDyad, 4> dyads = jansen_dyads();
   for (int b = 0; b < 4; ++b) {
-    const JansenDyad dyad = jansen_dyads()[static_cast<std::size_t>(b)];
+    const JansenDyad& dyad = dyads[static_cast<std::size_t>(b)];
     // 1. The block, with its known part from the crank and the blocks already solved.
     const Eigen::Vector2d known = jansen_dyad_known(b, crank_angle, theta);
     const DyadBlock block(known(0), known(1), dyad.p, dyad.q);

@@ -62,12 +62,7 @@ void check_observed(const StatusLog<S, Record>& log, Status verdict) {
   CHECK(log.seen.back() == verdict);
 }
 
-NewtonOptions lab_options() {
-  NewtonOptions options;
-  options.residual_tolerance = 1e-10;
-  options.max_iterations = 100;
-  return options;
-}
+using test::lab_options;
 
 }  // namespace
 

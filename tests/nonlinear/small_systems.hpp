@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "numlab/nonlinear/newton.hpp"
 #include "numlab/nonlinear/system.hpp"
 
 namespace numlab::test {
@@ -44,5 +45,13 @@ struct FixedRosenbrock {
   void residual(const Vector2& x, Vector2& f) const { f << 10.0 * (x(1) - x(0) * x(0)), 1.0 - x(0); }
   void jacobian(const Vector2& x, Matrix2& J) const { J << -20.0 * x(0), 10.0, -1.0, 0.0; }
 };
+
+// The labs' Newton settings for the test problems: residual 1e-10, up to 100 iterations.
+inline nonlinear::NewtonOptions lab_options() {
+  nonlinear::NewtonOptions options;
+  options.residual_tolerance = 1e-10;
+  options.max_iterations = 100;
+  return options;
+}
 
 }  // namespace numlab::test

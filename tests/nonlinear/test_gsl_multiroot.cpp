@@ -2,19 +2,13 @@
 #include <map>
 
 #include "numlab/nonlinear/gsl_multiroot.hpp"
+#include "small_systems.hpp"
 #include "numlab/nonlinear/mgh_problems.hpp"
 
 using namespace numlab;
 using namespace numlab::nonlinear;
 
-namespace {
-NewtonOptions lab_options() {
-  NewtonOptions options;
-  options.residual_tolerance = 1e-10;
-  options.max_iterations = 100;
-  return options;
-}
-}  // namespace
+using test::lab_options;
 
 TEST_CASE("All eight GSL types reach the known root on the well-behaved problems", "[gsl][mgh]") {
   for (const std::string name : {"rosenbrock", "helical-valley", "powell-singular"}) {
