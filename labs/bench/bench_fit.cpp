@@ -55,6 +55,7 @@ int run_bench_fit(const CommonOptions& common, const std::string& chart, bool qu
     for (const FitBenchRow& row : rows) {
       out["rows"].push_back({{"solver", row.sweep.method}, {"data", row.data}, {"degree", row.sweep.degree},
                              {"time_s", row.time_s}, {"digits", row.sweep.digits},
+                             {"condition", number_or_null(row.sweep.condition)},
                              {"status", std::string(to_string(row.sweep.status))}});
     }
     std::cout << out.dump(2) << '\n';

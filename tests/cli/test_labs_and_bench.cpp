@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -238,6 +239,30 @@ TEST_CASE("numlab bench with no argument: work-precision rows for every Jansen s
   CHECK(out["charts"][0]["chart"] == folder + "/wp.svg");
   for (const auto& chart : out["charts"]) {
     for (const char* file : {"chart", "data", "script"}) CHECK(std::filesystem::exists(chart[file].get<std::string>()));
+  }
+  std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("numlab bench fit: every method at degrees 1 .. 12 on Wampler4, digits bounded by the conditioning",
+          "[cli][bench][fitting]") {
+  const std::string folder = temporary_folder();
+  const auto out = run_json("bench fit", "--quick --out " + folder, 0);
+  CHECK(out["benchmark"] == "fit");
+  REQUIRE(out["rows"].size() == 48);  // 4 methods x 12 degrees
+  CHECK(std::filesystem::exists(folder + "/bench-fit.svg"));
+  CHECK(std::filesystem::exists(folder + "/bench-fit.csv"));
+  CHECK(std::filesystem::exists(folder + "/bench-fit.gp"));
+  for (const auto& row : out["rows"]) {
+    const std::string method = row["solver"];
+    const int degree = row["degree"];
+    INFO(method << " degree " << degree);
+    CHECK(row["time_s"].get<double>() > 0.0);
+    // A backward-stable solve keeps about 16 - log10(kappa) digits of the matrix it solves (V for
+    // the QR methods, V^T V for the normal equations); two digits of slack for the data's own error.
+    if (row["status"] == "converged" && !row["condition"].is_null()) {
+      const double kappa = row["condition"];
+      if (degree <= 5) CHECK(row["digits"].get<double>() >= 16.0 - std::log10(kappa) - 2.0);
+    }
   }
   std::filesystem::remove_all(folder);
 }
