@@ -1,8 +1,9 @@
 #pragma once
-// Text from outside (file contents, file names, command-line words) made safe to echo in a message:
-// printable ASCII and well-formed, visible UTF-8 pass through; control bytes (escape sequences, bells,
-// carriage returns), C1 controls, invisible marks (a byte-order mark, direction overrides) and bytes that are not well-formed UTF-8 become \xNN, so an error
-// line stays one line and cannot retitle or redraw the user's terminal.
+// Text from outside (file contents, file names, command-line words) made safe to echo in a message.
+// Printable ASCII and well-formed, visible UTF-8 pass through. Control bytes (escape sequences, bells,
+// carriage returns), C1 controls, invisible marks (a byte-order mark, direction overrides) and bytes
+// that are not well-formed UTF-8 become \xNN, so an error line stays one line and cannot retitle or
+// redraw the user's terminal.
 
 #include <cstddef>
 #include <string>
