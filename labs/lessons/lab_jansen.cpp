@@ -2,15 +2,17 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
+#include <stdexcept>
 
 #include "bench/bench_jansen.hpp"
 #include "output/chart.hpp"
 #include "cli/cli_common.hpp"
 #include "scenes/jansen_scene.hpp"
 #include "lessons/lab.hpp"
+#include "lessons/lab_sentences.hpp"
 #include "commands/nonlinear_methods.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
@@ -37,6 +39,38 @@ std::string saved_file(LabSession& session, const std::string& name, const std::
   const std::string path = session.folder() + "/" + name;
   write_file_atomically(path, contents);
   return path;
+}
+
+
+// The cycle table of step 3 and what its numbers teach, each sentence made from its rows.
+void show_cycle_comparison(LabSession& session, const std::vector<JansenBenchRow>& rows) {
+  const auto cost = [&](const std::string& solver, const std::string& name) {
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const JansenBenchRow& r) { return r.solver == solver; });
+    if (row == rows.end()) throw std::logic_error("bench_jansen gave no row " + solver);
+    return SolverCost{name, row->time_s, row->iterations};
+  };
+  const SolverCost analytic = cost("analytic", "the closed form");
+  // 1. The table: time per cycle and per pose, as a multiple of the closed form's, and the error.
+  Table table({"solver", "time per cycle", "per pose", "x closed form", "iterations", "error"});
+  double worst = 0.0;
+  for (const auto& row : rows) {
+    table.add_row({jansen_bench_label(row.solver), fmt::format("{:.3g} s", row.time_s),
+                   fmt::format("{:.3g} us", row.time_s / 360 * 1e6), fmt::format("{:.2f}", row.time_s / analytic.time_s),
+                   std::to_string(row.iterations), scientific(row.error)});
+    worst = std::max(worst, row.error);
+  }
+  session.show(table, "cycle-comparison");
+  // 2. What the ratios teach.
+  const SolverCost full = cost("full", "full Newton"), sequential = cost("sequential", "sequential Newton");
+  const double std_sin = cost("full-std-sin", "").time_s;
+  session.say(fmt::format("Every solver's worst joint error is at most {:.2g}: {}.", worst,
+                          worst < 1e-6 ? "all stay on the seed's branch" : "some leave the seed's branch"));
+  session.say(block_newton_sentence(sequential, full, 8));
+  session.say(same_method_sentence({"full Newton (hand-written GEPP)", full.time_s, full.iterations},
+                                   cost("gsl-newton", "GSL's newton on the same f and J")));
+  session.say(closed_form_sentence(full, analytic, 360));
+  session.say(fmt::format("Full Newton calling std::sin is {} full Newton on the sine table: that is what the table "
+                          "saves.", speed_ratio_phrase(std_sin, full.time_s)));
 }
 
 }  // namespace
@@ -71,19 +105,12 @@ int run_jansen_lab(LabSession& session) {
   session.begin_step("One crank cycle, every solver, against the closed form",
                      "360 poses, 1 degree apart, Newton tolerance 1e-10, each pose warm-started by extrapolating the "
                      "two before it. 'error' is the worst distance of any joint from the circle-intersection "
-                     "solution over the cycle: every solver stays on the seed's branch. Every closure but one takes "
+                     "solution over the cycle; times are medians of repeated runs. Every closure but one takes "
                      "its sines and cosines from a table (std::cos and std::sin at the nodes k/64, then a short "
                      "series); 'full, std::sin' is full Newton on the closure as written, calling the library: the "
                      "difference between it and 'full' is what the table saves.");
   const auto rows = bench_jansen(JansenModel::eight_equations, 1e-10, false);
-  std::ostringstream printed;
-  print_jansen_bench(printed, rows);
-  session.out() << printed.str() << '\n';
-  Table table({"solver", "time per cycle (s)", "iterations", "error"});
-  for (const auto& row : rows) {
-    table.add_row({row.solver, fmt::format("{:.4g}", row.time_s), std::to_string(row.iterations), scientific(row.error)});
-  }
-  saved_file(session, "cycle-comparison.csv", table.csv());
+  show_cycle_comparison(session, rows);
 
   const auto cycle = full_cycle(JansenModel::eight_equations, "full", 1e-10);
   session.begin_step("How fast does the foot move?",
