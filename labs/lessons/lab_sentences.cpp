@@ -100,7 +100,7 @@ std::string condition_limit_sentence(const std::vector<ConditionRow>& rows) {
                                                singular->n);
   // 3. The rows in between: an answer with no guaranteed digit.
   if (exceeds != rows.end() && exceeds < singular) {
-    text += fmt::format(" At n = {} it still returns an answer, but kappa*eps > 1 guarantees no correct digit.",
+    text += fmt::format(" At n = {} it still returns an answer, but with kappa*eps > 1 not one of its digits is guaranteed.",
                         exceeds->n);
   }
   return text;
