@@ -120,23 +120,27 @@ std::string digits_lost_sentence(const std::string& method, double worst_error, 
 
 std::string loop_stops_sentence(int loop, const std::vector<LoopOutcome>& outcomes, int iteration_limit) {
   std::vector<std::string> stops;
-  int ran_out = 0;
+  int failed = 0, ran_out = 0;
   for (const LoopOutcome& outcome : outcomes) {
     if (!outcome.stopped) {
-      ++ran_out;
+      ++failed;
+      ran_out += outcome.iterations >= iteration_limit ? 1 : 0;
       continue;
     }
     stops.push_back(fmt::format("{:.2f} deg (after {} iterations, with max(|f_i|, |f_j|) = {:.2g}: {})",
                                 outcome.theta_deg, outcome.iterations, outcome.residual,
                                 outcome.residual <= 1e-2 ? "a root" : "not a root"));
   }
+  // 1. Where it did not stop.
   const int total = static_cast<int>(outcomes.size());
-  if (stops.empty()) {
-    return fmt::format("Loop {} never stops on this grid: it uses all {} iterations at {} angles.", loop,
-                       iteration_limit, count_of(ran_out, total));
-  }
-  return fmt::format("Loop {} uses all {} iterations at {} angles, and stops only at {}.", loop, iteration_limit,
-                     count_of(ran_out, total), joined(stops, " and at "));
+  std::string text = ran_out == failed
+                         ? fmt::format("Loop {} uses all {} iterations without stopping at {} angles", loop,
+                                       iteration_limit, count_of(failed, total))
+                         : fmt::format("Loop {} fails at {} angles ({} of them after all {} iterations)", loop,
+                                       count_of(failed, total), ran_out, iteration_limit);
+  // 2. Where it stopped, and whether there is a root there.
+  if (stops.empty()) return text + ": it never stops on this grid.";
+  return text + fmt::format(", and stops only at {}.", joined(stops, " and at "));
 }
 
 std::string trend_phrase(const std::vector<double>& values) {
