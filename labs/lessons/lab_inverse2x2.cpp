@@ -3,9 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "lessons/lab.hpp"
+#include "lessons/lab_sentences.hpp"
 #include "commands/linear_methods.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/linalg/measures.hpp"
@@ -25,16 +27,19 @@ int run_inverse2x2_lab(LabSession& session) {
                           closed.inverse(1, 1), closed.condition_number,
                           (A * closed.inverse - Eigen::Matrix2d::Identity()).cwiseAbs().maxCoeff()));
 
+  const Eigen::Matrix2d tiny = (Eigen::Matrix2d() << 1e-7, 0, 0, 1e-7).finished();
+  const Eigen::Matrix2d parallel = (Eigen::Matrix2d() << 1e10, 1e10, 1e10, 1e10 + 2e-6).finished();
   session.begin_step("Singular relative to what? The scale of A",
-                     "A test like |det A| < 1e-12 calls [1e-7 0; 0 1e-7] singular (det 1e-14) although it is a "
-                     "perfectly conditioned multiple of I, and passes [1e10 1e10; 1e10 1e10+2e-6] (det about 2e4) "
-                     "although its rows are parallel to within one rounding unit. For a 2x2, ||A||_F^2 / |det A| = "
-                     "kappa + 1/kappa, so numlab calls A singular when |det A| <= eps ||A||_F^2, that is when "
-                     "kappa_2(A) >= 1/eps, whatever the scale.");
+                     fmt::format("A test like |det A| < 1e-12 calls [1e-7 0; 0 1e-7] singular (det {:.2g}) although "
+                                 "it is a perfectly conditioned multiple of I, and passes [1e10 1e10; 1e10 1e10+2e-6] "
+                                 "(det {:.3g}) although its rows are parallel to within one rounding unit. For a 2x2, "
+                                 "||A||_F^2 / |det A| = kappa + 1/kappa, so numlab calls A singular when |det A| <= "
+                                 "eps ||A||_F^2, that is when kappa_2(A) >= 1/eps, whatever the scale.",
+                                 linalg::inverse2x2(tiny).determinant, linalg::inverse2x2(parallel).determinant));
   Table scale({"A", "det A", "kappa_2", "status"});
   const std::vector<std::pair<std::string, Eigen::Matrix2d>> examples = {
-      {"[1e-7 0; 0 1e-7]", (Eigen::Matrix2d() << 1e-7, 0, 0, 1e-7).finished()},
-      {"[1e10 1e10; 1e10 1e10+2e-6]", (Eigen::Matrix2d() << 1e10, 1e10, 1e10, 1e10 + 2e-6).finished()},
+      {"[1e-7 0; 0 1e-7]", tiny},
+      {"[1e10 1e10; 1e10 1e10+2e-6]", parallel},
       {"1e-200 * [4 3; 6 3]", 1e-200 * A},
       {"1e200 * [4 3; 6 3]", 1e200 * A},
       {"[1 2; 2 4]", (Eigen::Matrix2d() << 1, 2, 2, 4).finished()},
@@ -45,9 +50,11 @@ int run_inverse2x2_lab(LabSession& session) {
                    std::string(to_string(result.status))});
   }
   session.show(scale, "scale");
-  session.say("The determinants of the two scaled matrices are -6e-400 and -6e+400: they underflow to -0 and "
-              "overflow to -inf in double precision. numlab therefore first scales A by a power of two (exact) "
-              "and tests the determinant of the scaled matrix, which is why both still solve correctly.");
+  const linalg::Inverse2x2 small = linalg::inverse2x2(1e-200 * A), large = linalg::inverse2x2(1e200 * A);
+  session.say(fmt::format("The exact determinants of the two scaled matrices are -6e-400 and -6e+400, outside the "
+                          "doubles: computed, they are {:g} and {:g}. numlab therefore first scales A by a power of "
+                          "two (exact) and tests the determinant of the scaled matrix; their status: {} and {}.",
+                          small.determinant, large.determinant, to_string(small.status), to_string(large.status)));
 
   session.begin_step("Where it fails: a nearly singular 2x2",
                      "A = [1 1; 1 1+d], b = A * (0.1, 0.7), rounded. As d shrinks the rows become parallel and "
@@ -56,6 +63,18 @@ int run_inverse2x2_lab(LabSession& session) {
                      "amplified by 1/d. At d = 1e-16, 1+d rounds to 1: exactly singular, and both methods say so.");
   Table nearly({"d", "kappa_2", "closed form", "forward error", "rel. residual", "GSL LU", "forward error",
                 "rel. residual"});
+  // Each method's worst forward error (and where), and its residuals' range, over the solved rows.
+  struct Worst {
+    double error = 0.0, kappa = 0.0;
+    std::string where;
+    std::vector<double> residuals;
+    void add(const Eigen::VectorXd& x, const Eigen::Vector2d& exact, double residual, double d, double k) {
+      if (!x.allFinite()) return;
+      const double e = linalg::forward_error(x, exact);
+      if (e > error || where.empty()) error = e, kappa = k, where = fmt::format("d = {:g}", d);
+      residuals.push_back(residual);
+    }
+  } closed_worst, lu_worst;
   for (double d : {1e-2, 1e-6, 1e-10, 1e-13, 1e-15, 1e-16}) {
     Eigen::Matrix2d M;
     M << 1, 1, 1, 1 + d;
@@ -72,13 +91,20 @@ int run_inverse2x2_lab(LabSession& session) {
     const auto [lu_error, lu_residual] = errors(lu.x);
     nearly.add_row({scientific(d), scientific(inverse.condition_number), std::string(to_string(closed_form.status)),
                     closed_error, closed_residual, std::string(to_string(lu.status)), lu_error, lu_residual});
+    const Eigen::VectorXd closed_x = closed_form.x;
+    if (closed_x.allFinite()) closed_worst.add(closed_x, exact, linalg::relative_residual(M, b, closed_x), d, inverse.condition_number);
+    if (lu.x.allFinite()) lu_worst.add(lu.x, exact, linalg::relative_residual(M, b, lu.x), d, inverse.condition_number);
   }
   session.show(nearly, "nearly-singular");
-  session.say("The residual columns show why they differ. LU with partial pivoting is backward stable: its "
-              "relative residual stays at rounding level for every d, and here its one elimination, row 2 - "
-              "row 1, even subtracts nearly equal numbers exactly, so it keeps every digit. Solving through an "
-              "explicit inverse is not backward stable: its residual grows with kappa. In general both "
-              "forward errors are bounded only by about kappa * eps; on a 2x2 inside a Newton loop, where "
+  const double lu_residual = *std::max_element(lu_worst.residuals.begin(), lu_worst.residuals.end());
+  session.say(fmt::format("The residual columns show why they differ. GSL LU's relative residual is {} for every d: "
+                          "LU with partial pivoting is backward stable. The closed form's residual {} as d shrinks: "
+                          "solving through an explicit inverse is not backward stable.",
+                          lu_residual == 0.0 ? "0" : fmt::format("at most {:.2g}", lu_residual),
+                          trend_phrase(closed_worst.residuals)));
+  session.say(digits_lost_sentence("The closed form", closed_worst.error, closed_worst.where, closed_worst.kappa) +
+              " " + digits_lost_sentence("GSL LU", lu_worst.error, lu_worst.where, lu_worst.kappa) +
+              " Both forward errors are bounded only by about kappa * eps; on a 2x2 inside a Newton loop, where "
               "kappa is moderate, the closed form's speed wins.");
 
   session.begin_step("The closed form against GSL",

@@ -9,6 +9,7 @@
 #include "bench/bench_mustang.hpp"
 #include "cli/cli_common.hpp"
 #include "lessons/lab.hpp"
+#include "lessons/lab_sentences.hpp"
 #include "scenes/mustang_scene.hpp"
 #include "numlab/mechanisms/mustang_seed_method.hpp"
 #include "numlab/mechanisms/mustang_sweep.hpp"
@@ -81,6 +82,7 @@ int run_mustang_lab(LabSession& session) {
                      "500 iterations. The seed's own grid: theta from pi/6 to pi/3 in steps of 0.05 rad.");
   Table seed_table({"theta (deg)", "loop 1", "loop 2", "loop 3", "loop 4", "|f_i + f_j| (loop 4)", "||f||_inf", "verdict"});
   const SeedMethodOptions as_written;
+  std::vector<LoopOutcome> loop3;  // how loop 3 ended at each theta
   for (double theta = std::numbers::pi / 6.0; theta <= std::numbers::pi / 3.0 + 1e-12; theta += 0.05) {
     const SeedMethodPose pose = seed_method_pose(theta, as_written);
     std::vector<std::string> row = {fmt::format("{:.2f}", theta / degrees)};
@@ -91,12 +93,15 @@ int run_mustang_lab(LabSession& session) {
     row.push_back(scientific(pose.residual_norm));
     row.push_back(verdict(pose, theta, linkage));
     seed_table.add_row(row);
+    const SeedLoopRun& third = pose.loops[2];
+    loop3.push_back({theta / degrees, third.status == Status::converged, third.iterations, third.residual_norm});
   }
   session.show(seed_table, "seed-method");
-  session.say("Loop 3 never stops: with one Jacobian row negated, the step is J^-1 diag(1, -1) f instead of J^-1 f, "
-              "which is not a Newton step and does not converge. Its E and F are then wherever the 500th step "
-              "left them, so loop 4 solves for a linkage that does not close. Where a loop does stop, |f_i + f_j| "
-              "can be small while f_i = -f_j is not: the test passes away from a root.");
+  session.say(loop_stops_sentence(3, loop3, as_written.max_iterations) +
+              " With one Jacobian row negated, its step is J^-1 diag(1, -1) f instead of J^-1 f: not a Newton "
+              "step. Where it runs out, its E and F are wherever the last step left them, so loop 4 solves for a "
+              "linkage that does not close. Where a loop does stop, |f_i + f_j| can be small while f_i = -f_j is "
+              "not: the test passes away from a root.");
 
   session.begin_step("Each error in turn",
                      "The same method over theta = -41 ... 56 deg (1 deg apart, inside the assembly range found "

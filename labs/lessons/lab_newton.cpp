@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "lessons/lab.hpp"
+#include "lessons/lab_sentences.hpp"
 #include "commands/nonlinear_methods.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
 #include "numlab/nonlinear/block_order.hpp"
@@ -173,11 +174,19 @@ void show_failures(LabSession& session) {
   // Wood: a root of the system that is not the minimum.
   const nonlinear::TestProblem wood = nonlinear::make_test_problem("wood");
   const NonlinearRun saddle = run_nonlinear_method("newton", *wood.system, wood.standard_start, lab_settings(false));
+  int same_point = 0, methods = 0;  // methods that converge to the saddle Newton finds
+  for (const MethodChoice& choice : compared_methods()) {
+    const NonlinearRun run = run_nonlinear_method(choice.method, *wood.system, wood.standard_start,
+                                                  lab_settings(choice.damped));
+    same_point += run.status == Status::converged && (run.x - saddle.x).lpNorm<Eigen::Infinity>() < 1e-6 ? 1 : 0;
+    ++methods;
+  }
   session.say(fmt::format(
-      "Wood: the system is (half) the gradient of Wood's function, and every method converges from "
-      "(-3, -1, -3, -1) to {}, {} from (1, 1, 1, 1): a genuine root of the system (||f||_inf = {:.2g}) but a "
+      "Wood: the system is (half) the gradient of Wood's function. From (-3, -1, -3, -1) Newton converges to {}, "
+      "{} from (1, 1, 1, 1), and so do {} methods above: a genuine root of the system (||f||_inf = {:.2g}) but a "
       "saddle point of the function, not its minimum. Converged is not the same as right.",
-      point_text(saddle.x), scientific((saddle.x - *wood.known_root).lpNorm<Eigen::Infinity>()), saddle.residual_norm));
+      point_text(saddle.x), scientific((saddle.x - *wood.known_root).lpNorm<Eigen::Infinity>()),
+      count_of(same_point, methods), saddle.residual_norm));
 }
 
 void show_linear_solvers(LabSession& session) {

@@ -3,9 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "lessons/lab.hpp"
+#include "lessons/lab_sentences.hpp"
 #include "commands/linear_methods.hpp"
 #include "numlab/linalg/measures.hpp"
 #include "numlab/linalg/matrix_generators.hpp"
@@ -54,7 +56,7 @@ int run_seidel_lab(LabSession& session) {
   session.begin_step("Where it fails: A = [[1,2,4],[2,1,2],[4,2,1]]",
                      "This matrix is not diagonally dominant. Swept directly, each sweep multiplies the error by "
                      "the spectral radius of the Gauss-Seidel iteration matrix, which exceeds 1 here: the changes "
-                     "grow until numlab stops with 'diverged' (the change has grown 1e8-fold over the first "
+                     "grow until numlab stops with 'diverged' (when the change has grown 1e8-fold over the first "
                      "sweep's).");
   const linalg::GeneratedSystem diverging = linalg::generate_system("gs-diverge", 3);
   traced_sweeps(session, "gauss-seidel-plain", diverging.A, diverging.b, 100);
@@ -71,6 +73,9 @@ int run_seidel_lab(LabSession& session) {
                      "1/kappa) V^T with random orthogonal U and V, so kappa_2(A) is exactly the value shown.");
   Table table({"kappa(A)", "kappa^2", "sweeps (normal equations)", "sweeps / kappa^2", "forward error",
                "plain Gauss-Seidel"});
+  std::vector<double> per_kappa2;
+  double fewest_growth = 1e300, most_growth = 0.0;
+  int previous = 0, diverged = 0, rows = 0;
   for (double kappa : {2.0, 4.0, 8.0, 16.0, 32.0, 64.0}) {
     const Eigen::MatrixXd A = linalg::matrix_with_condition(8, kappa, 7);
     const Eigen::VectorXd exact = Eigen::VectorXd::Ones(8);
@@ -82,10 +87,20 @@ int run_seidel_lab(LabSession& session) {
     table.add_row({fixed(kappa, 0), fixed(kappa * kappa, 0), std::to_string(normal.iterations),
                    fixed(normal.iterations / (kappa * kappa), 2), scientific(linalg::forward_error(normal.x, exact)),
                    fmt::format("{} ({} sweeps)", to_string(plain.status), plain.iterations)});
+    per_kappa2.push_back(normal.iterations / (kappa * kappa));
+    if (previous > 0) {
+      fewest_growth = std::min(fewest_growth, static_cast<double>(normal.iterations) / previous);
+      most_growth = std::max(most_growth, static_cast<double>(normal.iterations) / previous);
+    }
+    previous = normal.iterations;
+    diverged += plain.status == Status::diverged ? 1 : 0;
+    ++rows;
   }
   session.show(table, "sweeps-vs-kappa");
-  session.say("Each doubling of kappa roughly quadruples the sweeps: sweeps / kappa^2 settles near 1. Plain "
-              "Gauss-Seidel diverges on every one of these matrices, which are not diagonally dominant.");
+  session.say(fmt::format("Each doubling of kappa multiplies the sweeps by {:.1f} to {:.1f} (4 would be exactly "
+                          "kappa^2): sweeps / kappa^2 {}. Plain Gauss-Seidel diverges on {} of these matrices, which "
+                          "are not diagonally dominant.",
+                          fewest_growth, most_growth, trend_phrase(per_kappa2), count_of(diverged, rows)));
 
   session.begin_step("Gauss-Seidel against GSL",
                      "A 100x100 diagonally dominant system (b = A * ones): plain Gauss-Seidel converges in a few "
