@@ -28,7 +28,7 @@ std::string size_text(std::size_t bytes) {
 }
 
 [[noreturn]] void fail_at(const std::string& source, int line, std::size_t column, const std::string& what) {
-  fail(source, line, std::to_string(column) + ": " + what);
+  throw std::invalid_argument(printable(source) + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + what);
 }
 
 // Splits one line (comment already removed) on whitespace and commas, and appends each number to
@@ -41,7 +41,11 @@ std::size_t parse_row(std::string_view line, const std::string& source, int line
   std::size_t position = line.find_first_not_of(blanks);
   while (position != std::string_view::npos) {
     if (line[position] == ',') {
-      if (!number_since_comma) fail_at(source, line_number, position + 1, "empty field before this comma");
+      if (!number_since_comma) {
+        fail_at(source, line_number, position + 1,
+                last_comma == std::string_view::npos ? "empty field: a comma with no number before it"
+                                                     : "empty field between two commas");
+      }
       number_since_comma = false;
       last_comma = position;
       position = line.find_first_not_of(blanks, position + 1);
@@ -59,7 +63,7 @@ std::size_t parse_row(std::string_view line, const std::string& source, int line
     position = line.find_first_not_of(blanks, end);
   }
   if (last_comma != std::string_view::npos && !number_since_comma) {
-    fail_at(source, line_number, last_comma + 1, "empty field after this comma");
+    fail_at(source, line_number, last_comma + 1, "empty field: a comma with no number after it");
   }
   return count;
 }
