@@ -21,7 +21,7 @@ TEST_CASE("One finite number (--crank)", "[cli-parsing]") {
   CHECK(finite_number_problem("\x1b]0;x\x07") == "'\\x1b]0;x\\x07' is not a finite number");
 }
 
-TEST_CASE("--sweep START:STOP:STEP", "[cli-parsing]") {
+TEST_CASE("Sweep ranges START:STOP:STEP keep their meaning", "[cli-parsing]") {
   const DegreeRange range = parse_degree_range("0:359:1", "--sweep");
   CHECK((range.start == 0.0 && range.stop == 359.0 && range.step == 1.0));
   const DegreeRange down = parse_degree_range("+10:-5.5:-0.5", "--sweep");
@@ -29,7 +29,7 @@ TEST_CASE("--sweep START:STOP:STEP", "[cli-parsing]") {
   CHECK(parse_degree_range("0:99999:1", "--sweep").stop == 99999.0);  // 100000 poses: the cap
 }
 
-TEST_CASE("--sweep refusals name the part and the problem", "[cli-parsing][bad-input]") {
+TEST_CASE("Sweep range refusals name the part and the problem", "[cli-parsing][bad-input]") {
   const auto sweep = [](const char* text) { return parse_degree_range(text, "--sweep"); };
   CHECK_THROWS_WITH(sweep("0:10"), "--sweep '0:10': expected START:STOP:STEP in degrees, e.g. 0:359:1");
   CHECK_THROWS_WITH(sweep("0:10:1:2"), Contains("expected START:STOP:STEP"));
@@ -48,7 +48,7 @@ TEST_CASE("--sweep refusals name the part and the problem", "[cli-parsing][bad-i
   CHECK_THROWS_WITH(sweep(long_text.c_str()), Contains("--sweep '0:" + std::string(38, '9') + "...': STOP '"));
 }
 
-TEST_CASE("--x0 a,b,...", "[cli-parsing]") {
+TEST_CASE("Number lists for --x0", "[cli-parsing]") {
   CHECK(parse_number_list("1,-2.5,+3e2,.5", "--x0") == std::vector<double>{1.0, -2.5, 300.0, 0.5});
   CHECK(parse_number_list("7", "--x0") == std::vector<double>{7.0});
   CHECK_THROWS_WITH(parse_number_list("1,,2", "--x0"), "--x0 '1,,2': item 2 is empty");
@@ -60,7 +60,7 @@ TEST_CASE("--x0 a,b,...", "[cli-parsing]") {
   CHECK_THROWS_WITH(parse_number_list("1, 2", "--x0"), Contains("item 2 ' 2' is not a finite number"));
 }
 
-TEST_CASE("--generate KIND:N", "[cli-parsing]") {
+TEST_CASE("Generator specs KIND:N for --generate", "[cli-parsing]") {
   const std::vector<std::string> kinds = {"random", "hilbert", "gs-diverge"};
   const auto generate = [&](const char* text) { return parse_generator_spec(text, kinds, "gs-diverge", 4096, "--generate"); };
   CHECK(generate("random:8").kind == "random");
