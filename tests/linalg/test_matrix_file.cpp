@@ -88,7 +88,7 @@ TEST_CASE("Files are read up to a byte cap, in chunks, so devices and FIFOs end"
   // A FIFO: read until its writer closes it.
   const auto fifo = folder / "fifo";
   REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
-  std::thread writer([&] { write_bytes(fifo, "1 2\n3 4\n"); });
+  std::jthread writer([&] { write_bytes(fifo, "1 2\n3 4\n"); });
   const Eigen::MatrixXd M = read_matrix_file(fifo.string());
   writer.join();
   CHECK(M == (Eigen::MatrixXd(2, 2) << 1, 2, 3, 4).finished());
