@@ -10,6 +10,7 @@
 #include <numbers>
 #include <nlohmann/json.hpp>
 
+#include "cli/argument_parsing.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "scenes/jansen_scene.hpp"
@@ -23,16 +24,6 @@ namespace {
 
 using mechanisms::JansenModel;
 using Tracer = SweepTracer<mechanisms::JansenSweepStepper>;
-
-double parse_degrees(const std::string& token, const std::string& whole) {
-  double value = 0.0;
-  const char* first = token.data() + (token.starts_with('+') ? 1 : 0);
-  const auto [end, error] = std::from_chars(first, token.data() + token.size(), value);
-  if (token.empty() || error != std::errc() || end != token.data() + token.size() || !std::isfinite(value)) {
-    throw std::invalid_argument(fmt::format("--sweep '{}': '{}' is not a finite number of degrees", whole, token));
-  }
-  return value;
-}
 
 // |dF / d theta_i| at a pose, from the 8-equation model's rates (the 10-equation model's joints are
 // the same, so its 8 angles are read off them).
@@ -124,20 +115,8 @@ void print_text(std::ostream& out, const std::string& name, const std::string& s
 }  // namespace
 
 SweepRange parse_sweep(const std::string& text) {
-  const std::size_t first = text.find(':'), second = text.find(':', first == std::string::npos ? 0 : first + 1);
-  if (first == std::string::npos || second == std::string::npos || text.find(':', second + 1) != std::string::npos) {
-    throw std::invalid_argument("--sweep '" + text + "': expected START:STOP:STEP in degrees, e.g. 0:359:1");
-  }
-  const SweepRange range{parse_degrees(text.substr(0, first), text),
-                         parse_degrees(text.substr(first + 1, second - first - 1), text),
-                         parse_degrees(text.substr(second + 1), text)};
-  if (range.step == 0.0 || (range.stop - range.start) * range.step < 0.0) {
-    throw std::invalid_argument("--sweep '" + text + "': the step must be non-zero and point from START to STOP");
-  }
-  if (std::floor((range.stop - range.start) / range.step) > 100000) {
-    throw std::invalid_argument("--sweep '" + text + "': more than 100000 poses");
-  }
-  return range;
+  const DegreeRange range = parse_degree_range(text, "--sweep");
+  return {range.start, range.stop, range.step};
 }
 
 MechanismCommand::MechanismCommand(CLI::App& app) {
@@ -145,7 +124,8 @@ MechanismCommand::MechanismCommand(CLI::App& app) {
   command_->add_option("name", name_, "jansen (seed 000, 8 equations), jansen10 (seed 001, 10 equations), mustang (seed 003)")
       ->required()
       ->check(CLI::IsMember({"jansen", "jansen10", "mustang"}));
-  auto* crank = command_->add_option("--crank", crank_, "One crank angle (degrees)");
+  auto* crank = command_->add_option("--crank", crank_, "One crank angle (degrees)")
+                    ->check(CLI::Validator([](std::string& text) { return finite_number_problem(text); }, "DEG"));
   auto* sweep = command_->add_option("--sweep", sweep_, "START:STOP:STEP in degrees");
   crank->excludes(sweep);
   command_->add_option("--solver", solver_, "full, sequential, analytic or gsl-<type>")

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "cli/argument_parsing.hpp"
 #include "commands/linear_methods.hpp"
 #include "numlab/linalg/matrix_file.hpp"
 #include "numlab/linalg/measures.hpp"
@@ -29,18 +30,10 @@ struct LoadedSystem {
 
 // "KIND:N" (N may be left out for gs-diverge).
 LoadedSystem generated_system(const std::string& spec, unsigned seed) {
-  const std::size_t colon = spec.find(':');
-  const std::string kind = spec.substr(0, colon);
-  int n = 3;
-  if (colon == std::string::npos) {
-    if (kind != "gs-diverge") throw std::invalid_argument("--generate '" + spec + "': expected KIND:N, e.g. random:8");
-  } else {
-    const std::string size = spec.substr(colon + 1);
-    const auto [end, error] = std::from_chars(size.data(), size.data() + size.size(), n);
-    if (size.empty() || error != std::errc() || end != size.data() + size.size()) {
-      throw std::invalid_argument("--generate '" + spec + "': size '" + size + "' is not a whole number");
-    }
-  }
+  const GeneratorSpec parsed =
+      parse_generator_spec(spec, linalg::generator_kinds(), "gs-diverge", linalg::max_generated_size, "--generate");
+  const std::string& kind = parsed.kind;
+  const int n = parsed.size.value_or(3);
   linalg::GeneratedSystem generated = linalg::generate_system(kind, n, seed);
   const std::string description = fmt::format("{}, n = {} (b = A * ones, so the exact solution is all ones)", kind,
                                               generated.A.rows());

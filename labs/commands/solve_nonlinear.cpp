@@ -8,7 +8,9 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "cli/argument_parsing.hpp"
 #include "commands/nonlinear_methods.hpp"
+#include "numlab/linalg/matrix_file.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/mgh_problems.hpp"
 #include "output/trace_printers.hpp"
@@ -16,23 +18,11 @@
 namespace numlab::cli {
 
 Eigen::VectorXd parse_point(const std::string& text, int expected, const std::string& flag) {
-  std::vector<double> values;
-  std::size_t begin = 0;
-  while (begin <= text.size()) {
-    const std::size_t end = std::min(text.find(',', begin), text.size());
-    const std::string token = text.substr(begin, end - begin);
-    double value = 0.0;
-    const char* first = token.data() + (token.starts_with('+') ? 1 : 0);
-    const auto [stop, error] = std::from_chars(first, token.data() + token.size(), value);
-    if (token.empty() || error != std::errc() || stop != token.data() + token.size() || !std::isfinite(value)) {
-      throw std::invalid_argument(fmt::format("{} '{}': '{}' is not a finite number", flag, text, token));
-    }
-    values.push_back(value);
-    begin = end + 1;
-  }
+  const std::vector<double> values = parse_number_list(text, flag);
   if (static_cast<int>(values.size()) != expected) {
     throw std::invalid_argument(
-        fmt::format("{} '{}' has {} numbers but the problem has {} unknowns", flag, text, values.size(), expected));
+        fmt::format("{} {} has {} numbers but the problem has {} unknowns", flag, linalg::quoted_token(text), values.size(),
+                    expected));
   }
   return Eigen::Map<const Eigen::VectorXd>(values.data(), expected);
 }

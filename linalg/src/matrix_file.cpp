@@ -1,84 +1,164 @@
 #include "numlab/linalg/matrix_file.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
+
+#include "numlab/printable_text.hpp"
 
 namespace numlab::linalg {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& source, int line, const std::string& what) {
-  throw std::invalid_argument(source + ":" + std::to_string(line) + ": " + what);
+constexpr std::string_view separators = " \t\r\v\f,";
+constexpr std::string_view blanks = " \t\r\v\f";
+
+// "16 MiB" for whole mebibytes, else the byte count.
+std::string size_text(std::size_t bytes) {
+  constexpr std::size_t mebibyte = std::size_t{1} << 20;
+  return bytes % mebibyte == 0 ? std::to_string(bytes / mebibyte) + " MiB" : std::to_string(bytes) + " bytes";
 }
 
-// Splits one line (comment already removed) on whitespace and commas, and parses each number.
-std::vector<double> parse_row(const std::string& line, const std::string& source, int line_number) {
-  std::vector<double> row;
-  std::size_t position = 0;
-  while (position < line.size()) {
-    const std::size_t begin = line.find_first_not_of(" \t\r,", position);
-    if (begin == std::string::npos) break;
-    std::size_t end = line.find_first_of(" \t\r,", begin);
-    if (end == std::string::npos) end = line.size();
-    const std::string token = line.substr(begin, end - begin);
-    double value = 0.0;
-    const char* first = token.data();
-    if (!token.empty() && token[0] == '+') ++first;
-    const auto [stop, error] = std::from_chars(first, token.data() + token.size(), value);
-    if (error == std::errc::result_out_of_range) fail(source, line_number, "'" + token + "' is out of range");
-    if (error != std::errc() || stop != token.data() + token.size()) {
-      fail(source, line_number, "'" + token + "' is not a number");
+[[noreturn]] void fail(const std::string& source, int line, const std::string& what) {
+  throw std::invalid_argument(printable(source) + ":" + std::to_string(line) + ": " + what);
+}
+
+[[noreturn]] void fail_at(const std::string& source, int line, std::size_t column, const std::string& what) {
+  throw std::invalid_argument(printable(source) + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + what);
+}
+
+// Splits one line (comment already removed) on whitespace and commas, and appends each number to
+// `values`; returns how many. A comma separates two numbers: one with no number before or after it
+// marks an empty field.
+std::size_t parse_row(std::string_view line, const std::string& source, int line_number, std::vector<double>& values) {
+  std::size_t count = 0;
+  bool number_since_comma = false;
+  std::size_t last_comma = std::string_view::npos;
+  std::size_t position = line.find_first_not_of(blanks);
+  while (position != std::string_view::npos) {
+    if (line[position] == ',') {
+      if (!number_since_comma) {
+        fail_at(source, line_number, position + 1,
+                last_comma == std::string_view::npos ? "empty field: a comma with no number before it"
+                                                     : "empty field between two commas");
+      }
+      number_since_comma = false;
+      last_comma = position;
+      position = line.find_first_not_of(blanks, position + 1);
+      continue;
     }
-    if (!std::isfinite(value)) fail(source, line_number, "'" + token + "' is not a finite number");
-    row.push_back(value);
-    position = end;
+    std::size_t end = line.find_first_of(separators, position);
+    if (end == std::string_view::npos) end = line.size();
+    const std::string_view token = line.substr(position, end - position);
+    double value = 0.0;
+    const NumberTokenError error = parse_number_token(token, value);
+    if (error != NumberTokenError::none) fail(source, line_number, number_token_problem(token, error));
+    values.push_back(value);
+    ++count;
+    number_since_comma = true;
+    position = line.find_first_not_of(blanks, end);
   }
-  return row;
+  if (last_comma != std::string_view::npos && !number_since_comma) {
+    fail_at(source, line_number, last_comma + 1, "empty field: a comma with no number after it");
+  }
+  return count;
 }
 
 }  // namespace
 
-Eigen::MatrixXd parse_matrix(const std::string& text, const std::string& source) {
-  std::vector<std::vector<double>> rows;
-  std::istringstream lines(text);
-  std::string line;
+std::string read_text_file(const std::string& path, std::size_t max_bytes) {
+  const std::string name = printable(path);
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) throw std::invalid_argument(name + ": is a directory, not a file");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw std::invalid_argument(name + ": cannot open the file (missing or unreadable)");
+  // 1. Read in chunks, never more than max_bytes + 1 bytes in all (a device may never end).
+  std::string text;
+  std::array<char, 1 << 16> chunk{};
+  while (file && text.size() <= max_bytes) {
+    const std::size_t wanted = std::min(chunk.size(), max_bytes + 1 - text.size());
+    file.read(chunk.data(), static_cast<std::streamsize>(wanted));
+    text.append(chunk.data(), static_cast<std::size_t>(file.gcount()));
+  }
+  // 2. One byte past the limit means the file is too long to be an input file.
+  if (text.size() > max_bytes) {
+    throw std::invalid_argument(name + ": longer than the " + size_text(max_bytes) + " limit for input files");
+  }
+  if (file.bad()) throw std::invalid_argument(name + ": cannot read the file");
+  return text;
+}
+
+std::string_view without_byte_order_mark(std::string_view text) {
+  constexpr std::string_view mark = "\xEF\xBB\xBF";
+  return text.starts_with(mark) ? text.substr(mark.size()) : text;
+}
+
+NumberTokenError parse_number_token(std::string_view token, double& value) {
+  if (token.empty()) return NumberTokenError::empty;
+  // from_chars reads "760." and ".11019" but rejects a leading '+', so skip one.
+  const char* first = token.data() + (token.front() == '+' ? 1 : 0);
+  const char* last = token.data() + token.size();
+  const auto [stop, error] = std::from_chars(first, last, value);
+  if (error == std::errc::result_out_of_range && stop == last) return NumberTokenError::out_of_range;
+  if (error != std::errc() || stop != last) return NumberTokenError::not_a_number;
+  return std::isfinite(value) ? NumberTokenError::none : NumberTokenError::not_finite;
+}
+
+std::string quoted_token(std::string_view token) {
+  constexpr std::size_t shown = 40;
+  std::string quoted(1, '\'');
+  quoted += printable(token.substr(0, shown));
+  quoted += token.size() > shown ? "...'" : "'";
+  return quoted;
+}
+
+std::string number_token_problem(std::string_view token, NumberTokenError error) {
+  switch (error) {
+    case NumberTokenError::none: return "";
+    case NumberTokenError::empty: return "empty value where a number belongs";
+    case NumberTokenError::out_of_range: return quoted_token(token) + " is out of range";
+    case NumberTokenError::not_finite: return quoted_token(token) + " is not a finite number";
+    case NumberTokenError::not_a_number: break;
+  }
+  return quoted_token(token) + " is not a number";
+}
+
+Eigen::MatrixXd parse_matrix(std::string_view text, const std::string& source) {
+  text = without_byte_order_mark(text);
+  std::vector<double> values;  // row after row
+  std::size_t rows = 0, columns = 0;
   int line_number = 0;
-  while (std::getline(lines, line)) {
+  for (std::size_t begin = 0; begin < text.size();) {
+    // 1. One line, without its comment.
     ++line_number;
-    line = line.substr(0, line.find('#'));
-    std::vector<double> row = parse_row(line, source, line_number);
-    if (row.empty()) continue;
-    if (!rows.empty() && row.size() != rows.front().size()) {
+    const std::size_t end = std::min(text.find('\n', begin), text.size());
+    const std::string_view line = text.substr(begin, end - begin);
+    begin = end + 1;
+    const std::size_t count = parse_row(line.substr(0, line.find('#')), source, line_number, values);
+    // 2. Blank lines are skipped; every other row has the first row's length.
+    if (count == 0) continue;
+    if (rows > 0 && count != columns) {
       fail(source, line_number,
-           "row has " + std::to_string(row.size()) + " numbers, earlier rows have " + std::to_string(rows.front().size()));
+           "row has " + std::to_string(count) + " numbers, earlier rows have " + std::to_string(columns));
     }
-    rows.push_back(std::move(row));
+    columns = count;
+    ++rows;
   }
-  if (rows.empty()) throw std::invalid_argument(source + ": no numbers found");
-
-  Eigen::MatrixXd matrix(rows.size(), rows.front().size());
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    for (std::size_t j = 0; j < rows[i].size(); ++j) matrix(i, j) = rows[i][j];
-  }
-  return matrix;
+  if (rows == 0) throw std::invalid_argument(printable(source) + ": no numbers found");
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  return Eigen::Map<const RowMajor>(values.data(), static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(columns));
 }
 
-Eigen::MatrixXd read_matrix_file(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw std::invalid_argument(path + ": cannot open file");
-  std::ostringstream contents;
-  contents << file.rdbuf();
-  return parse_matrix(contents.str(), path);
-}
+Eigen::MatrixXd read_matrix_file(const std::string& path) { return parse_matrix(read_text_file(path), path); }
 
 Eigen::VectorXd read_vector_file(const std::string& path) {
   const Eigen::MatrixXd values = read_matrix_file(path);
   if (values.cols() != 1 && values.rows() != 1) {
-    throw std::invalid_argument(path + ": a vector must be one row or one column, got " +
+    throw std::invalid_argument(printable(path) + ": a vector must be one row or one column, got " +
                                 std::to_string(values.rows()) + "x" + std::to_string(values.cols()));
   }
   return Eigen::Map<const Eigen::VectorXd>(values.data(), values.size());

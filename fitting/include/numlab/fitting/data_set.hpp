@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace numlab::fitting {
@@ -24,20 +25,29 @@ struct DataSet {
   std::optional<CertifiedValues> certified;  // NIST `.dat` files only
 };
 
-// A CSV file whose header names an `x` and a `y` column (any order; other columns are ignored).
-// Throws std::invalid_argument naming the file, line and value for: a missing file, a missing
-// column, a row of the wrong length, a value that is not a finite number, or no data rows.
-DataSet read_csv_data(const std::string& path);
+// Files are read whole, up to linalg::max_input_file_bytes (16 MiB); a UTF-8 byte-order mark at the
+// start is skipped and "\r\n" line ends are read as "\n". The parse_* functions read the same
+// formats from text (`source` names it in messages and gives DataSet::name).
 
-// A NIST StRD file: the certified parameter lines ("B0  value  sd"), the residual standard
-// deviation, R-squared, and the "Data:  y  x" table. Numbers in NIST's notation are accepted
-// ("760.", ".11019", "0.1E-01"). Throws std::invalid_argument as read_csv_data does.
+// A CSV file whose header names an `x` and a `y` column (any order; other columns are ignored).
+// Throws std::invalid_argument naming the file, line and value for: a missing or unreadable file,
+// a directory, a file over the size limit, an empty file, a missing or twice-named x or y column, a
+// row of the wrong length, a value that is empty or not a finite number, or no data rows.
+DataSet read_csv_data(const std::string& path);
+DataSet parse_csv_data(std::string_view text, const std::string& source);
+
+// A NIST StRD file: the "N Observations" line, the certified parameter lines ("B0  value  sd"), the
+// residual standard deviation, R-squared, and the "Data:  y  x" table, which must have N rows.
+// Numbers in NIST's notation are accepted ("760.", ".11019", "0.1E-01"). Throws
+// std::invalid_argument as read_csv_data does, and when the header's count and the table's differ.
 DataSet read_nist_data(const std::string& path);
+DataSet parse_nist_data(std::string_view text, const std::string& source);
 
 // A file ending in `.dat` is read as NIST StRD, anything else as CSV.
 DataSet read_data_file(const std::string& path);
 
-// One number: the whole token must parse and be finite. `where` names the place in messages.
+// One number: the whole token must parse and be finite. `where` names the place in messages
+// (the token is quoted there with numlab::printable, at most 40 bytes shown).
 double parse_number(const std::string& token, const std::string& where);
 
 }  // namespace numlab::fitting
