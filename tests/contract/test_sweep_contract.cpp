@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "honesty_checks.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/mechanisms/mustang_sweep.hpp"
 #include "numlab/solver.hpp"
@@ -67,6 +68,10 @@ TEST_CASE("Jansen sweep stepper: running between steps, a verdict only at the en
   const JansenSweepAngles solved = solve_crank_sweep(JansenModel::eight_equations, *again, 0.0, 60.0, 30.0);
   CHECK(solved.angles == result.angles);
   CHECK(solved.status == Status::converged);
+  // The same sweep with its checks: converged is justified by the closed form, pose by pose.
+  const JansenSweep checked = crank_sweep(JansenModel::eight_equations, *again, 0.0, 60.0, 30.0);
+  CHECK(checked.status == Status::converged);
+  test::check_justified(checked);
 }
 
 TEST_CASE("Jansen sweep stepper: a failure is the verdict of the last step", "[contract][sweep]") {
@@ -116,6 +121,7 @@ TEST_CASE("Mustang sweep stepper: within the range, converged after the last pos
   }
   CHECK(steps + 1 == 4);
   CHECK(stepper.status() == Status::converged);
+  test::check_justified(stepper.result());
   REQUIRE(stepper.result().poses.size() == 3);
   CHECK(stepper.result().poses[0].crank_deg == 30.0);
   CHECK(stepper.x() == stepper.result().poses[0].angles);  // the downward march ended at 30 deg
