@@ -318,7 +318,7 @@ TEST_CASE("Loose tolerances: a sweep is converged and its branch kept only when 
         if (sweep.orientation_kept) CHECK(sweep.closed_form_verified);
         if (sweep.status == Status::converged) {
           for (const JansenPose& pose : sweep.poses) CHECK(pose.closed_form_distance <= pose.closed_form_bound);
-          CHECK(sweep.worst_closed_form_bound <= 1.5);  // a tenth of the crank
+          CHECK(sweep.worst_closed_form_bound <= 7.5);  // half the crank
         }
       }
       // The issue's case: --crank 30 --tol 1e10 (Newton accepts the seed's estimates unmoved).
@@ -327,8 +327,8 @@ TEST_CASE("Loose tolerances: a sweep is converged and its branch kept only when 
       CHECK(issue.status != Status::converged);
       CHECK_FALSE(issue.orientation_kept);
       CHECK_FALSE(issue.closed_form_verified);
-      // The residual left (0.68) justifies no distance a tenth of the crank could tell apart.
-      CHECK(issue.worst_closed_form_bound > 1.5);
+      // The residual left (0.68) justifies no distance below half the crank.
+      CHECK(issue.worst_closed_form_bound > 7.5);
     }
   }
 }

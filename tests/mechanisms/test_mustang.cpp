@@ -316,7 +316,7 @@ TEST_CASE("Mustang: loose tolerances are converged with the branch kept only whe
       if (sweep.status == Status::converged) {
         CHECK(sweep.branch_kept);
         for (const MustangPose& pose : sweep.poses) CHECK(pose.closed_form_distance <= pose.closed_form_bound);
-        CHECK(sweep.worst_closed_form_bound <= 0.1);
+        CHECK(sweep.worst_closed_form_bound <= 0.5);  // half the shortest link
       }
       if (tolerance == 1e-12) CHECK(sweep.status == Status::converged);  // the default is unchanged
     }

@@ -9,8 +9,10 @@
 //   bound = 2 L ||J^-1||_inf ||f||_inf + 1e3 eps L,      L = the sum of the link lengths.
 //
 // The rule every sweep applies (docs/mechanisms.md): a pose is verified when its distance from the
-// closed form is within its bound and the bound is below a tenth of the shortest link (beyond that
-// the first-order picture says nothing, and the other branch is a link's length away). A sweep is
+// closed form is within its bound and the bound is below half the shortest link. Then the angles
+// are within ||J^-1|| ||f|| = bound / 2L <= l_min / 4L of exact (under 0.01 rad for both linkages),
+// where the first-order picture holds (the second-order term is under 1% of the first), and the
+// other branch is about a link's length away. Beyond it the residual justifies nothing. A sweep is
 // converged, and its branch kept, only when every pose is verified.
 
 #include <Eigen/LU>
@@ -42,7 +44,7 @@ ClosedFormBound closed_form_bound(const Closure& closure, const typename Closure
 
 // The rule above, for one pose.
 inline bool closed_form_verified(double distance, double bound, double shortest_link) {
-  return distance <= bound && bound <= 0.1 * shortest_link;
+  return distance <= bound && bound <= 0.5 * shortest_link;
 }
 
 }  // namespace numlab::mechanisms

@@ -62,7 +62,7 @@ struct JansenSweep {
   double worst_closed_form_bound = 0.0;
   double worst_length_error = 0.0;
   bool closed_form_verified = true;  // every pose within its bound of the closed form, the bound below
-                                     // a tenth of the crank (closed_form_bound.hpp)
+                                     // half the crank (closed_form_bound.hpp)
   bool orientation_kept = true;    // the branch kept: the rigid triangles never flipped, and closed_form_verified
 };
 

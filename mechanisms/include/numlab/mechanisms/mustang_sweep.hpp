@@ -50,7 +50,7 @@ struct MustangSweep {
   MustangLimit lower, upper;       // towards smaller and larger theta (limits' angles within half a turn of 45)
   int step_halvings = 0;
   bool branch_kept = true;         // every pose verified: within its bound of the closed form on the seed's
-                                   // branch, the bound below a tenth of the shortest link (closed_form_bound.hpp)
+                                   // branch, the bound below half the shortest link (closed_form_bound.hpp)
   double worst_angle_rate = 0.0;   // max over neighbours of ||dx||_inf / |d theta| (continuity)
   double worst_closed_form_distance = 0.0, worst_length_error = 0.0, worst_rigid_error = 0.0, worst_fixed_error = 0.0;
   double worst_closed_form_bound = 0.0;
