@@ -1,10 +1,12 @@
 #include "numlab/fitting/polynomial_fit.hpp"
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 
 #include "numlab/fitting/fit_quality.hpp"
+#include "numlab/fitting/least_squares_check.hpp"
 #include "numlab/fitting/reference_fits.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
@@ -78,6 +80,11 @@ std::string failure_warning(const linalg::LinearResult<Eigen::Dynamic>& result) 
 
 bool is_normal_equations(FitMethod method) {
   return method == FitMethod::normal || method == FitMethod::normal_scaled;
+}
+
+// Whether s^D or s^-D, the factors between powers of t and powers of x, leave the normal doubles.
+bool powers_beyond_doubles(double scale, int degree) {
+  return std::abs(static_cast<double>(std::ilogb(scale)) * degree) >= std::numeric_limits<double>::max_exponent - 2;
 }
 
 }  // namespace
@@ -198,14 +205,29 @@ void PolynomialFitter::solve_system() {
 
 // 3. The coefficients in powers of x, the residual statistics, and the warnings.
 void PolynomialFitter::finish_fit() {
-  if (options_.method == FitMethod::normal_scaled && coefficients_.size() > 0) {
-    coefficients_ = to_original_powers(coefficients_, scaling_);
-  }
+  const bool scaled = options_.method == FitMethod::normal_scaled && coefficients_.size() > 0;
+  const Eigen::VectorXd in_t = scaled ? coefficients_ : Eigen::VectorXd();
+  if (scaled) coefficients_ = to_original_powers(coefficients_, scaling_);
   fit_.coefficients = coefficients_;
   if (fit_.coefficients.size() > 0) {
     const FitStatistics statistics = fit_statistics(data_x_, data_y_, fit_.coefficients);
     fit_.residual_sd = statistics.residual_sd;
     fit_.r_squared = statistics.r_squared;
+  }
+  // The least-squares check (least_squares_check.hpp): converged only when the coefficients
+  // reported are a least-squares fit to within rounding.
+  if (fit_.status == Status::converged && fit_.coefficients.size() > 0) {
+    const LeastSquaresCheck check = check_least_squares(data_x_, data_y_, fit_.coefficients, in_t, fit_.r_squared);
+    if (!check.passed()) {
+      const bool beyond = !check.finite || (scaled && powers_beyond_doubles(scaling_.scale, options_.degree));
+      fit_.status = beyond ? Status::non_finite : Status::no_progress;
+      std::string why = beyond ? message("The coefficients in powers of x are beyond the doubles (s = ", scaling_.scale,
+                                         ", s^", options_.degree, " is not a normal double), so p(x) is not the fit found.")
+                               : message("The coefficients fail the least-squares check: the residual is not "
+                                         "orthogonal to power ", check.worst_power, " (", check.worst_ratio,
+                                         " times what rounding explains), R^2 = ", fit_.r_squared, ".");
+      fit_.warning = fit_.warning.empty() ? why : fit_.warning + " " + why;
+    }
   }
   // A failed solve's explanation first, then the conditioning warning, which applies even when
   // the solve itself "converged".

@@ -13,11 +13,24 @@ namespace detail {
 ClosedForm scaled_by_power_of_two(const Eigen::Matrix2d& A) {
   ClosedForm form;
   const double largest = A.cwiseAbs().maxCoeff();
-  if (largest > 0.0) std::frexp(largest, &form.exponent);
-  const Eigen::Matrix2d scaled = A * std::ldexp(1.0, -form.exponent);  // exact: a power of two
-  form.a = scaled(0, 0), form.b = scaled(0, 1), form.c = scaled(1, 0), form.d = scaled(1, 1);
+  if (largest > 0.0) std::frexp(largest, &form.exponent);  // largest = m 2^e, 1/2 <= m < 1 (subnormals too)
+  // Entry by entry: exact (a power of two, the results in [1/2, 1) down to the underflow of tiny
+  // entries), where A * 2^-e could not be, 2^-e being beyond the doubles for e < -1022.
+  form.a = std::ldexp(A(0, 0), -form.exponent), form.b = std::ldexp(A(0, 1), -form.exponent);
+  form.c = std::ldexp(A(1, 0), -form.exponent), form.d = std::ldexp(A(1, 1), -form.exponent);
   form.frobenius_squared = frobenius_squared(form.a, form.b, form.c, form.d);
   return form;
+}
+
+Eigen::Vector2d ClosedForm::solve_scaled(const Eigen::Vector2d& y) const {
+  int y_exponent = 0;
+  const double largest = y.cwiseAbs().maxCoeff();
+  if (largest > 0.0) std::frexp(largest, &y_exponent);
+  const double y0 = std::ldexp(y(0), -y_exponent), y1 = std::ldexp(y(1), -y_exponent);
+  // |adjugate y| <= 2 and |det| > eps ||.||_F^2 >= eps / 4: the quotient is far inside the doubles.
+  const double scale = 1.0 / determinant;
+  return {std::ldexp(scale * (d * y0 - b * y1), y_exponent - exponent),
+          std::ldexp(scale * (a * y1 - c * y0), y_exponent - exponent)};
 }
 
 }  // namespace detail
@@ -36,7 +49,8 @@ Inverse2x2 closed_form_inverse(const Eigen::Matrix2d& A) {
   const double ratio = form.frobenius_squared / std::abs(form.determinant);
   const double kappa = std::isfinite(ratio) ? 0.5 * (ratio + std::sqrt(std::max(ratio * ratio - 4.0, 0.0))) : infinity;
   if (form.singular) return {Eigen::Matrix2d::Constant(nan), determinant, kappa, Status::singular};
-  return {form.adjugate() * form.inverse_scale(), determinant, kappa, Status::converged};
+  const Eigen::Matrix2d inverse = form.adjugate() * form.inverse_scale();
+  return {inverse, determinant, kappa, inverse.allFinite() ? Status::converged : Status::non_finite};
 }
 
 }  // namespace
@@ -60,9 +74,16 @@ void ClosedForm2x2::start(const Eigen::Matrix2d& A, const Eigen::Vector2d& b) {
 
 bool ClosedForm2x2::step() {
   if (!running_) return false;
+  // 1. A^-1 by the closed form.
   const Inverse2x2 closed_form = closed_form_inverse(A_);
-  x_ = closed_form.inverse * b_;  // NaN when singular
+  // 2. x = A^-1 b (NaN when singular). Where A^-1 overflows, x itself may still be a double: then
+  //    x = adj(A) b / det, the scaling undone last.
+  x_ = closed_form.inverse * b_;
   status_ = closed_form.status;
+  if (status_ == Status::non_finite) {
+    x_ = detail::closed_form(A_).solve(b_);
+    status_ = Status::converged;
+  }
   if (status_ == Status::converged) {
     if (!x_.allFinite()) {
       status_ = Status::non_finite;

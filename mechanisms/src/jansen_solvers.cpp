@@ -8,6 +8,8 @@
 
 #include "numlab/force_inline.hpp"
 #include "numlab/mechanisms/anchored_sincos.hpp"
+#include "numlab/mechanisms/closed_form_bound.hpp"
+#include "numlab/mechanisms/crank_angle.hpp"
 #include "numlab/mechanisms/dyad_newton.hpp"
 #include "numlab/mechanisms/full_newton_pose_solver.hpp"
 #include "numlab/mechanisms/gsl_pose_solver.hpp"
@@ -209,20 +211,16 @@ std::unique_ptr<JansenPoseSolver> make_jansen_solver(JansenModel model, const st
 }
 
 void JansenSweepStepper::start(double start_deg, double stop_deg, double step_deg) {
-  if (!(step_deg != 0.0) || !std::isfinite(start_deg) || !std::isfinite(stop_deg) || !std::isfinite(step_deg) ||
-      (stop_deg - start_deg) * step_deg < 0.0) {
-    throw std::invalid_argument("sweep " + std::to_string(start_deg) + ":" + std::to_string(stop_deg) + ":" +
-                                std::to_string(step_deg) + " does not step from its start towards its stop");
-  }
+  count_ = sweep_pose_count(start_deg, stop_deg, step_deg);
   sweep_ = JansenSweepAngles{};
   start_deg_ = start_deg;
   step_deg_ = step_deg;
-  count_ = static_cast<int>(std::floor((stop_deg - start_deg) / step_deg + 1e-9)) + 1;
   next_ = 0;
   poses_ = 0;
   angles_ = jansen_seed_estimates(model_, JansenLeg());
   trial_ = angles_;  // buffer reused from pose to pose (no allocation per pose)
   current_deg_ = JansenClosure::seed_crank_angle / degrees;
+  walk_to_deg_ = nearest_turn(start_deg, current_deg_);  // the same pose as start_deg, at most 180 deg away
   phase_ = Phase::seed;
   status_ = Status::running;
 }
@@ -253,7 +251,7 @@ bool JansenSweepStepper::finish(Status status) {
 
 // One solve, shown to the observer if there is one.
 NUMLAB_FORCE_INLINE PoseOutcome JansenSweepStepper::solve_pose(double deg, double step_deg, Eigen::VectorXd& x) {
-  const PoseOutcome outcome = solver_.solve(deg * degrees, x);
+  const PoseOutcome outcome = solver_.solve(crank_radians(deg), x);
   if (observer_ != nullptr) [[unlikely]] notify(deg, step_deg, outcome, x);
   return outcome;
 }
@@ -290,7 +288,7 @@ bool JansenSweepStepper::solve_seed_pose() {
   const PoseOutcome outcome = solve_pose(current_deg_, 0.0, angles_);
   if (outcome.status != Status::converged) return finish(outcome.status);
   ++poses_;
-  if (std::abs(start_deg_ - current_deg_) > 1e-12) {
+  if (std::abs(walk_to_deg_ - current_deg_) > 1e-12) {
     phase_ = Phase::walk_in;
   } else {
     begin_requested_poses();
@@ -298,23 +296,25 @@ bool JansenSweepStepper::solve_seed_pose() {
   return true;
 }
 
-// 2. One pose of the walk from 1.57 rad to the first requested angle.
+// 2. One pose of the walk from 1.57 rad to the first requested angle (or to the angle a whole
+//    number of turns from it nearest 1.57 rad), in steps of its own (walk_in_step_deg).
 bool JansenSweepStepper::walk_in_one_pose() {
-  const double walk_step = std::abs(step_deg_);
-  const double next = std::abs(start_deg_ - current_deg_) <= walk_step
-                          ? start_deg_
-                          : current_deg_ + std::copysign(walk_step, start_deg_ - current_deg_);
+  const double next = std::abs(walk_to_deg_ - current_deg_) <= walk_in_step_deg
+                          ? walk_to_deg_
+                          : current_deg_ + std::copysign(walk_in_step_deg, walk_to_deg_ - current_deg_);
   const PoseOutcome outcome = advance_to(next);
   if (outcome.status != Status::converged) return finish(outcome.status);
   current_deg_ = next;
   ++sweep_.walk_in_poses;
   ++poses_;
-  if (std::abs(start_deg_ - current_deg_) <= 1e-12) begin_requested_poses();
+  if (std::abs(walk_to_deg_ - current_deg_) <= 1e-12) begin_requested_poses();
   return true;
 }
 
-// Storage for every requested pose, allocated once: the requested poses allocate nothing.
+// Storage for every requested pose, allocated once: the requested poses allocate nothing. The walk
+// has reached the first requested angle, or the same pose whole turns from it.
 void JansenSweepStepper::begin_requested_poses() {
+  current_deg_ = start_deg_;
   sweep_.angles.resize(angles_.size(), count_);
   sweep_.crank_deg.reserve(static_cast<std::size_t>(count_));
   sweep_.outcomes.reserve(static_cast<std::size_t>(count_));
@@ -363,6 +363,20 @@ JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver,
   return stepper.solve(start_deg, stop_deg, step_deg);
 }
 
+namespace {
+
+// The closed-form bound of one pose (closed_form_bound.hpp), on the model's closure.
+ClosedFormBound jansen_closed_form_bound(JansenModel model, double crank, const Eigen::VectorXd& angles) {
+  const JansenLengths L;
+  const double links_sum = L.crank + L.l1 + L.l2 + L.l3 + L.l4 + L.l5 + L.l6 + L.l7 + L.l8 + JansenFootLengths{}.l9;
+  if (model == JansenModel::eight_equations) {
+    return closed_form_bound(JansenClosureOf<LibrarySines>(crank), JansenClosure::Vector(angles), links_sum);
+  }
+  return closed_form_bound(Jansen10ClosureOf<LibrarySines>(crank), Jansen10Closure::Vector(angles), links_sum);
+}
+
+}  // namespace
+
 JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
                         double step_deg, const JansenSweepOptions& options,
                         SweepObserver<JansenSweepStepper>* observer) {
@@ -372,30 +386,42 @@ JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double star
   sweep.status = solved.status;
   sweep.step_halvings = solved.step_halvings;
   sweep.walk_in_poses = solved.walk_in_poses;
+  bool triangles_kept = true;
   for (std::size_t i = 0; i < solved.outcomes.size(); ++i) {
     // Each solved pose: its joints, link lengths, orientation and distance from the closed form.
     JansenPose pose;
     pose.crank_deg = solved.crank_deg[i];
     pose.angles = solved.angles.col(static_cast<Eigen::Index>(i));
     pose.outcome = solved.outcomes[i];
-    pose.joints = jansen_joints(model, leg, pose.crank_deg * degrees, pose.angles);
+    const double crank = crank_radians(pose.crank_deg);
+    pose.joints = jansen_joints(model, leg, crank, pose.angles);
     if (!options.checks) {
       sweep.poses.push_back(std::move(pose));
       continue;
     }
     pose.length_error = leg.worst_length_error(pose.joints);
-    if (const auto exact = leg.closed_form_joints(pose.crank_deg * degrees)) {
+    if (const auto exact = leg.closed_form_joints(crank)) {
       for (int j = 0; j < jansen_joint_count; ++j) {
         pose.closed_form_distance = std::max(pose.closed_form_distance, (pose.joints[j] - (*exact)[j]).norm());
       }
     } else {
       pose.closed_form_distance = std::numeric_limits<double>::infinity();
     }
-    if (JansenLeg::triangle_orientation(pose.joints) != 1) sweep.orientation_kept = false;
+    // The distance the pose's residual and conditioning justify; beyond it, the pose is not verified.
+    pose.closed_form_bound = jansen_closed_form_bound(model, crank, pose.angles).bound;
+    if (!closed_form_verified(pose.closed_form_distance, pose.closed_form_bound, leg.lengths().crank)) {
+      sweep.closed_form_verified = false;
+    }
+    if (JansenLeg::triangle_orientation(pose.joints) != 1) triangles_kept = false;
     sweep.worst_closed_form_distance = std::max(sweep.worst_closed_form_distance, pose.closed_form_distance);
+    sweep.worst_closed_form_bound = std::max(sweep.worst_closed_form_bound, pose.closed_form_bound);
     sweep.worst_length_error = std::max(sweep.worst_length_error, pose.length_error);
     sweep.poses.push_back(std::move(pose));
   }
+  // The branch is kept when the triangles never flipped and every pose is the closed form's, within
+  // its bound; a sweep whose poses are not is no longer converged.
+  sweep.orientation_kept = triangles_kept && sweep.closed_form_verified;
+  if (sweep.status == Status::converged && !sweep.closed_form_verified) sweep.status = Status::no_progress;
   return sweep;
 }
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "numlab/mechanisms/closed_form_bound.hpp"
+#include "numlab/mechanisms/crank_angle.hpp"
 
 namespace numlab::mechanisms {
 
@@ -19,10 +21,18 @@ double smallest_margin(const MustangLinkage& linkage, const MustangJoints& p) {
   return margin;
 }
 
-MustangPose checked_pose(const MustangLinkage& linkage, double deg, const MustangAngles& x, const PoseOutcome& outcome,
-                         bool checks) {
+// The sum of the link lengths and the shortest link: the scales of the closed-form bound.
+double links_sum(const MustangLengths& L) {
+  return L.l0_1 + L.l1_2 + L.l1_3 + L.l3_4 + L.l0_5 + L.l2_4 + L.l4_6 + L.l6_7 + L.l5_6 + L.l6_8 + L.l8_9 + L.l7_10 +
+         L.l10_8 + L.l10_11 + L.l9_11 + L.l11_12;
+}
+constexpr double shortest_link = 1.0;  // l0_1, l1_2, l8_9, l9_11
+
+// The pose at requested angle `requested`, solved and checked at `deg`, the same angle whole turns away.
+MustangPose checked_pose(const MustangLinkage& linkage, double requested, double deg, const MustangAngles& x,
+                         const PoseOutcome& outcome, bool checks) {
   MustangPose pose;
-  pose.crank_deg = deg;
+  pose.crank_deg = requested;
   pose.angles = x;
   pose.outcome = outcome;
   pose.joints = linkage.joints(deg * degrees, x);
@@ -39,32 +49,31 @@ MustangPose checked_pose(const MustangLinkage& linkage, double deg, const Mustan
       pose.closed_form_distance = std::max(pose.closed_form_distance, (pose.joints[j] - exact.joints[j]).norm());
     }
   }
+  pose.closed_form_bound = closed_form_bound(MustangClosure(deg * degrees), x, links_sum(MustangLengths{})).bound;
   return pose;
 }
 
 }  // namespace
 
 void MustangSweepStepper::start(double start_deg, double stop_deg, double step_deg) {
-  if (!(step_deg != 0.0) || !std::isfinite(start_deg) || !std::isfinite(stop_deg) || !std::isfinite(step_deg) ||
-      (stop_deg - start_deg) * step_deg < 0.0) {
-    throw std::invalid_argument("sweep " + std::to_string(start_deg) + ":" + std::to_string(stop_deg) + ":" +
-                                std::to_string(step_deg) + " does not step from its start towards its stop");
-  }
+  const int count = sweep_pose_count(start_deg, stop_deg, step_deg);
   sweep_ = MustangSweep{};
   poses_found_.clear();
   step_deg_ = step_deg;
   marching_ = options_;
   marching_.max_step_deg = std::min(options_.max_step_deg, std::abs(step_deg));
-  // The requested angles, split at the start: those above it marched upwards, the rest downwards.
-  const int count = static_cast<int>(std::floor((stop_deg - start_deg) / step_deg + 1e-9)) + 1;
+  // The requested angles, each marched to at the angle whole turns from it nearest the start (the
+  // same pose; itself within half a turn), split there: those above it marched upwards, the rest
+  // downwards.
   up_.clear();
   down_.clear();
   for (int i = 0; i < count; ++i) {
     const double angle = start_deg + i * step_deg;
-    (angle >= MustangClosure::seed_crank_deg ? up_ : down_).push_back(angle);
+    const Target target{angle, nearest_turn(angle, MustangClosure::seed_crank_deg)};
+    (target.at >= MustangClosure::seed_crank_deg ? up_ : down_).push_back(target);
   }
-  std::sort(up_.begin(), up_.end());
-  std::sort(down_.begin(), down_.end(), std::greater<>());
+  std::sort(up_.begin(), up_.end(), [](const Target& a, const Target& b) { return a.at < b.at; });
+  std::sort(down_.begin(), down_.end(), [](const Target& a, const Target& b) { return a.at > b.at; });
   seeded_ = false;
   poses_ = 0;
   status_ = Status::running;
@@ -109,13 +118,13 @@ void MustangSweepStepper::begin_direction(int direction) {
 
 // 2. The next requested angle in this direction; a limit ends the direction.
 bool MustangSweepStepper::reach_next_target() {
-  const std::vector<double>& targets = direction_ > 0 ? up_ : down_;
+  const std::vector<Target>& targets = direction_ > 0 ? up_ : down_;
   MustangLimit& limit = direction_ > 0 ? sweep_.upper : sweep_.lower;
-  const double target = targets[next_target_];
+  const Target target = targets[next_target_];
   PoseOutcome outcome;
   bool direction_done = true;
-  if (advance_to(target, outcome, limit)) {
-    poses_found_.push_back(checked_pose(linkage_, target, x_, outcome, options_.checks));
+  if (advance_to(target.at, outcome, limit)) {
+    poses_found_.push_back(checked_pose(linkage_, target.requested, target.at, x_, outcome, options_.checks));
     ++poses_;
     direction_done = ++next_target_ == targets.size();
   }
@@ -129,7 +138,11 @@ bool MustangSweepStepper::reach_next_target() {
 
 // Moves to target_deg; false (with the limit filled in) if the sweep had to stop before it.
 bool MustangSweepStepper::advance_to(double target_deg, PoseOutcome& last, MustangLimit& limit) {
-  double step = std::min(marching_.max_step_deg, std::abs(target_deg - deg_));
+  // The walk from the start to the direction's first angle takes steps of its own (options'
+  // max_step_deg), whatever the requested step; from one requested angle to the next, no step is
+  // larger than the requested step.
+  const double largest_step = next_target_ == 0 ? options_.max_step_deg : marching_.max_step_deg;
+  double step = std::min(largest_step, std::abs(target_deg - deg_));
   if (step == 0.0) {  // already there: refine once, for the pose's own outcome
     last = solver_.solve(deg_ * degrees, x_);
     if (last.status == Status::converged) return true;
@@ -204,6 +217,10 @@ bool MustangSweepStepper::finish() {
   for (std::size_t i = 0; i < poses.size(); ++i) {
     const MustangPose& pose = poses[i];
     sweep.worst_closed_form_distance = std::max(sweep.worst_closed_form_distance, pose.closed_form_distance);
+    sweep.worst_closed_form_bound = std::max(sweep.worst_closed_form_bound, pose.closed_form_bound);
+    if (!closed_form_verified(pose.closed_form_distance, pose.closed_form_bound, shortest_link)) {
+      sweep.branch_kept = false;
+    }
     sweep.worst_length_error = std::max(sweep.worst_length_error, pose.length_error);
     sweep.worst_rigid_error = std::max(sweep.worst_rigid_error, pose.rigid_error);
     sweep.worst_fixed_error = std::max(sweep.worst_fixed_error, pose.fixed_error);
@@ -213,12 +230,13 @@ bool MustangSweepStepper::finish() {
           std::max(sweep.worst_angle_rate, (pose.angles - poses[i - 1].angles).lpNorm<Eigen::Infinity>() / dtheta);
     }
   }
-  if (options_.checks) sweep.branch_kept = sweep.worst_closed_form_distance <= 1e-6;
   sweep.poses = std::move(poses);
   poses.clear();
   for (const MustangLimit* limit : {&sweep.lower, &sweep.upper}) {
     if (limit->reached && sweep.status == Status::converged) sweep.status = limit->status;
   }
+  // Poses the closed form does not confirm within their bound: not a converged sweep.
+  if (!sweep.branch_kept && sweep.status == Status::converged) sweep.status = Status::no_progress;
   status_ = sweep.status;
   return false;
 }

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "numlab/linalg/input_checks.hpp"
+#include "numlab/nonlinear/stopping_tests.hpp"
 
 namespace numlab::nonlinear {
 
@@ -167,6 +168,11 @@ struct GslMultiroot::Workspace {
 GslMultiroot::GslMultiroot(const DynamicSystem& system, const std::string& type, NewtonOptions options)
     : workspace_(std::make_unique<Workspace>()), options_(options) {
   gsl_set_error_handler_off();  // GSL's default handler aborts; numlab reports statuses instead
+  require_tolerance(options_.residual_tolerance, "residual tolerance");
+  require_tolerance(options_.step_tolerance, "step tolerance");
+  if (options_.max_iterations < 1) {
+    throw std::invalid_argument("iteration limit must be at least 1, got " + std::to_string(options_.max_iterations));
+  }
   if (options_.damped) {
     throw std::invalid_argument("damping applies to numlab's Newton only: GSL's types choose their own steps");
   }
@@ -235,7 +241,7 @@ bool GslMultiroot::step() {
     finish(Status::converged, StopReason::residual_small);
   } else if (gsl_multiroot_test_delta(solver.dx(), solver.x(), options_.step_tolerance, options_.step_tolerance) ==
              GSL_SUCCESS) {
-    finish(Status::converged, StopReason::step_small);
+    finish(Status::no_progress, StopReason::step_small);  // test_delta alone: stopped moving, not a root
   } else if (counts_.iterations >= options_.max_iterations) {
     finish(Status::max_iterations, StopReason::iteration_limit);
   }

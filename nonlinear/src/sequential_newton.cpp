@@ -1,5 +1,6 @@
 #include "numlab/nonlinear/sequential_newton.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -59,6 +60,12 @@ SequentialNewton::SequentialNewton(const DynamicSystem& system, const std::vecto
                                    SequentialNewtonOptions options)
     : system_(system), blocks_(blocks), options_(options),
       block_system_(system, result_.x, result_.function_evaluations) {
+  require_tolerance(options_.newton.residual_tolerance, "residual tolerance");
+  require_tolerance(options_.newton.step_tolerance, "step tolerance");
+  if (options_.newton.max_iterations < 1) {
+    throw std::invalid_argument("iteration limit must be at least 1, got " +
+                                std::to_string(options_.newton.max_iterations));
+  }
   require_partition(blocks_, system_.dimension());
   for (std::size_t b = 0; b < blocks_.size(); ++b) {
     if (options_.linear == LinearMethod::inverse2x2 && blocks_[b].unknowns.size() != 2) {
@@ -139,12 +146,17 @@ bool SequentialNewton::end_block() {
   return false;
 }
 
+// Every block converged is not yet a root of the whole system (blocks out of triangular order
+// undo each other): converged only when the whole residual passes the residual test too.
 void SequentialNewton::finish(Status status) {
-  result_.status = status;
   running_ = false;
   Eigen::VectorXd f;
   system_.residual(result_.x, f);
   result_.residual_norm = f.lpNorm<Eigen::Infinity>();
+  if (status == Status::converged && !residual_small(result_.residual_norm, options_.newton.residual_tolerance)) {
+    status = std::isfinite(result_.residual_norm) ? Status::no_progress : Status::non_finite;
+  }
+  result_.status = status;
 }
 
 SequentialNewtonResult sequential_newton(const DynamicSystem& system, const std::vector<Block>& blocks,

@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "honesty_checks.hpp"
+#include "numlab/mechanisms/dyad_block.hpp"
 #include "numlab/mechanisms/dyad_newton.hpp"
 #include "numlab/solver.hpp"
 
@@ -18,7 +20,9 @@ TEST_CASE("DyadNewton meets the stepper contract: running between steps and conv
   options.residual_tolerance = 1e-13;
   DyadNewton newton(options);
   // Seed 000's first dyad at crank angle 1.57, started a little off its root (a few steps away).
-  newton.set_block(15.0 * std::sin(1.57) + 7.8, 15.0 * std::cos(1.57) + 38.0, 50.0, 41.5);
+  const double ky = 15.0 * std::sin(1.57) + 7.8, kx = 15.0 * std::cos(1.57) + 38.0;
+  newton.set_block(ky, kx, 50.0, 41.5);
+  const numlab::mechanisms::DyadBlock block(ky, kx, 50.0, 41.5);  // the same dyad, on std::sin
   newton.start(2.62 + 0.05, 1.40 - 0.05);
   REQUIRE(newton.running());
   CHECK(newton.status() == Status::running);
@@ -37,6 +41,8 @@ TEST_CASE("DyadNewton meets the stepper contract: running between steps and conv
   CHECK(newton.status() == Status::converged);
   CHECK(newton.iterations() == steps + 1);  // the last step is the one that returned false
   CHECK(newton.residual_norm() <= 1e-13);
+  // std::sin and the sine table differ by a few ulp: a few eps of the links' lengths.
+  numlab::test::check_justified(newton.status(), block, newton.x(), 1e-13 + 1e3 * 2.2e-16 * 50.0);
 
   // A start already at a root ends in start(): converged with no step.
   const Eigen::Vector2d root = newton.x();

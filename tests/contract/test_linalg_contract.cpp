@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
+#include "honesty_checks.hpp"
 #include "numlab/fitting/polynomial_fit.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
@@ -57,6 +58,7 @@ TEST_CASE("GEPP: running through every column and unknown, converged after the l
   fixed.start(Matrix<8>(system.A), Vector<8>(system.b));
   CHECK(steps_with_running_status(fixed) == 16);  // 8 pivot columns, 8 unknowns
   CHECK(fixed.status() == Status::converged);
+  test::check_justified(fixed.status(), Matrix<8>(system.A), Vector<8>(system.b), fixed.x());
   CHECK(fixed.iterations() == 8);
   CHECK(fixed.x() == fixed.result().x);
 
@@ -66,6 +68,7 @@ TEST_CASE("GEPP: running through every column and unknown, converged after the l
   dynamic.start(system.A, system.b);
   CHECK(steps_with_running_status(dynamic) == 16);
   CHECK(dynamic.status() == Status::converged);
+  test::check_justified(dynamic.status(), system.A, system.b, dynamic.x());
   CHECK(observer.calls >= 16);  // plus one per row swap
 
   // A singular matrix: the verdict comes at the column whose pivot is negligible.
@@ -86,6 +89,7 @@ TEST_CASE("Gauss-Seidel: running between sweeps, converged only after the last",
   CHECK(sweeps > 1);
   CHECK(fixed.iterations() == sweeps);
   CHECK(fixed.status() == Status::converged);
+  test::check_justified(fixed.status(), Matrix<8>(system.A), Vector<8>(system.b), fixed.x(), options.tolerance);
 
   GaussSeidel<Eigen::Dynamic> dynamic(options);
   CountingObserver<GaussSeidel<Eigen::Dynamic>, SweepRecord> observer;
@@ -106,6 +110,7 @@ TEST_CASE("The 2x2 closed form: one step, running until it is taken", "[contract
   CHECK(closed_form.iterations() == 0);
   CHECK(steps_with_running_status(closed_form) == 1);
   CHECK(closed_form.status() == Status::converged);
+  test::check_justified(closed_form.status(), A, Eigen::Vector2d(7, 9), closed_form.x());
   CHECK(closed_form.iterations() == 1);
   CHECK(observer.calls == 1);
   CHECK((A * closed_form.x() - Eigen::Vector2d(7, 9)).cwiseAbs().maxCoeff() <= 1e-14);
@@ -137,6 +142,7 @@ TEST_CASE("The polynomial fit: running through its stages, converged after the l
     CHECK(observer.calls == steps);
     CHECK(fitter.iterations() == steps);
     CHECK(fitter.status() == Status::converged);
+    test::check_justified(fitter.result(), x, y);
     CHECK(fitter.x().size() == 3);
     CHECK(fitter.x() == fitter.result().coefficients);
   }

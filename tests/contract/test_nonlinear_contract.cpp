@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../nonlinear/small_systems.hpp"
+#include "honesty_checks.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/nonlinear/block_order.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
@@ -77,6 +78,7 @@ TEST_CASE("Fixed-size Newton: running until its last step, converged only after 
   CHECK(steps == 2);  // Rosenbrock's second equation is linear: one step fixes x1, the next x2
   CHECK(newton.iterations() == steps);
   CHECK(newton.status() == Status::converged);
+  test::check_justified(newton.status(), rosenbrock, newton.x(), lab_options().residual_tolerance);
   CHECK((newton.x() - test::Vector2(1.0, 1.0)).lpNorm<Eigen::Infinity>() <= 1e-15);
   CHECK(log.seen.size() == 2);
   check_observed(log, Status::converged);
@@ -104,6 +106,7 @@ TEST_CASE("Dynamic Newton stepped by hand ends where solve() does, on every MGH 
     CHECK(stepped.iterations() == solved.iterations);
     CHECK(steps == solved.iterations);
     CHECK(stepped.x() == solved.x);
+    test::check_justified(solved.status, *problem.system, solved.x, lab_options().residual_tolerance);
     // A step that could not move (a singular J) sends no record; every other step sends one.
     if (solved.reason != StopReason::singular_jacobian) check_observed(log, solved.status);
   }
@@ -129,6 +132,7 @@ TEST_CASE("GSL's adapter stepped by hand ends where solve() does, on every MGH p
       CHECK(solved.status == stepped_status);
       CHECK(solved.iterations == steps);
       CHECK(solved.x == stepped_x);
+      test::check_justified(solved.status, *problem.system, solved.x, lab_options().residual_tolerance);
     }
   }
 }
@@ -163,6 +167,7 @@ TEST_CASE("Sequential Newton: one Newton iteration per step, block after block, 
   CHECK(stepped.x()(1) == 3.0);
   const int steps = 1 + step_to_the_end(stepped);
   CHECK(stepped.status() == Status::converged);
+  test::check_justified(stepped.status(), *rosenbrock.system, stepped.x(), lab_options().residual_tolerance);
   CHECK((stepped.x() - Eigen::Vector2d(1.0, 1.0)).lpNorm<Eigen::Infinity>() <= 1e-15);
   CHECK(steps == 2);
   CHECK(stepped.iterations() == steps);

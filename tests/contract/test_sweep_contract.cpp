@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "honesty_checks.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/mechanisms/mustang_sweep.hpp"
 #include "numlab/solver.hpp"
@@ -35,7 +36,8 @@ TEST_CASE("Jansen sweep stepper: running between steps, a verdict only at the en
   JansenSweepStepper stepper(JansenModel::eight_equations, *solver);
   CountingObserver<JansenSweepStepper> observer;
   stepper.set_observer(&observer);
-  // From 1.57 rad (90 deg) the walk-in goes 90 -> 60 -> 30 -> 0 in steps of 30 deg, then 0, 30, 60.
+  // From 1.57 rad (89.95 deg) the walk-in goes to 0 in its own steps of 5 deg (18 poses: 84.95 ...
+  // 4.95, 0), whatever the sweep's step; then 0, 30, 60.
   stepper.start(0.0, 60.0, 30.0);
   CHECK(stepper.running());
   CHECK(stepper.status() == Status::running);
@@ -52,8 +54,8 @@ TEST_CASE("Jansen sweep stepper: running between steps, a verdict only at the en
   CHECK(stepper.status() == Status::converged);
   CHECK_FALSE(stepper.step());  // a finished stepper stays finished
   const JansenSweepAngles& result = stepper.result();
-  CHECK(result.walk_in_poses == 3);
-  CHECK(steps == 1 + 3 + 3);
+  CHECK(result.walk_in_poses == 18);
+  CHECK(steps == 1 + 18 + 3);
   CHECK(stepper.iterations() == steps);
   REQUIRE(result.outcomes.size() == 3);
   CHECK(stepper.x() == result.angles.col(2));  // x(): the last pose solved
@@ -66,6 +68,10 @@ TEST_CASE("Jansen sweep stepper: running between steps, a verdict only at the en
   const JansenSweepAngles solved = solve_crank_sweep(JansenModel::eight_equations, *again, 0.0, 60.0, 30.0);
   CHECK(solved.angles == result.angles);
   CHECK(solved.status == Status::converged);
+  // The same sweep with its checks: converged is justified by the closed form, pose by pose.
+  const JansenSweep checked = crank_sweep(JansenModel::eight_equations, *again, 0.0, 60.0, 30.0);
+  CHECK(checked.status == Status::converged);
+  test::check_justified(checked);
 }
 
 TEST_CASE("Jansen sweep stepper: a failure is the verdict of the last step", "[contract][sweep]") {
@@ -115,6 +121,7 @@ TEST_CASE("Mustang sweep stepper: within the range, converged after the last pos
   }
   CHECK(steps + 1 == 4);
   CHECK(stepper.status() == Status::converged);
+  test::check_justified(stepper.result());
   REQUIRE(stepper.result().poses.size() == 3);
   CHECK(stepper.result().poses[0].crank_deg == 30.0);
   CHECK(stepper.x() == stepper.result().poses[0].angles);  // the downward march ended at 30 deg

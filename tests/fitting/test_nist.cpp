@@ -8,6 +8,7 @@
 #include <string>
 
 #include "numlab/fitting/data_set.hpp"
+#include "numlab/fitting/least_squares_check.hpp"
 #include "numlab/fitting/log_relative_error.hpp"
 #include "numlab/fitting/polynomial_fit.hpp"
 #include "numlab/fitting/reference_fits.hpp"
@@ -177,4 +178,37 @@ TEST_CASE("models that are not a polynomial with intercept carry no certified va
   // NoInt1 certifies y = B1 x (no B0); Longley has six predictors and no x column.
   CHECK_FALSE(read_nist_data(nist_path("NoInt1", ".dat")).certified);
   CHECK_THROWS_WITH(read_nist_data(nist_path("Longley", ".dat")), Catch::Contains("no 'x' column"));
+}
+
+// Issue 14: a fit is converged only when the least-squares check passes (least_squares_check.hpp).
+// Every method on every NIST polynomial set: each converged fit passes it, with R^2 in [0, 1].
+TEST_CASE("every converged fit on NIST's sets passes the least-squares check", "[fitting][nist][honesty]") {
+  for (const std::string& name : polynomial_sets) {
+    const DataSet& data = dat_set(name);
+    for (const Method& m : methods) {
+      FitOptions options;
+      options.method = m.method;
+      options.solver = m.solver;
+      options.degree = static_cast<int>(data.certified->parameters.size()) - 1;
+      const PolynomialFit fit = fit_polynomial(data.x, data.y, options);
+      const Eigen::VectorXd none;
+      const LeastSquaresCheck check = check_least_squares(data.x, data.y, fit.coefficients, none, fit.r_squared);
+      INFO(name << " " << m.label << ": " << to_string(fit.status) << ", worst ratio " << check.worst_ratio
+                << " at power " << check.worst_power << "; " << fit.warning);
+      if (fit.status == numlab::Status::converged) {
+        CHECK(check.passed());
+        CHECK(fit.r_squared >= 0.0);
+        CHECK(fit.r_squared <= 1.0);
+      }
+      // The direct methods converge on every set (Gauss-Seidel may stop short: then not converged).
+      if (m.solver == NormalSolver::gepp) CHECK(fit.status == numlab::Status::converged);
+      // The check can fail: the certified coefficients with the last one off by 1e-6 relative.
+      if (fit.status == numlab::Status::converged && m.label == "normal") {
+        Eigen::VectorXd off = Eigen::Map<const Eigen::VectorXd>(data.certified->parameters.data(),
+                                                                static_cast<Eigen::Index>(data.certified->parameters.size()));
+        off(off.size() - 1) *= 1.0 + 1e-6;
+        CHECK_FALSE(check_least_squares(data.x, data.y, off, none, fit.r_squared).passed());
+      }
+    }
+  }
 }

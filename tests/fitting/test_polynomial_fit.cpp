@@ -193,3 +193,32 @@ TEST_CASE("a closed path splits at its extreme x into an upper and a lower arc",
   }
   CHECK_THROWS_WITH(split_at_extreme_x(Eigen::VectorXd::Ones(5), Eigen::VectorXd::Zero(5)), Catch::Contains("same x"));
 }
+
+// Issue 14: normal-scaled on x ~ 1e200 said converged with R^2 = -17 (degree 2). The fit in t is
+// fine, but mapped back to powers of x the x^2 coefficient is ~1e-400: it underflows to 0, so the
+// reported p(x) is not the fit. The least-squares check (least_squares_check.hpp) catches it.
+TEST_CASE("a fit whose coefficients in powers of x are beyond the doubles is not converged", "[fitting][honesty]") {
+  Eigen::VectorXd x(5), y(5);
+  x << 1e200, 1.2e200, 1.5e200, 1.7e200, 2e200;
+  y << 1.0, 2.0, 2.5, 2.1, 3.0;
+  FitOptions options;
+  options.method = FitMethod::normal_scaled;
+  options.degree = 1;
+  const PolynomialFit line = fit_polynomial(x, y, options);  // b1 ~ 1.6e-200: still a double
+  CHECK(line.status == numlab::Status::converged);
+  CHECK(line.r_squared >= 0.0);
+  CHECK(line.r_squared <= 1.0);
+  for (const int degree : {2, 3}) {
+    options.degree = degree;
+    const PolynomialFit fit = fit_polynomial(x, y, options);
+    INFO("degree " << degree << ": R^2 " << fit.r_squared);
+    CHECK(fit.status == numlab::Status::non_finite);
+    CHECK_THAT(fit.warning, Catch::Matchers::Contains("beyond the doubles"));
+  }
+  // The same shape of data at x ~ 1 is fitted, and passes the check.
+  options.degree = 2;
+  const PolynomialFit tame = fit_polynomial(x / 1e200, y, options);
+  CHECK(tame.status == numlab::Status::converged);
+  CHECK(tame.r_squared >= 0.0);
+  CHECK(tame.r_squared <= 1.0);
+}

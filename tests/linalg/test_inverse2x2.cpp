@@ -1,3 +1,4 @@
+#include <Eigen/LU>
 #include <Eigen/SVD>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -116,4 +117,62 @@ TEST_CASE("Newton's 2x2 path (solve_prechecked) agrees with solve2x2, scaled or 
   // A well-conditioned but tiny matrix with a huge right-hand side: x overflows, and says so.
   CHECK(closed_form.solve_prechecked(1e-200 * Eigen::Matrix2d::Identity(), Eigen::Vector2d(1e300, 1)).status ==
         Status::non_finite);
+}
+
+// Issue 14: 1e-320 I (subnormal) gave non_finite: the scaling multiplied by 2^1063, beyond the
+// doubles. Every scale below is a power of two times small integers, so A and b are exact, and
+// x = [2 1; 1 3]^-1 (1, 2) = (0.2, 0.6) at every scale; Eigen's LU is the second reference where
+// its own elimination keeps its digits (among subnormals its multipliers and updates lose bits:
+// at 2^-1070 it is 1e-2 off, while the closed form, scaled first, is not).
+TEST_CASE("The 2x2 closed form solves at every scale: subnormal, huge and mixed", "[inverse2x2][scale][honesty]") {
+  Eigen::Matrix2d shape;
+  shape << 2, 1, 1, 3;
+  const Eigen::Vector2d expected(0.2, 0.6);
+  for (const int power : {-1070, -1062, -1030, -1000, -400, 0, 400, 1000, 1020}) {
+    const double scale = std::ldexp(1.0, power);
+    INFO("scale 2^" << power);
+    const Eigen::Matrix2d A = shape * scale;
+    const Eigen::Vector2d b = Eigen::Vector2d(1.0, 2.0) * scale;
+    const Eigen::Vector2d eigen = A.partialPivLu().solve(b);
+    for (const LinearResult<2>& solved : {solve2x2(A, b), ClosedForm2x2().solve_prechecked(A, b)}) {
+      REQUIRE(solved.status == Status::converged);
+      // kappa([2 1; 1 3]) = 2.6: a few eps.
+      CHECK((solved.x - expected).lpNorm<Eigen::Infinity>() <= 8 * eps);
+      if (power >= -1000) CHECK((solved.x - eigen).lpNorm<Eigen::Infinity>() <= 8 * eps);
+    }
+    const Inverse2x2 inverse = inverse2x2(A);
+    // A^-1 = shape^-1 / scale is a double only for scale >= 2^-1022 or so; beyond, non_finite (no
+    // false converged), while the solve above still gives x.
+    const bool representable = power > -1020;
+    CHECK(inverse.status == (representable ? Status::converged : Status::non_finite));
+    CHECK(inverse.condition_number == Approx(svd_condition(shape)).epsilon(1e-14));
+    if (representable) CHECK(((inverse.inverse * scale) - shape.inverse()).cwiseAbs().maxCoeff() <= 8 * eps);
+  }
+  // The issue's case: 1e-320 I, b = 1e-320 (1, 1).
+  const double tiny = 1e-320;
+  const LinearResult<2> identity = solve2x2(tiny * Eigen::Matrix2d::Identity(), Eigen::Vector2d(tiny, tiny));
+  REQUIRE(identity.status == Status::converged);
+  CHECK(identity.x == Eigen::Vector2d(1.0, 1.0));
+  const LinearResult<2> huge = solve2x2(1e300 * Eigen::Matrix2d::Identity(), Eigen::Vector2d(1e300, -1e300));
+  REQUIRE(huge.status == Status::converged);
+  CHECK(huge.x == Eigen::Vector2d(1.0, -1.0));
+  // Mixed scales, far apart but well conditioned by columns: diag(1e150, 1e140) and a triangle of tiny entries.
+  Eigen::Matrix2d mixed;
+  mixed << 1e150, 0, 0, 1e140;
+  Eigen::Matrix2d small;
+  small << 1e-310, 1e-315, 0, 1e-312;
+  for (const Eigen::Matrix2d& A : {mixed, small}) {
+    const Eigen::Vector2d b = A * Eigen::Vector2d(1.0, -3.0);
+    const Eigen::Vector2d eigen = A.partialPivLu().solve(b);
+    const LinearResult<2> solved = solve2x2(A, b);
+    INFO("A = " << A);
+    REQUIRE(solved.status == Status::converged);
+    // kappa up to 1e10 for diag(1e150, 1e140): relative error within kappa eps of Eigen's.
+    CHECK((solved.x - eigen).lpNorm<Eigen::Infinity>() <= 1e-4 * 3.0);
+    CHECK((solved.x - Eigen::Vector2d(1.0, -3.0)).lpNorm<Eigen::Infinity>() <= 1e-4 * 3.0);
+  }
+  // Still singular to working precision when it is: diag(1, 1e-320), kappa = 1e320.
+  Eigen::Matrix2d lopsided;
+  lopsided << 1, 0, 0, 1e-320;
+  CHECK(solve2x2(lopsided, Eigen::Vector2d(1, 1)).status == Status::singular);
 }

@@ -215,14 +215,14 @@ TEST_CASE("Dyad Newton and the generic Newton on DyadBlock take the same iterati
   using numlab::mechanisms::JansenModel;
   for (const double tolerance : {1e-6, 1e-10}) {
     BothDyadNewtons both(options_with(tolerance));
-    // 360 poses 1 degree apart (and the 90 that walk in from the seed's 1.57 rad), each block
+    // 360 poses 1 degree apart (and the 18 that walk in from the seed's 1.57 rad), each block
     // warm-started from the sweep's prediction.
     const auto sweep = numlab::mechanisms::solve_crank_sweep(JansenModel::eight_equations, both, 0.0, 359.0, 1.0);
     INFO("tolerance " << tolerance << ": worst difference " << both.worst_difference << ", "
                       << both.worst_ratio_to_bound << " of its bound");
     REQUIRE(sweep.status == Status::converged);
     CHECK(sweep.outcomes.size() == 360);
-    CHECK(both.blocks_compared >= 4 * (360 + 90 + 1));
+    CHECK(both.blocks_compared >= 4 * (360 + 18 + 1));  // 360 poses, 18 walking in, the seed's
     CHECK(both.different_endings == 0);
     CHECK(both.worst_ratio_to_bound <= 1.0);
     CHECK(both.worst_difference > 0.0);  // the anchored sines are in use (the library's would agree exactly)
@@ -265,4 +265,30 @@ TEST_CASE("Damping is rejected where it would be ignored: the dyad stepper and t
   auto negative = options_with(-1.0);
   CHECK_THROWS_AS(DyadNewton(negative), std::invalid_argument);
   CHECK_NOTHROW(DyadNewton(options_with(1e-10)));
+}
+
+TEST_CASE("A small step is not a root: the dyad's and the generic Newton's step test alone gives no_progress",
+          "[dyad][honesty]") {
+  const FirstDyad dyad;
+  const Eigen::Vector2d start = dyad.exact() + Eigen::Vector2d(0.2, -0.2);
+  // A step tolerance so loose that the first step passes it, while ||f|| is still far above 1e-12.
+  auto loose_step = options_with(1e-12);
+  loose_step.step_tolerance = 1e3;
+  DyadNewton newton(loose_step);
+  newton.set_block(dyad.ky, dyad.kx, dyad.p, dyad.q);
+  CHECK(newton.solve(start(0), start(1)) == Status::no_progress);
+  CHECK(newton.iterations() == 1);
+  CHECK(newton.residual_norm() > 1e-12);
+  const DyadBlock library(dyad.ky, dyad.kx, dyad.p, dyad.q);
+  const auto generic = numlab::nonlinear::newton_solve(library, start, loose_step, numlab::linalg::ClosedForm2x2());
+  CHECK(generic.status == Status::no_progress);
+  CHECK(generic.reason == numlab::nonlinear::StopReason::step_small);
+  CHECK(generic.iterations == 1);
+  // Tolerances that are not finite numbers >= 0 are misuse.
+  for (const double bad : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+    CHECK_THROWS_AS(DyadNewton(options_with(bad)), std::invalid_argument);
+    auto step_bad = options_with(1e-10);
+    step_bad.step_tolerance = bad;
+    CHECK_THROWS_AS(DyadNewton(step_bad), std::invalid_argument);
+  }
 }

@@ -3,13 +3,16 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <string>
 
 #include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/mechanisms/circle_intersection.hpp"
+#include "numlab/mechanisms/crank_angle.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/mechanisms/sine_sources.hpp"
+#include "numlab/mechanisms/sweep_observer.hpp"
 #include "numlab/nonlinear/autodiff_system.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/jacobian_check.hpp"
@@ -85,7 +88,8 @@ TEST_CASE("Over a whole turn every solver keeps the branch and agrees with the c
       INFO((model == JansenModel::eight_equations ? "jansen " : "jansen10 ") << solver_name);
       REQUIRE(sweep.status == Status::converged);
       CHECK(sweep.poses.size() == 360);
-      CHECK(sweep.walk_in_poses == 90);  // from 1.57 rad (89.95 deg) down to 0 in 1-degree steps
+      CHECK(sweep.walk_in_poses == 18);  // from 1.57 rad (89.95 deg) down to 0 in the walk-in's 5-degree steps
+      CHECK(sweep.closed_form_verified);
       CHECK(sweep.worst_closed_form_distance <= 1e-8);
       CHECK(sweep.worst_length_error <= 1e-8);
       CHECK(sweep.orientation_kept);
@@ -233,4 +237,98 @@ TEST_CASE("Evaluating a closure changes nothing: the same point gives the same b
     cache_differs = cache_differs || c != first_c || s != first_s;
   }
   CHECK(cache_differs);
+}
+
+namespace {
+
+// Issue 14 on the Jansen sweeps: a bounded walk-in whatever the angle or the sweep's step, and a
+// converged status (and "branch kept") only when the closed form agrees within what the
+// tolerance and the conditioning justify (closed_form_bound.hpp).
+
+// Counts every pose solve a sweep attempts: the walk-in's cost, without a clock.
+struct AttemptCounter final : SweepObserver<JansenSweepStepper> {
+  int attempts = 0;
+  void on_step(const JansenSweepStepper&, const SweepPoseRecord&) override { ++attempts; }
+};
+
+nonlinear::NewtonOptions with_tolerance(double tolerance) {
+  nonlinear::NewtonOptions options;
+  options.residual_tolerance = tolerance;
+  return options;
+}
+
+}  // namespace
+
+TEST_CASE("The walk-in is bounded: whole turns are skipped, and its step is its own", "[mechanisms][sweep][honesty]") {
+  for (const JansenModel model : {JansenModel::eight_equations, JansenModel::ten_equations}) {
+    const auto solver = make_jansen_solver(model, "full", "gepp", {});
+    INFO((model == JansenModel::eight_equations ? "jansen" : "jansen10"));
+    // 1e9 deg = 2777777 turns + 280 deg: the walk goes to -80 deg (the same pose), 170 deg from
+    // the seed's 89.95, in 5-degree steps: 34 poses, whatever the angle's size.
+    AttemptCounter far_counter;
+    const JansenSweep far = crank_sweep(model, *solver, 1e9, 1e9, 1.0, {}, &far_counter);
+    REQUIRE(far.status == Status::converged);
+    REQUIRE(far.poses.size() == 1);
+    CHECK(far.poses[0].crank_deg == 1e9);  // the pose keeps the requested angle
+    CHECK(far.walk_in_poses == 34);
+    CHECK(far_counter.attempts <= 1 + 34 + 1);  // seed, walk, the pose: no retry needed
+    // The same pose, bit for bit, as at 280 deg (and as at 280 - 360 = -80).
+    AttemptCounter near_counter;
+    const JansenSweep near = crank_sweep(model, *solver, 280.0, 280.0, 1.0, {}, &near_counter);
+    REQUIRE(near.status == Status::converged);
+    CHECK(near.walk_in_poses == far.walk_in_poses);
+    CHECK(near_counter.attempts == far_counter.attempts);
+    CHECK(far.poses[0].angles == near.poses[0].angles);
+    CHECK(far.poses[0].closed_form_distance <= 1e-8);
+    // An angle beyond any count of turns a double can hold exactly still ends, at its own pose.
+    const JansenSweep huge = crank_sweep(model, *solver, 1e300, 1e300, 1.0);
+    CHECK(huge.walk_in_poses <= 36);
+    CHECK(huge.status == Status::converged);
+    CHECK(huge.worst_closed_form_distance <= 1e-8);
+
+    // A tiny sweep step no longer sets the walk's: 0:1e-6:1e-6 walks 89.95 -> 0 in 18 poses.
+    AttemptCounter tiny_counter;
+    const JansenSweep tiny = crank_sweep(model, *solver, 0.0, 1e-6, 1e-6, {}, &tiny_counter);
+    REQUIRE(tiny.status == Status::converged);
+    CHECK(tiny.poses.size() == 2);
+    CHECK(tiny.walk_in_poses == 18);
+    CHECK(tiny_counter.attempts <= 1 + 18 + 2);
+  }
+  // Whole turns only: the same angle's poses agree with the reduction (fmod is exact).
+  CHECK(nearest_turn(1e9, 89.95) == -80.0);
+  CHECK(nearest_turn(30.0, 89.95) == 30.0);
+  CHECK(crank_radians(725.0) == crank_radians(5.0));
+  // A sweep of more poses than max_sweep_poses is refused (its count would not fit an int).
+  const auto solver = make_jansen_solver(JansenModel::eight_equations, "full", "gepp", {});
+  CHECK_THROWS_WITH(crank_sweep(JansenModel::eight_equations, *solver, 0.0, 1e9, 1e-6),
+                    Catch::Matchers::Contains("more than 1000000 poses"));
+}
+
+TEST_CASE("Loose tolerances: a sweep is converged and its branch kept only when the closed form agrees within its bound",
+          "[mechanisms][sweep][honesty]") {
+  for (const JansenModel model : {JansenModel::eight_equations, JansenModel::ten_equations}) {
+    for (const std::string solver_name : {"full", "sequential", "gsl-hybridsj"}) {
+      for (const double tolerance : {1e10, 10.0, 1.0, 1e-2, 1e-4}) {
+        INFO((model == JansenModel::eight_equations ? "jansen " : "jansen10 ") << solver_name << " tol " << tolerance);
+        const auto solver = make_jansen_solver(model, solver_name, "gepp", with_tolerance(tolerance));
+        const JansenSweep sweep = crank_sweep(model, *solver, 0.0, 350.0, 10.0);
+        // Consistency: converged exactly when every pose is verified (given that every pose solved);
+        // the branch is never said kept while the closed form disagrees.
+        if (sweep.poses.size() == 36) CHECK((sweep.status == Status::converged) == sweep.closed_form_verified);
+        if (sweep.orientation_kept) CHECK(sweep.closed_form_verified);
+        if (sweep.status == Status::converged) {
+          for (const JansenPose& pose : sweep.poses) CHECK(pose.closed_form_distance <= pose.closed_form_bound);
+          CHECK(sweep.worst_closed_form_bound <= 7.5);  // half the crank
+        }
+      }
+      // The issue's case: --crank 30 --tol 1e10 (Newton accepts the seed's estimates unmoved).
+      const auto lax = make_jansen_solver(model, solver_name, "gepp", with_tolerance(1e10));
+      const JansenSweep issue = crank_sweep(model, *lax, 30.0, 30.0, 1.0);
+      CHECK(issue.status != Status::converged);
+      CHECK_FALSE(issue.orientation_kept);
+      CHECK_FALSE(issue.closed_form_verified);
+      // The residual left (0.68) justifies no distance below half the crank.
+      CHECK(issue.worst_closed_form_bound > 7.5);
+    }
+  }
 }

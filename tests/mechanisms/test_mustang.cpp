@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "numlab/mechanisms/mustang_linkage.hpp"
 #include "numlab/mechanisms/mustang_seed_method.hpp"
@@ -258,6 +259,66 @@ TEST_CASE("Mustang gsl-<type> pose solver: one workspace for every pose, the sam
       CHECK(outcome.iterations == fresh.iterations);
       CHECK(outcome.residual_norm == fresh.residual_norm);
       CHECK(x == MustangAngles(fresh.x));
+    }
+  }
+}
+
+namespace {
+
+// Counts every pose solve a Mustang sweep attempts: the walk's cost, without a clock.
+struct MustangAttempts final : SweepObserver<MustangSweepStepper> {
+  int attempts = 0;
+  void on_step(const MustangSweepStepper&, const SweepPoseRecord&) override { ++attempts; }
+};
+
+}  // namespace
+
+TEST_CASE("Mustang: the walk to the first angle is bounded, whole turns skipped, its step its own",
+          "[mechanisms][mustang][honesty]") {
+  const auto solver = make_mustang_solver("full", "gepp", {});
+  // 30 deg plus 2777777 turns: marched to at 30 deg (15 steps of 1 deg from 45), the same pose.
+  const double far_angle = 30.0 + 360.0 * 2777777.0;
+  MustangAttempts far_count, near_count;
+  const MustangSweep far = mustang_sweep(*solver, far_angle, far_angle, 1.0, {}, &far_count);
+  const MustangSweep near = mustang_sweep(*solver, 30.0, 30.0, 1.0, {}, &near_count);
+  REQUIRE(far.status == Status::converged);
+  REQUIRE(far.poses.size() == 1);
+  CHECK(far.poses[0].crank_deg == far_angle);  // the pose keeps the requested angle
+  CHECK(far.poses[0].angles == near.poses[0].angles);
+  CHECK(far_count.attempts == near_count.attempts);
+  CHECK(far_count.attempts <= 16);
+  CHECK(far.branch_kept);
+  // 1e9 deg is 280 deg, i.e. -80: beyond the lower limit, found within a bounded number of solves.
+  MustangAttempts limit_count;
+  const MustangSweep beyond = mustang_sweep(*solver, 1e9, 1e9, 1.0, {}, &limit_count);
+  CHECK(beyond.status == Status::cannot_assemble);
+  CHECK(beyond.poses.empty());
+  CHECK(limit_count.attempts <= 200);
+  // A tiny requested step no longer sets the walk's: 45 -> 1e-6 in steps of 1 deg, then 0.
+  MustangAttempts tiny_count;
+  const MustangSweep tiny = mustang_sweep(*solver, 0.0, 1e-6, 1e-6, {}, &tiny_count);
+  REQUIRE(tiny.status == Status::converged);
+  CHECK(tiny.poses.size() == 2);
+  CHECK(tiny_count.attempts <= 46 + 2);
+  CHECK_THROWS_AS(mustang_sweep(*solver, 0.0, 1e9, 1e-6), std::invalid_argument);
+}
+
+TEST_CASE("Mustang: loose tolerances are converged with the branch kept only when the closed form agrees within its bound",
+          "[mechanisms][mustang][honesty]") {
+  for (const std::string solver_name : {"full", "sequential"}) {
+    for (const double tolerance : {1e10, 1.0, 1e-2, 1e-6, 1e-12}) {
+      INFO(solver_name << " tol " << tolerance);
+      nonlinear::NewtonOptions options;
+      options.residual_tolerance = tolerance;
+      const auto solver = make_mustang_solver(solver_name, "gepp", options);
+      const MustangSweep sweep = mustang_sweep(*solver, 0.0, 50.0, 5.0);
+      if (!sweep.lower.reached && !sweep.upper.reached) CHECK((sweep.status == Status::converged) == sweep.branch_kept);
+      if (sweep.status == Status::converged) {
+        CHECK(sweep.branch_kept);
+        for (const MustangPose& pose : sweep.poses) CHECK(pose.closed_form_distance <= pose.closed_form_bound);
+        CHECK(sweep.worst_closed_form_bound <= 0.5);  // half the shortest link
+      }
+      if (tolerance == 1e-12) CHECK(sweep.status == Status::converged);  // the default is unchanged
     }
   }
 }

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <limits>
 
 #include "numlab/mechanisms/jansen_closure.hpp"
 #include "numlab/nonlinear/block_order.hpp"
@@ -102,4 +103,43 @@ TEST_CASE("The Jansen closure Jacobian agrees with finite differences", "[jacobi
   INFO(describe_worst_entry(check));
   CHECK(check.agrees);
   CHECK(check.autodiff.size() == 0);  // no AutoDiff version: finite differences are the reference
+}
+
+namespace {
+
+// f = (x1 - x2, x2 - 1): the root is (1, 1). Blocks {f1: x1} then {f2: x2} are out of triangular
+// order (f1 contains the later unknown x2).
+struct Chained final : DynamicSystem {
+  int dimension() const override { return 2; }
+  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const override {
+    f.resize(2);
+    f << x(0) - x(1), x(1) - 1.0;
+  }
+  void jacobian(const Eigen::VectorXd&, Eigen::MatrixXd& J) const override {
+    J.resize(2, 2);
+    J << 1.0, -1.0, 0.0, 1.0;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("Sequential Newton says converged only when the whole residual is small", "[sequential][honesty]") {
+  const Chained system;
+  const std::vector<Block> out_of_order = {{{0}, {0}}, {{1}, {1}}};
+  // From (0, 5): block 1 sets x1 = 5 (x2 held at 5), block 2 sets x2 = 1; f1 is then 4.
+  const auto result = sequential_newton(system, out_of_order, Eigen::Vector2d(0.0, 5.0));
+  REQUIRE(result.blocks.size() == 2);
+  for (const auto& block : result.blocks) CHECK(block.status == Status::converged);
+  CHECK(result.residual_norm == 4.0);
+  CHECK(result.status == Status::no_progress);
+  // In triangular order (x2 first) the same system is solved.
+  const std::vector<Block> in_order = {{{1}, {1}}, {{0}, {0}}};
+  const auto solved = sequential_newton(system, in_order, Eigen::Vector2d(0.0, 5.0));
+  CHECK(solved.status == Status::converged);
+  CHECK(solved.residual_norm <= NewtonOptions{}.residual_tolerance);
+
+  // Misuse: a tolerance that is not a finite number >= 0, refused at construction.
+  NewtonOptions infinite;
+  infinite.residual_tolerance = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_WITH(SequentialNewton(system, in_order, {infinite}), Catch::Matchers::Contains("finite number >= 0"));
 }

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
+#include <string>
 
 #include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
@@ -222,6 +224,62 @@ TEST_CASE("Newton rejects bad input", "[newton][bad-input]") {
   CHECK_THROWS_WITH(newton.solve(Eigen::VectorXd::Ones(3)), Contains("3 entries but the system has 4"));
   NewtonOptions negative;
   negative.residual_tolerance = -1.0;
-  CHECK_THROWS_WITH(newton_solve(FixedRosenbrock{}, Vector2(0, 0), negative), Contains("non-negative"));
+  CHECK_THROWS_WITH(newton_solve(FixedRosenbrock{}, Vector2(0, 0), negative), Contains("finite number >= 0"));
   CHECK_THROWS_WITH(make_test_problem("beale"), Contains("unknown problem 'beale'"));
+}
+
+// Issue 14: the step test alone once said converged with ||f||_inf = 7.36. From x1 = 1e300 the
+// trigonometric problem's f is a sum of cosines (bounded), J is tiny in column 1, and Newton's
+// step in x1 is relatively far below 1e-12 (1 + ||x||): the iterates stop moving, with no root.
+TEST_CASE("A small step is not a root: the step test alone gives no_progress, with the numbers",
+          "[newton][honesty]") {
+  const TestProblem problem = make_test_problem("trigonometric");
+  Eigen::VectorXd start = Eigen::VectorXd::Ones(problem.system->dimension());
+  start(0) = 1e300;
+  const Dynamic system{*problem.system};
+  const NewtonOptions options;  // the defaults: residual 1e-9, step 1e-12
+  const auto stuck = Newton<Dynamic, RuntimeLinearStep>(system, options, RuntimeLinearStep("gepp", 10)).solve(start);
+  CHECK(stuck.status == Status::no_progress);
+  CHECK(stuck.reason == StopReason::step_small);
+  CHECK(stuck.residual_norm > 1.0);  // 7.36: nowhere near the residual tolerance
+  CHECK(stuck.step_norm <= options.step_tolerance * (1.0 + stuck.x.lpNorm<Eigen::Infinity>()));
+  const std::string line = termination_line(stuck, options);
+  CHECK_THAT(line, Catch::Matchers::Contains("NO_PROGRESS") && Catch::Matchers::Contains("||f||_inf = 7.36"));
+
+  // GSL's newton from the same start: gsl_multiroot_test_delta passes, test_residual does not.
+  const auto gsl = gsl_multiroot_solve(*problem.system, start, "newton", options);
+  CHECK(gsl.status != Status::converged);
+  CHECK(gsl.residual_norm > options.residual_tolerance);
+}
+
+TEST_CASE("Every Newton-type status converged passes the residual test", "[newton][honesty]") {
+  for (const std::string& name : test_problem_names()) {
+    const TestProblem problem = make_test_problem(name);
+    for (const NewtonResult<Eigen::Dynamic>& result :
+         {newton_on(problem), gsl_multiroot_solve(*problem.system, problem.standard_start, "newton", strict_options()),
+          gsl_multiroot_solve(*problem.system, problem.standard_start, "hybridsj", strict_options())}) {
+      INFO(name << ": " << to_string(result.status));
+      if (result.status == Status::converged) CHECK(result.residual_norm <= strict_options().residual_tolerance);
+      if (result.reason == StopReason::step_small) CHECK(result.status == Status::no_progress);
+    }
+  }
+}
+
+TEST_CASE("A tolerance that is infinite, NaN or negative is misuse, for every Newton-type solver",
+          "[newton][bad-input][honesty]") {
+  using Catch::Matchers::Contains;
+  const TestProblem problem = make_test_problem("rosenbrock");
+  for (const double bad : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), -1e-9}) {
+    INFO("tolerance " << bad);
+    NewtonOptions residual_bad, step_bad;
+    residual_bad.residual_tolerance = bad;
+    step_bad.step_tolerance = bad;
+    for (const NewtonOptions& options : {residual_bad, step_bad}) {
+      CHECK_THROWS_WITH(Newton<FixedRosenbrock>(FixedRosenbrock{}, options), Contains("finite number >= 0"));
+      CHECK_THROWS_WITH(GslMultiroot(*problem.system, "hybridsj", options), Contains("finite number >= 0"));
+    }
+  }
+  NewtonOptions no_iterations;
+  no_iterations.max_iterations = 0;
+  CHECK_THROWS_WITH(GslMultiroot(*problem.system, "newton", no_iterations), Contains("at least 1"));
 }

@@ -8,7 +8,11 @@
 // so |det A| <= eps * ||A||_F^2 means kappa_2(A) >= 1/eps: the matrix is singular to working
 // precision and the result is Status::singular. The same ratio gives kappa_2 exactly.
 // A is first scaled by a power of two (exact) so that a d and b c cannot overflow or underflow,
-// when its entries are large or small enough for that to be possible.
+// when its entries are large or small enough for that to be possible: 2^e just above max|a_ij|,
+// e from the largest entry's binary exponent (subnormal entries included), each entry scaled by
+// std::ldexp (so 2^-e itself never has to be a double: for 1e-320 I it would be 2^1063).
+// A solve x = A^-1 b undoes the scaling after dividing by det, with b scaled by its own power of
+// two: x can be a double where A^-1 is not (A = 1e-320 I, b = 1e-320 (1, 1): x = (1, 1)).
 //
 // The formula is written once, in detail::closed_form(); inverse2x2(), solve2x2(), the stepper
 // ClosedForm2x2 and Newton's inner solve ClosedForm2x2::solve_prechecked() all use it.
@@ -42,6 +46,18 @@ struct ClosedForm {
   // A^-1 = inverse_scale() * adjugate(): 1/det, with the scaling undone.
   double inverse_scale() const { return exponent == 0 ? 1.0 / determinant : std::ldexp(1.0 / determinant, -exponent); }
   Eigen::Matrix2d adjugate() const { return (Eigen::Matrix2d() << d, -b, -c, a).finished(); }
+
+  // x = A^-1 y = adjugate() y / det, for a form that is not singular.
+  Eigen::Vector2d solve(const Eigen::Vector2d& y) const {
+    if (exponent == 0) {
+      const double scale = 1.0 / determinant;
+      return {scale * (d * y(0) - b * y(1)), scale * (a * y(1) - c * y(0))};
+    }
+    return solve_scaled(y);
+  }
+
+  // The same with the scaling undone last: 2^(f - e) adjugate() (y / 2^f) / det, 2^f just above max|y_i|.
+  Eigen::Vector2d solve_scaled(const Eigen::Vector2d& y) const;
 };
 
 inline double frobenius_squared(double a, double b, double c, double d) { return (a * a + b * b) + (c * c + d * d); }
@@ -63,10 +79,10 @@ inline ClosedForm closed_form(const Eigen::Matrix2d& A) {
 }  // namespace detail
 
 struct Inverse2x2 {
-  Eigen::Matrix2d inverse;  // NaN when singular
+  Eigen::Matrix2d inverse;  // NaN when singular; not finite when A^-1 overflows (status non_finite)
   double determinant;       // det A
   double condition_number;  // kappa_2(A), exact; infinity when det A = 0
-  Status status;            // converged or singular
+  Status status;            // converged, singular, or non_finite (A^-1 is beyond the doubles)
 };
 
 // Throws std::invalid_argument when A has a non-finite entry.
@@ -91,7 +107,8 @@ class ClosedForm2x2 {
 
   // Loads A x = b; throws std::invalid_argument on non-finite input.
   void start(const Eigen::Matrix2d& A, const Eigen::Vector2d& b);
-  // The one step: A^-1 by the closed form, then x = A^-1 b. Returns false: the solve is over.
+  // The one step: A^-1 by the closed form, then x = A^-1 b (when A^-1 overflows, x = adj(A) b / det
+  // with the scaling undone last). Returns false: the solve is over.
   bool step();
   LinearResult<2> solve(const Eigen::Matrix2d& A, const Eigen::Vector2d& b) {
     start(A, b);
@@ -117,8 +134,7 @@ class ClosedForm2x2 {
       result.x.setConstant(std::numeric_limits<double>::quiet_NaN());
       return result;
     }
-    const double scale = form.inverse_scale();
-    result.x << scale * (form.d * b(0) - form.b * b(1)), scale * (form.a * b(1) - form.c * b(0));
+    result.x = form.solve(b);
     if (!std::isfinite(result.x(0)) || !std::isfinite(result.x(1))) result.status = Status::non_finite;
     return result;
   }

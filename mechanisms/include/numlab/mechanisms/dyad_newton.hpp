@@ -31,8 +31,8 @@ class DyadNewton {
  public:
   // Throws std::invalid_argument for options Newton rejects, and for damping (not available here).
   explicit DyadNewton(const nonlinear::NewtonOptions& options = {}) : options_(options) {
-    linalg::require_non_negative(options_.residual_tolerance, "residual tolerance");
-    linalg::require_non_negative(options_.step_tolerance, "step tolerance");
+    nonlinear::require_tolerance(options_.residual_tolerance, "residual tolerance");
+    nonlinear::require_tolerance(options_.step_tolerance, "step tolerance");
     if (options_.max_iterations < 1) {
       throw std::invalid_argument("iteration limit must be at least 1, got " + std::to_string(options_.max_iterations));
     }
@@ -99,7 +99,7 @@ class DyadNewton {
     if (!std::isfinite(residual_norm_)) return finish(Status::non_finite);
     if (nonlinear::residual_small(residual_norm_, options_.residual_tolerance)) return finish(Status::converged);
     if (nonlinear::step_small(step_norm_, std::max(std::abs(alpha_), std::abs(beta_)), options_.step_tolerance)) {
-      return finish(Status::converged);
+      return finish(Status::no_progress);  // a small step is not a root
     }
     if (nonlinear::diverged(residual_norm_, residual_at_start_, options_.divergence_factor)) {
       return finish(Status::diverged);

@@ -49,17 +49,21 @@ struct JansenPose {
   JansenJoints joints;
   PoseOutcome outcome;
   double closed_form_distance = 0.0;  // max over joints of |joint - closed-form joint|
+  double closed_form_bound = 0.0;     // the distance its residual and conditioning justify (closed_form_bound.hpp)
   double length_error = 0.0;          // worst link-length error
 };
 
 struct JansenSweep {
   std::vector<JansenPose> poses;  // the requested angles that were solved, in order
-  Status status = Status::converged;
+  Status status = Status::converged;  // no_progress when every pose converged but one is not verified
   int step_halvings = 0;           // how often a failed step was halved
   int walk_in_poses = 0;           // poses solved to walk from 1.57 rad to the first angle
   double worst_closed_form_distance = 0.0;
+  double worst_closed_form_bound = 0.0;
   double worst_length_error = 0.0;
-  bool orientation_kept = true;    // the rigid triangles never flipped
+  bool closed_form_verified = true;  // every pose within its bound of the closed form, the bound below
+                                     // half the crank (closed_form_bound.hpp)
+  bool orientation_kept = true;    // the branch kept: the rigid triangles never flipped, and closed_form_verified
 };
 
 // The solved angles of a sweep and nothing derived from them: what `numlab bench jansen` times.
@@ -81,7 +85,9 @@ struct JansenSweepOptions {
 // (degrees), each pose starting from a prediction extrapolated from the poses before.
 //
 //  1. Solve at 1.57 rad from seed 000's estimates (the first step).
-//  2. If `start` is elsewhere, walk there in steps no larger than `step` (a step each).
+//  2. If `start` is elsewhere, walk there in steps of walk_in_step_deg (a step each), whatever the
+//     sweep's own step; to the angle a whole number of turns from `start` that is nearest 1.57 rad
+//     (at most 180 deg away: crank_angle.hpp), since it has the same pose.
 //  3. Solve each requested angle from the polynomial through the last poses (a step each).
 //  4. A failed solve is retried with the step halved, from the prediction and then from the last
 //     pose, up to options.max_halvings times; then the sweep stops with the solver's status.
@@ -93,7 +99,10 @@ class JansenSweepStepper {
       : model_(model), solver_(solver), options_(options) {}
   void set_observer(SweepObserver<JansenSweepStepper>* observer) { observer_ = observer; }
 
-  // Throws std::invalid_argument for a step of zero or one that points away from stop.
+  static constexpr double walk_in_step_deg = 5.0;  // the walk-in's own step (step 2)
+
+  // Throws std::invalid_argument for a step of zero, one that points away from stop, or more than
+  // max_sweep_poses poses (crank_angle.hpp).
   void start(double start_deg, double stop_deg, double step_deg);
   bool step();
   JansenSweepAngles solve(double start_deg, double stop_deg, double step_deg);
@@ -123,7 +132,7 @@ class JansenSweepStepper {
   JansenSweepAngles sweep_;
   Phase phase_ = Phase::finished;
   Status status_ = Status::running;  // no verdict before the sweep has finished
-  double start_deg_ = 0.0, step_deg_ = 0.0, current_deg_ = 0.0;
+  double start_deg_ = 0.0, step_deg_ = 0.0, current_deg_ = 0.0, walk_to_deg_ = 0.0;
   int count_ = 0, next_ = 0, poses_ = 0;
   Eigen::VectorXd angles_, trial_;  // the last pose solved; the pose being tried
 };

@@ -4,8 +4,10 @@
 //
 //  1. Start at theta = 45 deg from seed 003's guess (mustang_seed_start).
 //  2. March up through the requested angles above 45 deg and down through those below, each
-//     solve starting from a prediction (the last two poses extrapolated). No step is larger than
-//     the requested step or 1 deg.
+//     solve starting from a prediction (the last two poses extrapolated). An angle is marched to
+//     at its equal whole turns away that is nearest 45 deg (crank_angle.hpp); the pose keeps the
+//     requested angle. The walk to a direction's first angle takes steps of up to 1 deg; from one
+//     requested angle to the next no step is larger than the requested step or 1 deg.
 //  3. A step fails when the solver does not converge or the pose left the branch (a dyad flipped
 //     to its other side, or loop 4's kite folded). A failed step is retried from the last pose, then halved.
 //  4. Halving near a limit is a bisection on theta: it stops when the step is below the
@@ -27,6 +29,7 @@ struct MustangPose {
   PoseOutcome outcome;
   double condition = 0.0;             // kappa_2 of the 8x8 Jacobian at the pose
   double closed_form_distance = 0.0;  // max over joints of |joint - closed-form joint|
+  double closed_form_bound = 0.0;     // the distance its residual and conditioning justify (closed_form_bound.hpp)
   double length_error = 0.0;          // worst link-length error
   double rigid_error = 0.0;           // worst rigid-body shape error
   double fixed_error = 0.0;           // worst fixed-point error
@@ -43,12 +46,14 @@ struct MustangLimit {
 
 struct MustangSweep {
   std::vector<MustangPose> poses;  // the requested angles that assembled, in the requested order
-  Status status = Status::converged;
-  MustangLimit lower, upper;       // towards smaller and larger theta
+  Status status = Status::converged;  // a limit's status; no_progress when a pose is not verified
+  MustangLimit lower, upper;       // towards smaller and larger theta (limits' angles within half a turn of 45)
   int step_halvings = 0;
-  bool branch_kept = true;         // every pose within 1e-6 of the closed form on the seed's branch
+  bool branch_kept = true;         // every pose verified: within its bound of the closed form on the seed's
+                                   // branch, the bound below half the shortest link (closed_form_bound.hpp)
   double worst_angle_rate = 0.0;   // max over neighbours of ||dx||_inf / |d theta| (continuity)
   double worst_closed_form_distance = 0.0, worst_length_error = 0.0, worst_rigid_error = 0.0, worst_fixed_error = 0.0;
+  double worst_closed_form_bound = 0.0;
 };
 
 struct MustangSweepOptions {
@@ -67,7 +72,8 @@ class MustangSweepStepper {
       : solver_(solver), options_(options) {}
   void set_observer(SweepObserver<MustangSweepStepper>* observer) { observer_ = observer; }
 
-  // Throws std::invalid_argument for a step of zero or one that points away from stop.
+  // Throws std::invalid_argument for a step of zero, one that points away from stop, or more than
+  // max_sweep_poses poses (crank_angle.hpp).
   void start(double start_deg, double stop_deg, double step_deg);
   bool step();
   MustangSweep solve(double start_deg, double stop_deg, double step_deg);
@@ -95,7 +101,11 @@ class MustangSweepStepper {
   MustangLinkage linkage_;
   MustangSweep sweep_;
   std::vector<MustangPose> poses_found_;
-  std::vector<double> up_, down_;  // the requested angles above and below the start, in marching order
+  struct Target {
+    double requested;  // the angle asked for
+    double at;         // the same angle whole turns away, nearest 45 deg: where the sweep solves it
+  };
+  std::vector<Target> up_, down_;  // the requested angles above and below the start, in marching order
   double step_deg_ = 0.0;
   bool seeded_ = false;
   Status status_ = Status::running;  // no verdict before the sweep has finished

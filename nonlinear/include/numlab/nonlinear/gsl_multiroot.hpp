@@ -12,7 +12,8 @@
 //              GSL reported an error -> its status (the message kept in the result);
 //              x not finite -> non_finite;
 //              gsl_multiroot_test_residual(f, residual_tolerance) -> converged (residual_small);
-//              gsl_multiroot_test_delta(dx, x, step_tolerance, step_tolerance) -> converged (step_small);
+//              gsl_multiroot_test_delta(dx, x, step_tolerance, step_tolerance) -> no_progress (step_small):
+//                a small step is not a root, so only test_residual gives converged;
 //              max_iterations reached -> max_iterations.
 
 #include <Eigen/Core>
@@ -36,7 +37,8 @@ class GslMultiroot {
  public:
   using Observer = StepObserver<GslMultiroot, NewtonRecord>;
 
-  // Throws std::invalid_argument for an unknown type.
+  // Throws std::invalid_argument for an unknown type, a tolerance that is negative or not finite,
+  // an iteration limit below 1, or damping.
   GslMultiroot(const DynamicSystem& system, const std::string& type, NewtonOptions options = {});
   ~GslMultiroot();
   GslMultiroot(const GslMultiroot&) = delete;

@@ -5,7 +5,9 @@
 //            x <- x + lambda dx         (lambda = 1; with damping, the first of 1, 1/2, 1/4, ...
 //                                        that passes Armijo's sufficient decrease on ||f||_2^2)
 //   until    ||f(x)||_inf <= residual_tolerance            -> converged (residual_small)
-//         or ||dx||_inf <= step_tolerance (1 + ||x||_inf)  -> converged (step_small)
+//         or ||dx||_inf <= step_tolerance (1 + ||x||_inf)  -> no_progress (step_small): the
+//            iterates stopped moving, but a small step is not a root; only the residual test
+//            gives converged
 //
 // Other endings, each a status with the numbers behind it: max_iterations; singular (the linear
 // solve found J singular); non_finite (f, J or x stopped being finite); diverged (||f||_inf grew
@@ -40,7 +42,8 @@ struct NewtonOptions {
   double divergence_factor = 1e12;   // diverged when ||f|| > factor * max(||f(x0)||, 1)
 };
 
-// Why the iteration stopped.
+// Why the iteration stopped. residual_small is the only reason with status converged; step_small
+// ends with status no_progress.
 // no_progress: GSL's adapter only, when GSL reports that its iteration is not making progress.
 enum class StopReason {
   running, residual_small, step_small, iteration_limit, singular_jacobian, non_finite, diverged, no_descent, no_progress
@@ -100,8 +103,8 @@ class Newton {
 
  private:
   void check_options() const {
-    linalg::require_non_negative(options_.residual_tolerance, "residual tolerance");
-    linalg::require_non_negative(options_.step_tolerance, "step tolerance");
+    require_tolerance(options_.residual_tolerance, "residual tolerance");
+    require_tolerance(options_.step_tolerance, "step tolerance");
     if (options_.max_iterations < 1) {
       throw std::invalid_argument("iteration limit must be at least 1, got " + std::to_string(options_.max_iterations));
     }
@@ -184,7 +187,7 @@ class Newton {
     } else if (residual_small(result_.residual_norm, options_.residual_tolerance)) {
       finish(Status::converged, StopReason::residual_small);
     } else if (step_small(result_.step_norm, x_.template lpNorm<Eigen::Infinity>(), options_.step_tolerance)) {
-      finish(Status::converged, StopReason::step_small);
+      finish(Status::no_progress, StopReason::step_small);  // stopped moving, yet ||f|| is not small
     } else if (diverged(result_.residual_norm, residual_at_start_, options_.divergence_factor)) {
       finish(Status::diverged, StopReason::diverged);
     } else if (result_.iterations >= options_.max_iterations) {

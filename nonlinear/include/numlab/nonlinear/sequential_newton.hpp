@@ -33,7 +33,9 @@ struct SequentialNewtonOptions {
 
 struct SequentialNewtonResult {
   Eigen::VectorXd x;
-  Status status = Status::running;          // converged, or the status of the first block that failed
+  Status status = Status::running;          // converged (every block did, and ||f||_inf <= tolerance),
+                                            // the status of the first block that failed, or
+                                            // no_progress (blocks converged, whole residual not small)
   int failed_block = -1;                    // index into the blocks, or -1
   std::vector<NewtonResult<Eigen::Dynamic>> blocks;  // one per block solved (or attempted)
   int iterations = 0;                       // summed over blocks
@@ -78,7 +80,8 @@ class SequentialNewton {
 
   // system and blocks must outlive the stepper. Throws std::invalid_argument when the blocks do not
   // cover each equation and unknown exactly once, a block is not square, or the linear method is
-  // inverse2x2 and a block is not 2x2.
+  // inverse2x2 and a block is not 2x2, or for Newton options that Newton rejects (a tolerance
+  // negative or not finite, an iteration limit below 1).
   SequentialNewton(const DynamicSystem& system, const std::vector<Block>& blocks, SequentialNewtonOptions options = {});
   SequentialNewton(const DynamicSystem&, std::vector<Block>&&, SequentialNewtonOptions = {}) = delete;
   SequentialNewton(const SequentialNewton&) = delete;

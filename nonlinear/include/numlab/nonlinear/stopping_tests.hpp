@@ -4,13 +4,25 @@
 // call these, so the tests are written once.
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace numlab::nonlinear {
+
+// A tolerance must be a finite number >= 0: infinity would pass every test at once (a "root" after
+// no iteration), NaN none. Misuse: std::invalid_argument naming the tolerance.
+inline void require_tolerance(double value, const char* what) {
+  if (!std::isfinite(value) || value < 0.0) {
+    throw std::invalid_argument(std::string(what) + " must be a finite number >= 0, got " + std::to_string(value));
+  }
+}
 
 // Residual small: ||f(x)||_inf <= tolerance. The only test that says x is a root.
 inline bool residual_small(double residual_norm, double tolerance) { return residual_norm <= tolerance; }
 
-// Step small: ||dx||_inf <= tolerance (1 + ||x||_inf). The iterates have stopped moving.
+// Step small: ||dx||_inf <= tolerance (1 + ||x||_inf). The iterates have stopped moving; that is
+// not a root (a small step is not a root). Alone it ends the iteration as no_progress.
 inline bool step_small(double step_norm, double x_norm, double tolerance) {
   return step_norm <= tolerance * (1.0 + x_norm);
 }
