@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "../cli/run_numlab.hpp"
@@ -33,18 +35,23 @@ const std::vector<std::string>& row_named(const numlab::test::CsvRows& rows, con
 }
 
 // "2.07x faster than" or "1.46x slower than" for time t against time other, both as printed
-// (3 digits): the printed ratio must be one of those that rounding of the printed times allows.
+// (3 significant digits, so each is off by at most 0.05/100 of itself): the sentence's ratio must
+// be within what that rounding allows of the ratio of the printed times, plus its own last digit.
 void check_ratio(const std::string& text, const std::string& before, double t, double other) {
   const double ratio = other / t;
   const std::string word = ratio >= 1.0 ? "faster" : "slower";
   const double shown = ratio >= 1.0 ? ratio : 1.0 / ratio;
-  bool found = false;
-  for (double slack : {-0.01, -0.005, 0.0, 0.005, 0.01}) {
-    found = found || text.find(fmt::format("{} {:.2f}x {} than", before, shown * (1.0 + slack), word)) !=
-                         std::string::npos;
-  }
-  INFO(before << " at " << fmt::format("{:.3f}", shown) << "x " << word);
-  CHECK(found);
+  const std::size_t at = text.find(before + " ");
+  INFO(before << " at " << fmt::format("{:.3f}", shown) << "x " << word << " from the printed times");
+  REQUIRE(at != std::string::npos);
+  std::istringstream sentence(text.substr(at + before.size() + 1, 40));
+  double printed = 0.0;
+  std::string times, direction, than;
+  sentence >> printed >> times >> direction >> than;
+  CHECK(times == "x");
+  CHECK(direction == word);
+  CHECK(than == "than");
+  CHECK(std::abs(printed - shown) <= shown * 2 * 0.0051 + 0.005);
 }
 
 }  // namespace
