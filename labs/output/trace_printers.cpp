@@ -97,7 +97,7 @@ void NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
       entry["linear_iterations"] = record.linear_iterations;
     }
     entry["damping"] = record.damping;
-    entry["time_s"] = record.elapsed_s;
+    entry["time_s"] = record.elapsed_s - paused_since_start();
     records_.push_back(entry);
     return;
   }
@@ -112,7 +112,7 @@ void NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
                             record.iteration, record.residual_norm, record.residual_2norm, record.step_norm,
                             has_linear_solve ? std::string(to_string(record.linear_status)) : "-",
                             has_linear_solve ? std::to_string(record.linear_iterations) : "-", record.damping,
-                            record.elapsed_s);
+                            record.elapsed_s - paused_since_start());
   pause_if_stepping(step_);
 }
 

@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "cli/cli_common.hpp"
+
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
@@ -23,6 +25,9 @@ class TraceOutput {
   const nlohmann::ordered_json& records() const { return records_; }
 
  protected:
+  // Seconds paused at --step since this tracer was made: taken off the times it prints.
+  double paused_since_start() const { return paused_seconds() - paused_at_start_; }
+  double paused_at_start_ = paused_seconds();
   std::ostream* text_out_;
   bool step_;
   bool header_printed_ = false;
