@@ -148,10 +148,6 @@ CommonOptions checked_common_options(const CommonOptions& options, std::string_v
   CommonOptions checked = options;
   // --step pauses after each traced step, so it shows the trace (a lab's steps are its own).
   if (checked.step && found->trace) checked.trace = true;
-  if (checked.step && isatty(STDIN_FILENO) == 0) {
-    std::cerr << "numlab: note: --step pauses only when stdin is a terminal; it is not, so the run goes straight "
-                 "through\n";
-  }
   return checked;
 }
 
@@ -162,7 +158,14 @@ nlohmann::ordered_json number_or_null(double value) {
 int exit_code_for(Status status) { return status == Status::converged ? exit_success : exit_method_failed; }
 
 void pause_if_stepping(bool step) {
-  if (!step || isatty(STDIN_FILENO) == 0) return;
+  static bool noted = false;
+  if (!step) return;
+  if (isatty(STDIN_FILENO) == 0) {
+    // One note, at the first step, instead of a prompt nobody can answer.
+    if (!noted) std::cerr << "numlab: note: --step pauses only when stdin is a terminal; it is not, so the run goes on\n";
+    noted = true;
+    return;
+  }
   std::cerr << "  -- Enter: next step; q, Enter: stop here --" << std::flush;
   const auto begin = std::chrono::steady_clock::now();
   std::string line;

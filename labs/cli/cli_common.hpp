@@ -47,7 +47,7 @@ const std::vector<CommonFlagUse>& common_flag_table();
 
 // Checks the shared flags given to command `name` against the table: each one it does not honour
 // is bad input (std::invalid_argument naming where the flag applies). Returns the options to run
-// with: --step turns --trace on. With --step but no terminal on stdin, prints one note on stderr.
+// with: --step turns --trace on.
 CommonOptions checked_common_options(const CommonOptions& options, std::string_view name);
 
 // "--flag applies only to X" as bad input, when `applies` is false and the flag was given.
@@ -68,7 +68,8 @@ struct StoppedByUser : std::runtime_error {
 constexpr std::string_view stopped_status = "stopped_by_user";
 
 // With --step and stdin a terminal: waits for Enter, or throws StoppedByUser on q + Enter (or at
-// the end of input). Without a terminal it does nothing, so scripts and CI never block.
+// the end of input). Without a terminal it never waits (scripts and CI never block): the first
+// call prints one note on stderr, the others nothing.
 void pause_if_stepping(bool step);
 // Seconds spent waiting at pauses so far, for printed times that leave them out.
 double paused_seconds();

@@ -190,8 +190,8 @@ int MechanismCommand::run() const {
   if (common.max_iterations) options.max_iterations = *common.max_iterations;
   const auto solver = mechanisms::make_jansen_solver(model, solver_, linear_, options);
   // 2. Sweep. --trace: every pose attempt, printed as it happens (stderr) or kept for the JSON;
-  // --step pauses after each one. The time leaves out the pauses.
-  Tracer tracer(common.trace && common.format != Format::json ? &std::cerr : nullptr, common.step);
+  // --step shows each one on stderr in every format and pauses after it. The time leaves out the pauses.
+  Tracer tracer(common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr, common.step);
   const double paused_before = paused_seconds();
   const auto begin = std::chrono::steady_clock::now();
   std::optional<mechanisms::JansenSweep> swept;

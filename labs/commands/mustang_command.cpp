@@ -190,7 +190,7 @@ int run_mustang(const MustangRequest& request) {
   // --trace keeps every attempt (printed as a table afterwards on stderr, or in the JSON); --step
   // also prints each attempt as it happens and pauses after it. The time leaves out the pauses.
   const CommonOptions& common = request.common;
-  Tracer tracer(common.step && common.format != Format::json ? &std::cerr : nullptr, common.step);
+  Tracer tracer(common.step ? &std::cerr : nullptr, common.step);
   const double paused_before = paused_seconds();
   const auto begin = std::chrono::steady_clock::now();
   std::optional<MustangSweep> swept;

@@ -223,8 +223,9 @@ int SolveLinearCommand::run() const {
   const LoadedSystem system = generate_.empty() ? file_system(matrix_file_, rhs_file_) : generated_system(generate_, seed_);
 
   // 2. Solve, traced: text and CSV traces go to stderr as the solve runs; JSON traces are collected
-  // for the "trace" array. The time leaves out --step pauses.
-  std::ostream* trace_stream = common.trace && common.format != Format::json ? &std::cerr : nullptr;
+  // for the "trace" array (and shown on stderr too with --step). The time leaves out the pauses.
+  // With --step the steps are shown on stderr in every format, so that each pause follows one.
+  std::ostream* trace_stream = common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr;
   EliminationTracer elimination_tracer(trace_stream, common.step);
   SweepTracer sweep_tracer(trace_stream, common.step);
   LinearTracers tracers;

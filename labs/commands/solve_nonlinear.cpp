@@ -72,8 +72,9 @@ int SolveNonlinearCommand::run() const {
   if (common.max_iterations) settings.options.max_iterations = *common.max_iterations;
   if (step_tolerance_) settings.options.step_tolerance = *step_tolerance_;
 
-  // 2. Solve, traced: text and CSV traces go to stderr; the time leaves out --step pauses.
-  NewtonTracer tracer(common.trace && common.format != Format::json ? &std::cerr : nullptr, common.step);
+  // 2. Solve, traced: text and CSV traces go to stderr (JSON's too with --step, so that each pause
+  // follows a shown step); the time leaves out the pauses.
+  NewtonTracer tracer(common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr, common.step);
   const double paused_before = paused_seconds();
   const auto begin = std::chrono::steady_clock::now();
   std::optional<NonlinearRun> solved;

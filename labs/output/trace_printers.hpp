@@ -17,8 +17,8 @@
 
 namespace numlab::cli {
 
-// What every tracer holds: where text goes (nullptr: collect JSON records instead), whether to
-// pause after each record (--step), and the records collected.
+// What every tracer holds: the records collected (for JSON's "trace"), where text goes as each
+// record comes (nullptr: nowhere), and whether to pause after each printed record (--step).
 class TraceOutput {
  public:
   TraceOutput(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
