@@ -173,6 +173,12 @@ int run_bench_all(const CommonOptions& common, const std::string& chart, bool qu
   const ChartFiles seidel_chart = chart_files(common.out_dir + "/bench-seidel.svg");
   const ChartFiles fit_chart = chart_files(common.out_dir + "/bench-fit.svg");
   const ChartFiles mustang_chart = chart_files(common.out_dir + "/work-precision-mustang.svg");
+  std::vector<PlannedFile> outputs = planned_files(work_precision, chart.empty() ? "the work-precision chart" : "--chart");
+  for (const auto& [files, name] : {std::pair{&mustang_chart, "the Mustang chart"}, std::pair{&linear_chart, "the linear chart"},
+                                    std::pair{&seidel_chart, "the Gauss-Seidel chart"}, std::pair{&fit_chart, "the fit chart"}}) {
+    for (const PlannedFile& file : planned_files(*files, name)) outputs.push_back(file);
+  }
+  check_outputs(outputs, {});
   const fitting::DataSet wampler = fitting::read_nist_data(nist_data_dir() + "/Wampler4.dat");
 
   // 2. Measure: warm-up, repeated runs, medians (timing.hpp).

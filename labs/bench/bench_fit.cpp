@@ -44,6 +44,7 @@ void print_fit_digits(std::ostream& out, const std::vector<FitBenchRow>& rows) {
 
 int run_bench_fit(const CommonOptions& common, const std::string& chart, bool quick) {
   const ChartFiles files = chart_files(chart.empty() ? common.out_dir + "/bench-fit.svg" : chart);
+  check_outputs(planned_files(files, chart.empty() ? "bench fit's chart" : "--chart"), {});
   const fitting::DataSet wampler = fitting::read_nist_data(nist_data_dir() + "/Wampler4.dat");
   const std::vector<FitBenchRow> rows = bench_fit("Wampler4", wampler, 12, quick);
   std::vector<DegreeSweepRow> sweep;

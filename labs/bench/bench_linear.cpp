@@ -164,15 +164,22 @@ BenchCommand::BenchCommand(CLI::App& app) {
 }
 
 int BenchCommand::run() const {
-  if (what_ == "all") return run_bench_all(common_, chart_, quick_);
-  if (what_ == "jansen") return run_jansen();
-  if (what_ == "mustang") return run_mustang_bench(common_, quick_);
-  if (what_ == "fit") return run_bench_fit(common_, chart_, quick_);
-  const ChartFiles files = chart_files(chart_.empty() ? common_.out_dir + "/bench-linear.svg" : chart_);
+  // Every flag checked against what is measured, and every file named, before any measuring.
+  const CommonOptions common = checked_common_options(common_, "bench " + what_);
+  require_applies(given(*command_, "--chart"), what_ == "all" || what_ == "linear" || what_ == "fit", "--chart",
+                  "bench all, bench linear and bench fit");
+  require_applies(given(*command_, "--sizes"), what_ == "linear", "--sizes", "bench linear");
+  const std::string chart = output_path(common, chart_);
+  if (what_ == "all") return run_bench_all(common, chart, quick_);
+  if (what_ == "jansen") return run_jansen(common);
+  if (what_ == "mustang") return run_mustang_bench(common, quick_);
+  if (what_ == "fit") return run_bench_fit(common, chart, quick_);
+  const ChartFiles files = chart_files(chart.empty() ? common.out_dir + "/bench-linear.svg" : chart);
+  check_outputs(planned_files(files, chart.empty() ? "bench linear's chart" : "--chart"), {});
   const std::vector<BenchRow> rows = bench_linear(sizes_, quick_);
   draw_linear_chart(files, rows, sizes_);
 
-  if (common_.format == Format::json) {
+  if (common.format == Format::json) {
     nlohmann::ordered_json out = {{"benchmark", "linear"}, {"chart", files.chart}, {"rows", nlohmann::ordered_json::array()}};
     for (const BenchRow& row : rows) {
       out["rows"].push_back({{"solver", row.solver},
@@ -182,7 +189,7 @@ int BenchCommand::run() const {
                              {"error", row.error}});
     }
     std::cout << out.dump(2) << '\n';
-  } else if (common_.format == Format::csv) {
+  } else if (common.format == Format::csv) {
     std::cout << "solver,n,time_s,ratio_to_gsl_lu,error\n";
     for (const BenchRow& row : rows) {
       std::cout << fmt::format("{},{},{:.6g},{:.4g},{:.3g}\n", row.solver, row.n, row.time_s,
@@ -197,10 +204,10 @@ int BenchCommand::run() const {
   return exit_success;
 }
 
-int BenchCommand::run_jansen() const {
-  const double tolerance = common_.tolerance.value_or(1e-10);
+int BenchCommand::run_jansen(const CommonOptions& common) const {
+  const double tolerance = common.tolerance.value_or(1e-10);
   const auto rows = bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick_);
-  if (common_.format == Format::json) {
+  if (common.format == Format::json) {
     nlohmann::ordered_json out = {{"benchmark", "jansen"}, {"rows", nlohmann::ordered_json::array()}};
     for (const auto& row : rows) {
       out["rows"].push_back({{"solver", row.solver},

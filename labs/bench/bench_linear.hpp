@@ -35,7 +35,7 @@ class BenchCommand {
   int run() const;
 
  private:
-  int run_jansen() const;
+  int run_jansen(const CommonOptions& common) const;
   CLI::App* command_;
   CommonOptions common_;
   std::string what_ = "all";

@@ -1,32 +1,154 @@
 #include "cli/cli_common.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <chrono>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <map>
-#include <stdexcept>
 
 namespace numlab::cli {
 
+namespace {
+
+namespace fs = std::filesystem;
+
+// The largest --max-iter: beyond it a run is a hang, not a lesson.
+constexpr long long max_iteration_limit = 100'000'000;
+
+std::string lower_case(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
+std::optional<Format> format_named(const std::string& text) {
+  const std::string name = lower_case(text);
+  if (name == "text") return Format::text;
+  if (name == "json") return Format::json;
+  if (name == "csv") return Format::csv;
+  return std::nullopt;
+}
+
+// The validators return "" when the value is good, else what is wrong (CLI11 puts "--flag: " before it).
+std::string tolerance_problem(const std::string& text) {
+  double value = 0.0;
+  const char* first = text.data() + (text.starts_with('+') ? 1 : 0);
+  const auto [end, error] = std::from_chars(first, text.data() + text.size(), value);
+  const bool number = !text.empty() && error == std::errc() && end == text.data() + text.size();
+  if (number && std::isfinite(value) && value >= 0.0) return "";
+  return "must be a finite number >= 0 (e.g. 1e-10), got '" + text + "'";
+}
+
+std::string iteration_limit_problem(const std::string& text) {
+  long long value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  const bool whole = !text.empty() && error == std::errc() && end == text.data() + text.size();
+  if (whole && value >= 1 && value <= max_iteration_limit) return "";
+  return "must be a whole number from 1 to " + std::to_string(max_iteration_limit) + ", got '" + text + "'";
+}
+
+std::string names_honouring(bool CommonFlagUse::*flag) {
+  std::string names;
+  for (const CommonFlagUse& use : common_flag_table()) {
+    if (use.*flag) names += (names.empty() ? "" : ", ") + std::string(use.name);
+  }
+  return names;
+}
+
+double paused_total_s = 0.0;
+
+}  // namespace
+
+CLI::Validator finite_non_negative() { return CLI::Validator(tolerance_problem, "T>=0"); }
+
 void add_common_options(CLI::App& command, CommonOptions& options) {
-  const std::map<std::string, Format> formats = {{"text", Format::text}, {"json", Format::json}, {"csv", Format::csv}};
-  command.add_option("--format", options.format, "Output format: text, json or csv")
-      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
-  command.add_flag("--trace", options.trace, "Print every step (stderr in text mode, \"trace\" in JSON)");
-  command.add_flag("--step", options.step, "Pause after each step until Enter (only when stdin is a terminal)");
-  command.add_option("--tol", options.tolerance, "Override the method's tolerance (non-negative)")
+  options.command = &command;
+  command
+      .add_option_function<std::string>(
+          "--format", [&options](const std::string& text) { options.format = *format_named(text); },
+          "Output format: text, json or csv")
       ->check(CLI::Validator(
-          [](std::string& value) -> std::string {
-            const double number = std::stod(value);
-            return number >= 0.0 ? "" : "tolerance must be non-negative, got " + value;
+          [](std::string& text) { return format_named(text) ? "" : "must be text, json or csv, got '" + text + "'"; },
+          "text|json|csv"));
+  command.add_flag("--trace", options.trace, "Print every step (stderr in text and CSV, \"trace\" in JSON)");
+  command.add_flag("--step", options.step, "Pause after each step (implies --trace); q + Enter stops (terminal only)");
+  command.add_option("--tol", options.tolerance, "Override the method's tolerance (finite, >= 0)")
+      ->check(finite_non_negative());
+  command.add_option("--max-iter", options.max_iterations, "Override the iteration limit (1 to 100000000)")
+      ->check(CLI::Validator(iteration_limit_problem, "N>=1"));
+  command.add_option("--out", options.out_dir, "Folder for the files written (default out/)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            if (text.empty()) return std::string("must name a folder, got an empty name");
+            const bool odd = std::any_of(text.begin(), text.end(), [](unsigned char c) { return c == '\'' || c < 0x20 || c == 0x7f; });
+            return odd ? "'" + text + "': a folder name without quotes or control characters, please" : std::string();
           },
-          "NONNEGATIVE"));
-  command.add_option("--max-iter", options.max_iterations, "Override the iteration limit (at least 1)")
-      ->check(CLI::PositiveNumber);
-  command.add_option("--out", options.out_dir, "Folder for the files written (default out/)");
+          "DIR"));
+}
+
+bool given(const CLI::App& command, std::string_view flag) { return command.count(std::string(flag)) > 0; }
+
+bool given(const CommonOptions& options, std::string_view flag) {
+  return options.command != nullptr && given(*options.command, flag);
+}
+
+const std::vector<CommonFlagUse>& common_flag_table() {
+  // name               json   csv    trace  step   tol    max-iter out
+  static const std::vector<CommonFlagUse> table = {
+      {"solve linear", true, true, true, true, true, true, false},
+      {"solve nonlinear", true, true, true, true, true, true, false},
+      {"mechanism", true, true, true, true, true, true, true},
+      {"fit", true, true, true, false, true, true, true},
+      {"lab", false, false, false, true, false, false, true},
+      {"bench all", true, false, false, false, false, false, true},
+      {"bench linear", true, true, false, false, false, false, true},
+      {"bench jansen", true, false, false, false, true, false, false},
+      {"bench mustang", true, false, false, false, true, false, false},
+      {"bench fit", true, false, false, false, false, false, true},
+  };
+  return table;
+}
+
+void require_applies(bool was_given, bool applies, std::string_view flag, std::string_view where) {
+  if (was_given && !applies) throw std::invalid_argument(std::string(flag) + " applies only to " + std::string(where));
+}
+
+CommonOptions checked_common_options(const CommonOptions& options, std::string_view name) {
+  const auto found = std::find_if(common_flag_table().begin(), common_flag_table().end(),
+                                  [&](const CommonFlagUse& use) { return use.name == name; });
+  if (found == common_flag_table().end()) throw std::logic_error("no shared-flag row for " + std::string(name));
+  const std::string command = "numlab " + std::string(name);
+  const auto reject = [&](std::string_view flag, bool CommonFlagUse::*member) {
+    if (given(options, flag) && !((*found).*member)) {
+      throw std::invalid_argument(std::string(flag) + " does not apply to " + command + " (it applies to: " +
+                                  names_honouring(member) + ")");
+    }
+  };
+  const auto reject_format = [&](Format format, std::string_view word, bool CommonFlagUse::*member) {
+    if (options.format == format && !((*found).*member)) {
+      throw std::invalid_argument("--format " + std::string(word) + " does not apply to " + command +
+                                  " (it applies to: " + names_honouring(member) + ")");
+    }
+  };
+  reject_format(Format::json, "json", &CommonFlagUse::json);
+  reject_format(Format::csv, "csv", &CommonFlagUse::csv);
+  reject("--trace", &CommonFlagUse::trace);
+  reject("--step", &CommonFlagUse::step);
+  reject("--tol", &CommonFlagUse::tol);
+  reject("--max-iter", &CommonFlagUse::max_iter);
+  reject("--out", &CommonFlagUse::out);
+
+  CommonOptions checked = options;
+  // --step pauses after each traced step, so it shows the trace (a lab's steps are its own).
+  if (checked.step && found->trace) checked.trace = true;
+  return checked;
 }
 
 nlohmann::ordered_json number_or_null(double value) {
@@ -36,29 +158,104 @@ nlohmann::ordered_json number_or_null(double value) {
 int exit_code_for(Status status) { return status == Status::converged ? exit_success : exit_method_failed; }
 
 void pause_if_stepping(bool step) {
-  if (!step || isatty(STDIN_FILENO) == 0) return;
-  std::cerr << "  -- press Enter to continue --" << std::flush;
-  std::string ignored;
-  std::getline(std::cin, ignored);
+  static bool noted = false;
+  if (!step) return;
+  if (isatty(STDIN_FILENO) == 0) {
+    // One note, at the first step, instead of a prompt nobody can answer.
+    if (!noted) std::cerr << "numlab: note: --step pauses only when stdin is a terminal; it is not, so the run goes on\n";
+    noted = true;
+    return;
+  }
+  std::cerr << "  -- Enter: next step; q, Enter: stop here --" << std::flush;
+  const auto begin = std::chrono::steady_clock::now();
+  std::string line;
+  const bool answered = static_cast<bool>(std::getline(std::cin, line));
+  paused_total_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  line.erase(std::remove_if(line.begin(), line.end(), [](unsigned char c) { return std::isspace(c); }), line.end());
+  if (!answered || lower_case(line) == "q") throw StoppedByUser();
+}
+
+double paused_seconds() { return paused_total_s; }
+
+int report_stopped(const CommonOptions& options, nlohmann::ordered_json partial, const nlohmann::ordered_json& trace) {
+  const std::size_t steps = trace.size();
+  if (options.format == Format::json) {
+    partial["status"] = std::string(stopped_status);
+    partial["steps_done"] = steps;
+    partial["trace"] = trace;
+    std::cout << partial.dump(2) << '\n';
+  } else if (options.format == Format::csv) {
+    std::cout << "status,steps_done\n" << stopped_status << ',' << steps << '\n';
+  } else {
+    std::cout << "status             " << stopped_status << " (q after " << steps
+              << " traced steps; the trace above shows them)\n";
+  }
+  return exit_method_failed;
 }
 
 void ensure_directory(const std::string& path) {
   std::error_code error;
-  std::filesystem::create_directories(path, error);
-  if (error || !std::filesystem::is_directory(path)) {
-    throw std::invalid_argument("cannot create output folder '" + path + "'");
-  }
+  if (path.empty()) throw std::invalid_argument("an output folder needs a name");
+  fs::create_directories(path, error);
+  if (error || !fs::is_directory(path)) throw std::invalid_argument("cannot create output folder '" + path + "'");
 }
 
 void write_file_atomically(const std::string& path, const std::string& contents) {
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) throw std::invalid_argument("cannot write '" + path + "'");
-    file << contents;
-    if (!file.flush()) throw std::invalid_argument("cannot write '" + path + "'");
+  const fs::path target(path);
+  std::error_code error;
+  if (path.empty() || !target.has_filename()) throw std::invalid_argument("cannot write '" + path + "': no file name");
+  if (fs::is_directory(target, error)) throw std::invalid_argument("cannot write '" + path + "': it is a folder");
+  if (target.has_parent_path()) ensure_directory(target.parent_path().string());
+  // 1. A unique temporary beside the target (so the rename stays in one file system).
+  std::string temporary = (target.parent_path() / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+  const int descriptor = mkstemp(temporary.data());
+  if (descriptor < 0) throw std::invalid_argument("cannot write '" + path + "': " + std::strerror(errno));
+  // 2. Write it whole, with the permissions a new file gets (mkstemp makes it private).
+  const mode_t mask = umask(0);
+  umask(mask);
+  bool written = fchmod(descriptor, 0666 & ~mask) == 0;
+  for (std::size_t done = 0; written && done < contents.size();) {
+    const ssize_t count = ::write(descriptor, contents.data() + done, contents.size() - done);
+    if (count < 0 && errno == EINTR) continue;
+    written = count > 0;
+    if (written) done += static_cast<std::size_t>(count);
   }
-  std::filesystem::rename(temporary, path);
+  const int write_errno = errno;
+  written = ::close(descriptor) == 0 && written;
+  // 3. Rename into place; on any failure, remove the temporary.
+  if (written && std::rename(temporary.c_str(), path.c_str()) == 0) return;
+  const int cause = written ? errno : write_errno;
+  ::unlink(temporary.c_str());
+  throw std::invalid_argument("cannot write '" + path + "': " + std::strerror(cause));
+}
+
+std::string output_path(const CommonOptions& options, const std::string& path) {
+  if (path.empty() || !given(options, "--out") || fs::path(path).is_absolute()) return path;
+  return (fs::path(options.out_dir) / path).string();
+}
+
+void check_outputs(const std::vector<PlannedFile>& outputs, const std::vector<std::string>& inputs) {
+  std::error_code error;
+  std::vector<fs::path> seen;
+  for (const PlannedFile& output : outputs) {
+    const std::string named = output.flag + " '" + output.path + "'";
+    if (output.path.empty()) throw std::invalid_argument(output.flag + ": needs a file name");
+    const fs::path path(output.path);
+    if (fs::is_directory(path, error)) throw std::invalid_argument(named + " is a folder, not a file");
+    if (path.has_parent_path() && fs::exists(path.parent_path(), error) && !fs::is_directory(path.parent_path(), error)) {
+      throw std::invalid_argument(named + ": '" + path.parent_path().string() + "' is not a folder");
+    }
+    for (const std::string& input : inputs) {
+      if (fs::exists(path, error) && fs::equivalent(path, input, error)) {
+        throw std::invalid_argument(named + " is the input file '" + input + "'; numlab does not overwrite its input");
+      }
+    }
+    const fs::path canonical = fs::weakly_canonical(fs::absolute(path), error);
+    if (std::find(seen.begin(), seen.end(), canonical) != seen.end()) {
+      throw std::invalid_argument(named + " is written twice by this command; give each output its own name");
+    }
+    seen.push_back(canonical);
+  }
 }
 
 }  // namespace numlab::cli

@@ -12,6 +12,7 @@
 #include "commands/mechanism_command.hpp"
 #include "commands/solve_linear.hpp"
 #include "commands/solve_nonlinear.hpp"
+#include "numlab/printable_text.hpp"
 
 namespace {
 
@@ -20,6 +21,12 @@ int run_main_job() {
   std::cout << "numlab: no sub-command, so running the main job: the Jansen leg lab.\n"
                "        (numlab --help lists the sub-commands; numlab labs lists the labs.)\n";
   return numlab::cli::run_lab("jansen", false, "out");
+}
+
+// Bad input: one line on stderr, whatever bytes the message quotes from outside.
+int bad_input(const std::string& message) {
+  std::cerr << "numlab: error: " << numlab::printable(message) << '\n';
+  return numlab::cli::exit_bad_input;
 }
 
 }  // namespace
@@ -44,8 +51,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
-    std::cerr << "numlab: error: " << error.what() << '\n';
-    return exit_bad_input;
+    return bad_input(error.what());
   }
 
   try {
@@ -58,11 +64,10 @@ int main(int argc, char** argv) {
     if (mechanism.selected()) return mechanism.run();
     if (fit.selected()) return fit.run();
     return run_main_job();
-  } catch (const std::invalid_argument& error) {
-    std::cerr << "numlab: error: " << error.what() << '\n';
-    return exit_bad_input;
+  } catch (const StoppedByUser& stopped) {
+    std::cerr << "numlab: " << stopped.what() << '\n';
+    return exit_method_failed;
   } catch (const std::exception& error) {
-    std::cerr << "numlab: error: " << error.what() << '\n';
-    return exit_bad_input;
+    return bad_input(error.what());
   }
 }

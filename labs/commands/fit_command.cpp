@@ -154,15 +154,24 @@ FitCommand::FitCommand(CLI::App& app) {
 }
 
 int FitCommand::run() const {
-  // 1. Check everything the user gave before doing any work.
+  // 1. Check everything the user gave before doing any work (docs/cli.md, "Which flags apply where").
+  const CommonOptions common = checked_common_options(common_, "fit");
   if (data_file_.empty() == foot_path_.empty()) throw std::invalid_argument("fit: give --data FILE or --foot-path ARC");
   fitting::FitOptions options;
   options.method = fitting::fit_method_from_string(method_);
   options.solver = fitting::normal_solver_from_string(linear_);
   options.degree = degree_;
-  if (common_.tolerance) options.sweep_tolerance = *common_.tolerance;
-  if (common_.max_iterations) options.max_sweeps = *common_.max_iterations;
-  const std::optional<ChartFiles> chart = chart_.empty() ? std::nullopt : std::optional(chart_files(chart_));
+  const bool normal = uses_normal_equations(options.method);
+  const bool sweeps = normal && options.solver == fitting::NormalSolver::gauss_seidel;
+  require_applies(given(common, "--trace"), normal, "--trace", "--method normal and normal-scaled");
+  require_applies(given(*command_, "--linear"), normal, "--linear", "--method normal and normal-scaled");
+  require_applies(given(common, "--tol"), sweeps, "--tol", "--linear gauss-seidel (its step test)");
+  require_applies(given(common, "--max-iter"), sweeps, "--max-iter", "--linear gauss-seidel (its sweep limit)");
+  if (common.tolerance) options.sweep_tolerance = *common.tolerance;
+  if (common.max_iterations) options.max_sweeps = *common.max_iterations;
+  const std::string chart_path = output_path(common, chart_);
+  const std::optional<ChartFiles> chart = chart_.empty() ? std::nullopt : std::optional(chart_files(chart_path));
+  if (chart) check_outputs(planned_files(*chart, "--chart"), data_file_.empty() ? std::vector<std::string>{} : std::vector{data_file_});
   fitting::DataSet data;
   if (!data_file_.empty()) {
     data = fitting::read_data_file(data_file_);
@@ -179,12 +188,12 @@ int FitCommand::run() const {
   const FitRun run{data, options, fit, certified_for(data, options.degree), time_s};
 
   // 3. Report.
-  if (common_.trace && uses_normal_equations(options.method)) {
-    print_normal_equations(common_.format == Format::text ? std::cout : std::cerr, fitter.normal_equations(), options);
+  if (common.trace && normal) {
+    print_normal_equations(common.format == Format::text ? std::cout : std::cerr, fitter.normal_equations(), options);
   }
-  if (common_.format == Format::json) {
+  if (common.format == Format::json) {
     std::cout << json_report(run).dump(2) << '\n';
-  } else if (common_.format == Format::csv) {
+  } else if (common.format == Format::csv) {
     std::cout << coefficient_table(run).csv();
   } else {
     print_text(std::cout, run);
@@ -192,7 +201,7 @@ int FitCommand::run() const {
   if (chart && fit.coefficients.size() > 0) {
     draw_fit_chart(*chart, fmt::format("{}: degree-{} fit ({})", data.name, fit.degree, to_string(fit.method)),
                    {{data.name, data.x, data.y, fit.coefficients}});
-    if (common_.format == Format::text) std::cout << "chart: " << chart->chart << '\n';
+    if (common.format == Format::text) std::cout << "chart: " << chart->chart << '\n';
   }
   return exit_code_for(fit.status);
 }

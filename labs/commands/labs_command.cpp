@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <iostream>
 #include <stdexcept>
 
@@ -30,15 +32,25 @@ int LabsCommand::list() const {
   return exit_success;
 }
 
-int LabsCommand::run() const { return run_lab(name_, common_.step, common_.out_dir); }
+int LabsCommand::run() const {
+  const CommonOptions common = checked_common_options(common_, "lab");
+  return run_lab(name_, common.step, common.out_dir);
+}
 
 int run_lab(const std::string& name, bool step, const std::string& out_dir) {
   for (const Lab& lab : all_labs()) {
     if (lab.name != name) continue;
     std::cout << fmt::format("numlab lab {}: {}\n", lab.name, lab.summary);
-    if (step) std::cout << "(--step: press Enter after each step)\n";
+    if (step && isatty(STDIN_FILENO) != 0) std::cout << "(--step: Enter after each step goes on; q, Enter stops)\n";
     LabSession session(std::cout, step, out_dir + "/lab-" + lab.name, lab.name, lab.summary);
-    const int exit_code = lab.run(session);
+    int exit_code = exit_method_failed;
+    try {
+      exit_code = lab.run(session);
+    } catch (const StoppedByUser&) {
+      // q at a pause: the report keeps the steps that ran.
+      session.say(fmt::format("Stopped with q after step {}: the steps above are the ones that ran.",
+                              session.steps_taken()));
+    }
     std::cout << "Report: " << session.finish() << " (steps, tables and figures in one page)\n";
     return exit_code;
   }

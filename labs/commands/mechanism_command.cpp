@@ -8,6 +8,9 @@
 #include <iostream>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <utility>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "cli/argument_parsing.hpp"
@@ -140,36 +143,59 @@ MechanismCommand::MechanismCommand(CLI::App& app) {
 }
 
 int MechanismCommand::run() const {
+  // 1. Every flag and every output file checked before any work (docs/cli.md, "Which flags apply where").
+  const CommonOptions common = checked_common_options(common_, "mechanism");
+  require_applies(given(*command_, "--linear"), solver_ == "full", "--linear", "--solver full");
+  require_applies(given(common, "--tol"), solver_ != "analytic", "--tol", "the iterative solvers (not analytic)");
+  require_applies(given(common, "--max-iter"), solver_ != "analytic", "--max-iter", "the iterative solvers (not analytic)");
+  require_applies(given(*command_, "--beest-animated"), !beest_.empty(), "--beest-animated", "--beest FILE");
   if (!crank_ && sweep_.empty()) throw std::invalid_argument("give --crank DEG or --sweep START:STOP:STEP");
   if (crank_ && !std::isfinite(*crank_)) throw std::invalid_argument("--crank must be a finite number of degrees");
   const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : parse_sweep(sweep_);
+  const std::string svg = output_path(common, svg_), animate = output_path(common, animate_),
+                    beest = output_path(common, beest_);
+  std::vector<PlannedFile> outputs;
+  for (const auto& [path, flag] : {std::pair{svg, "--svg"}, std::pair{animate, "--animate"}, std::pair{beest, "--beest"}}) {
+    if (!path.empty()) outputs.push_back({path, flag});
+  }
+  check_outputs(outputs, {});
   if (name_ == "mustang") {
     if (!beest_.empty()) throw std::invalid_argument("--beest draws the Jansen leg's beest, not the mustang");
-    return run_mustang({range.start, range.stop, range.step, solver_, linear_, common_, svg_, animate_});
+    return run_mustang({range.start, range.stop, range.step, solver_, linear_, common, svg, animate});
   }
   const JansenModel model = name_ == "jansen" ? JansenModel::eight_equations : JansenModel::ten_equations;
 
   nonlinear::NewtonOptions options;
-  if (common_.tolerance) options.residual_tolerance = *common_.tolerance;
-  if (common_.max_iterations) options.max_iterations = *common_.max_iterations;
+  if (common.tolerance) options.residual_tolerance = *common.tolerance;
+  if (common.max_iterations) options.max_iterations = *common.max_iterations;
   const auto solver = mechanisms::make_jansen_solver(model, solver_, linear_, options);
-  // --trace: every pose attempt, printed as it happens (stderr) or kept for the JSON; --step
-  // pauses after each one.
-  Tracer tracer(common_.trace && common_.format != Format::json ? &std::cerr : nullptr, common_.step);
-  const bool observed = common_.trace || common_.step;
+  // 2. Sweep. --trace: every pose attempt, printed as it happens (stderr) or kept for the JSON;
+  // --step shows each one on stderr in every format and pauses after it. The time leaves out the pauses.
+  Tracer tracer(common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr, common.step);
+  const double paused_before = paused_seconds();
   const auto begin = std::chrono::steady_clock::now();
-  const mechanisms::JansenSweep sweep = mechanisms::crank_sweep(model, *solver, range.start, range.stop, range.step, {},
-                                                                observed ? &tracer : nullptr);
-  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-
-  if (!sweep.poses.empty()) {
-    if (!svg_.empty()) write_file_atomically(svg_, jansen_pose_svg(sweep, 0));
-    if (!animate_.empty()) write_file_atomically(animate_, jansen_animation_svg(sweep, 4.0));
-    if (!beest_.empty()) write_file_atomically(beest_, beest_svg(sweep, beest_seconds_));
+  std::optional<mechanisms::JansenSweep> swept;
+  try {
+    swept = mechanisms::crank_sweep(model, *solver, range.start, range.stop, range.step, {},
+                                    common.trace ? &tracer : nullptr);
+  } catch (const StoppedByUser&) {
+    nlohmann::ordered_json attempts = nlohmann::ordered_json::array();
+    for (const auto& attempt : tracer.attempts()) attempts.push_back(attempt_json(attempt));
+    return report_stopped(common, {{"mechanism", name_}, {"solver", solver_}}, attempts);
   }
-  if (common_.format == Format::json) {
-    std::cout << json_of(name_, solver_, model, sweep, common_.trace ? &tracer : nullptr, time_s).dump(2) << '\n';
-  } else if (common_.format == Format::csv) {
+  const mechanisms::JansenSweep& sweep = *swept;
+  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
+                        (paused_seconds() - paused_before);
+
+  // 3. Files, then the report.
+  if (!sweep.poses.empty()) {
+    if (!svg.empty()) write_file_atomically(svg, jansen_pose_svg(sweep, 0));
+    if (!animate.empty()) write_file_atomically(animate, jansen_animation_svg(sweep, 4.0));
+    if (!beest.empty()) write_file_atomically(beest, beest_svg(sweep, beest_seconds_));
+  }
+  if (common.format == Format::json) {
+    std::cout << json_of(name_, solver_, model, sweep, common.trace ? &tracer : nullptr, time_s).dump(2) << '\n';
+  } else if (common.format == Format::csv) {
     print_csv(std::cout, model, sweep);
   } else {
     print_text(std::cout, name_, solver_, model, sweep, time_s);

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -186,15 +187,22 @@ int run_mustang(const MustangRequest& request) {
   options.residual_tolerance = request.common.tolerance.value_or(1e-12);
   options.max_iterations = request.common.max_iterations.value_or(50);
   const auto solver = mechanisms::make_mustang_solver(request.solver, request.linear, options);
-  // --trace keeps every attempt (printed as a table afterwards, or in the JSON); --step also
-  // prints each attempt as it happens and pauses after it.
-  const bool text = request.common.format != Format::json;
-  Tracer tracer(request.common.step && text ? &std::cerr : nullptr, request.common.step);
-  const bool observed = request.common.trace || request.common.step;
+  // --trace keeps every attempt (printed as a table afterwards on stderr, or in the JSON); --step
+  // also prints each attempt as it happens and pauses after it. The time leaves out the pauses.
+  const CommonOptions& common = request.common;
+  Tracer tracer(common.step ? &std::cerr : nullptr, common.step);
+  const double paused_before = paused_seconds();
   const auto begin = std::chrono::steady_clock::now();
-  const MustangSweep sweep =
-      mechanisms::mustang_sweep(*solver, request.start, request.stop, request.step, {}, observed ? &tracer : nullptr);
-  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  std::optional<MustangSweep> swept;
+  try {
+    swept = mechanisms::mustang_sweep(*solver, request.start, request.stop, request.step, {},
+                                      common.trace ? &tracer : nullptr);
+  } catch (const StoppedByUser&) {
+    return report_stopped(common, {{"mechanism", "mustang"}, {"solver", request.solver}}, trace_json(tracer.attempts()));
+  }
+  const MustangSweep& sweep = *swept;
+  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
+                        (paused_seconds() - paused_before);
 
   if (!sweep.poses.empty()) {
     if (!request.svg.empty()) write_file_atomically(request.svg, mustang_pose_svg(sweep, 0));
@@ -203,7 +211,7 @@ int run_mustang(const MustangRequest& request) {
   if (request.common.format == Format::json) {
     std::cout << json_of(request, sweep, tracer, time_s).dump(2) << '\n';
   } else {
-    if (request.common.trace) print_trace(std::cerr, tracer.attempts());
+    if (request.common.trace && !request.common.step) print_trace(std::cerr, tracer.attempts());
     if (request.common.format == Format::csv) {
       print_csv(std::cout, sweep);
     } else {

@@ -203,27 +203,48 @@ SolveLinearCommand::SolveLinearCommand(CLI::App& solve) {
 }
 
 int SolveLinearCommand::run() const {
+  // 1. Every flag checked against the method before any work (docs/cli.md, "Which flags apply where").
+  const CommonOptions common = checked_common_options(common_, "solve linear");
+  const bool elimination = method_.starts_with("gepp"), iterative = method_.starts_with("gauss-seidel");
+  const std::string hand_written = "the hand-written methods (gepp, gepp-no-pivot, gauss-seidel, gauss-seidel-plain)";
+  require_applies(given(common, "--trace"), elimination || iterative, "--trace", hand_written);
+  require_applies(given(common, "--step"), elimination || iterative, "--step", hand_written);
+  require_applies(given(common, "--tol"), elimination || iterative, "--tol", hand_written);
+  require_applies(given(common, "--max-iter"), iterative, "--max-iter", "gauss-seidel and gauss-seidel-plain");
+  require_applies(given(*command_, "--seed"), !generate_.empty(), "--seed", "--generate");
   if (generate_.empty() && matrix_file_.empty()) throw std::invalid_argument("give --generate KIND:N or --matrix FILE");
   const LoadedSystem system = generate_.empty() ? file_system(matrix_file_, rhs_file_) : generated_system(generate_, seed_);
 
-  // Text traces go to stderr as the solve runs; JSON traces are collected for the "trace" array.
-  std::ostream* trace_stream = common_.trace && common_.format == Format::text ? &std::cerr : nullptr;
-  EliminationTracer elimination_tracer(trace_stream, common_.step);
-  SweepTracer sweep_tracer(trace_stream, common_.step);
+  // 2. Solve, traced: text and CSV traces go to stderr as the solve runs; JSON traces are collected
+  // for the "trace" array (and shown on stderr too with --step). The time leaves out the pauses.
+  // With --step the steps are shown on stderr in every format, so that each pause follows one.
+  std::ostream* trace_stream = common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr;
+  EliminationTracer elimination_tracer(trace_stream, common.step);
+  SweepTracer sweep_tracer(trace_stream, common.step);
   LinearTracers tracers;
-  if (common_.trace) tracers = {&elimination_tracer, &sweep_tracer};
+  if (common.trace) tracers = {&elimination_tracer, &sweep_tracer};
+  const auto& records = [&]() -> const nlohmann::ordered_json& {
+    return iterative ? sweep_tracer.records() : elimination_tracer.records();
+  };
 
-  const LinearSettings settings{common_.tolerance, common_.max_iterations};
+  const LinearSettings settings{common.tolerance, common.max_iterations};
+  const double paused_before = paused_seconds();
   const auto begin = std::chrono::steady_clock::now();
-  const DynamicResult result = run_linear_method(method_, system.A, system.b, settings, tracers);
-  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  DynamicResult result;
+  try {
+    result = run_linear_method(method_, system.A, system.b, settings, tracers);
+  } catch (const StoppedByUser&) {
+    return report_stopped(common, {{"method", method_}, {"n", system.A.rows()}}, records());
+  }
+  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
+                        (paused_seconds() - paused_before);
 
   const SolveReport report = measure(method_, system, result, time_s);
-  if (common_.format == Format::json) {
+  if (common.format == Format::json) {
     nlohmann::ordered_json out = json_report(report);
-    if (common_.trace) out["trace"] = report.iterative ? sweep_tracer.records() : elimination_tracer.records();
+    if (common.trace) out["trace"] = records();
     std::cout << out.dump(2) << '\n';
-  } else if (common_.format == Format::csv) {
+  } else if (common.format == Format::csv) {
     print_csv_report(std::cout, report);
   } else {
     print_text_report(std::cout, report);

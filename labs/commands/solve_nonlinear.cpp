@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "cli/argument_parsing.hpp"
@@ -40,12 +41,16 @@ SolveNonlinearCommand::SolveNonlinearCommand(CLI::App& solve) {
       ->check(CLI::IsMember(nonlinear::newton_linear_methods()));
   command_->add_flag("--damped", damped_, "Backtracking on ||f||^2 (newton only; off by default)");
   command_->add_option("--step-tol", step_tolerance_, "Relative step tolerance (default 1e-12)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_non_negative());
   add_common_options(*command_, common_);
 }
 
 int SolveNonlinearCommand::run() const {
-  if (damped_ && method_ != "newton") throw std::invalid_argument("--damped applies to --method newton only");
+  // 1. Every flag checked against the method before any work (docs/cli.md, "Which flags apply where").
+  const CommonOptions common = checked_common_options(common_, "solve nonlinear");
+  const bool is_newton = method_ == "newton";
+  require_applies(damped_, is_newton, "--damped", "--method newton (GSL's types take no damping)");
+  require_applies(given(*command_, "--linear"), is_newton, "--linear", "--method newton");
   const nonlinear::TestProblem problem = nonlinear::make_test_problem(problem_);
   const int n = problem.system->dimension();
   const Eigen::VectorXd x0 = x0_.empty() ? problem.standard_start : parse_point(x0_, n, "--x0");
@@ -53,20 +58,28 @@ int SolveNonlinearCommand::run() const {
   NonlinearSettings settings;
   settings.linear = nonlinear::linear_method_named(linear_);
   settings.options.damped = damped_;
-  if (common_.tolerance) settings.options.residual_tolerance = *common_.tolerance;
-  if (common_.max_iterations) settings.options.max_iterations = *common_.max_iterations;
+  if (common.tolerance) settings.options.residual_tolerance = *common.tolerance;
+  if (common.max_iterations) settings.options.max_iterations = *common.max_iterations;
   if (step_tolerance_) settings.options.step_tolerance = *step_tolerance_;
 
-  const bool text = common_.format == Format::text;
-  NewtonTracer tracer(common_.trace && text ? &std::cerr : nullptr, common_.step);
+  // 2. Solve, traced: text and CSV traces go to stderr (JSON's too with --step, so that each pause
+  // follows a shown step); the time leaves out the pauses.
+  NewtonTracer tracer(common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr, common.step);
+  const double paused_before = paused_seconds();
   const auto begin = std::chrono::steady_clock::now();
-  const NonlinearRun run = run_nonlinear_method(method_, *problem.system, x0, settings, common_.trace ? &tracer : nullptr);
-  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  std::optional<NonlinearRun> solved;
+  try {
+    solved = run_nonlinear_method(method_, *problem.system, x0, settings, common.trace ? &tracer : nullptr);
+  } catch (const StoppedByUser&) {
+    return report_stopped(common, {{"problem", problem_}, {"method", method_}}, tracer.records());
+  }
+  const NonlinearRun& run = *solved;
+  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
+                        (paused_seconds() - paused_before);
   const double distance = problem.known_root ? (run.x - *problem.known_root).lpNorm<Eigen::Infinity>()
                                              : std::numeric_limits<double>::quiet_NaN();
-  const bool is_newton = method_ == "newton";
 
-  if (common_.format == Format::json) {
+  if (common.format == Format::json) {
     nlohmann::ordered_json out = {{"problem", problem_},
                                   {"method", method_},
                                   {"x", nlohmann::ordered_json::array()},
@@ -84,9 +97,9 @@ int SolveNonlinearCommand::run() const {
     out["step_inf"] = number_or_null(run.step_norm);
     if (problem.known_root) out["distance_to_root"] = number_or_null(distance);
     out["termination"] = run.termination;
-    if (common_.trace) out["trace"] = tracer.records();
+    if (common.trace) out["trace"] = tracer.records();
     std::cout << out.dump(2) << '\n';
-  } else if (common_.format == Format::csv) {
+  } else if (common.format == Format::csv) {
     std::cout << "problem,method,status,iterations,residual_inf,function_evaluations,jacobian_evaluations,time_s";
     for (int i = 0; i < n; ++i) std::cout << ",x" << i + 1;
     std::cout << '\n'

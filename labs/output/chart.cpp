@@ -1,5 +1,6 @@
 #include "output/chart.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -14,9 +15,17 @@ ChartFiles chart_files(const std::string& chart_path) {
   if (extension != ".svg" && extension != ".png") {
     throw std::invalid_argument("--chart '" + chart_path + "': the file name must end in .svg or .png");
   }
-  std::filesystem::path stem = path;
-  stem.replace_extension();
-  return {chart_path, stem.string() + ".csv", stem.string() + ".gp"};
+  // The paths go into a gnuplot script between single quotes and into a shell command.
+  if (std::any_of(chart_path.begin(), chart_path.end(), [](unsigned char c) { return c == '\'' || c < 0x20 || c == 0x7f; })) {
+    throw std::invalid_argument("--chart '" + chart_path + "': the file name must not contain quotes or control characters");
+  }
+  // The companions keep the chart's whole name, so they cannot take the name of a data file
+  // beside it (mydata.svg's data is mydata.svg.data.csv, never mydata.csv).
+  return {chart_path, chart_path + ".data.csv", chart_path + ".gp"};
+}
+
+std::vector<PlannedFile> planned_files(const ChartFiles& files, const std::string& flag) {
+  return {{files.chart, flag}, {files.data, flag + " (its data)"}, {files.script, flag + " (its gnuplot script)"}};
 }
 
 std::string gnuplot_output_lines(const ChartFiles& files, int width, int height) {

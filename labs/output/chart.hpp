@@ -3,17 +3,24 @@
 // and the script, change them, and redraw by hand with `gnuplot FILE.gp`.
 
 #include <string>
+#include <vector>
+
+#include "cli/cli_common.hpp"
 
 namespace numlab::cli {
 
 struct ChartFiles {
   std::string chart;   // FILE.svg or FILE.png
-  std::string data;    // FILE.csv, beside the chart
-  std::string script;  // FILE.gp, beside the chart
+  std::string data;    // FILE.svg.data.csv, beside the chart
+  std::string script;  // FILE.svg.gp, beside the chart
 };
 
-// The data and script paths beside a chart path; throws std::invalid_argument unless it ends in .svg or .png.
+// The data and script paths beside a chart path; throws std::invalid_argument unless it ends in
+// .svg or .png, or when it holds a quote or a control character.
 ChartFiles chart_files(const std::string& chart_path);
+
+// The chart and its two companions, for check_outputs(); `flag` names who asked for them.
+std::vector<PlannedFile> planned_files(const ChartFiles& files, const std::string& flag);
 
 // The gnuplot `set terminal ...; set output ...` lines for the chart's extension (900x600 by default).
 std::string gnuplot_output_lines(const ChartFiles& files, int width = 900, int height = 600);

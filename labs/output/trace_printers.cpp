@@ -50,30 +50,25 @@ void EliminationTracer::on_step(const linalg::GaussElimination<Eigen::Dynamic>& 
                                 const linalg::EliminationRecord& record) {
   const bool show_matrix = record.event != linalg::EliminationEvent::back_substitution &&
                            state.size() <= max_traced_matrix_size;
-  if (text_out_ == nullptr) {
-    static const char* names[] = {"row_swap", "elimination", "back_substitution"};
-    nlohmann::ordered_json entry = {{"event", names[static_cast<int>(record.event)]}, {"column", record.column + 1}};
-    if (record.event == linalg::EliminationEvent::row_swap) entry["swapped_with_row"] = record.other_row + 1;
-    if (record.event == linalg::EliminationEvent::back_substitution) {
-      entry["value"] = record.value;
-    } else {
-      entry["pivot"] = record.value;
-    }
-    if (show_matrix) entry["augmented"] = rows_of(state.reduced_matrix(), state.reduced_rhs());
-    records_.push_back(entry);
-    return;
+  static const char* names[] = {"row_swap", "elimination", "back_substitution"};
+  nlohmann::ordered_json entry = {{"event", names[static_cast<int>(record.event)]}, {"column", record.column + 1}};
+  if (record.event == linalg::EliminationEvent::row_swap) entry["swapped_with_row"] = record.other_row + 1;
+  if (record.event == linalg::EliminationEvent::back_substitution) {
+    entry["value"] = record.value;
+  } else {
+    entry["pivot"] = record.value;
   }
+  if (show_matrix) entry["augmented"] = rows_of(state.reduced_matrix(), state.reduced_rhs());
+  records_.push_back(entry);
+  if (text_out_ == nullptr) return;
   *text_out_ << describe(record, record.column + 1 == state.size()) << '\n';
   if (show_matrix) print_augmented(*text_out_, state.reduced_matrix(), state.reduced_rhs());
   pause_if_stepping(step_);
 }
 
 void SweepTracer::on_step(const linalg::GaussSeidel<Eigen::Dynamic>&, const linalg::SweepRecord& record) {
-  if (text_out_ == nullptr) {
-    records_.push_back(
-        {{"sweep", record.sweep}, {"step_inf", record.step_norm}, {"residual_inf", record.residual_norm}});
-    return;
-  }
+  records_.push_back({{"sweep", record.sweep}, {"step_inf", record.step_norm}, {"residual_inf", record.residual_norm}});
+  if (text_out_ == nullptr) return;
   if (!header_printed_) {
     *text_out_ << fmt::format("  {:>6}  {:>12}  {:>16}\n", "sweep", "||dx||_inf", "||b - A x||_inf");
     header_printed_ = true;
@@ -85,22 +80,20 @@ void SweepTracer::on_step(const linalg::GaussSeidel<Eigen::Dynamic>&, const lina
 void NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
   const bool has_linear_solve = record.linear_iterations != nonlinear::NewtonRecord::no_linear_solve;
   const bool sequential = block >= 0;
-  if (text_out_ == nullptr) {
-    nlohmann::ordered_json entry = nlohmann::ordered_json::object();
-    if (sequential) entry["block"] = block + 1;
-    entry["iteration"] = record.iteration;
-    entry["residual_inf"] = record.residual_norm;
-    entry["residual_2"] = record.residual_2norm;
-    entry["step_inf"] = record.step_norm;
-    if (has_linear_solve) {
-      entry["linear_status"] = std::string(to_string(record.linear_status));
-      entry["linear_iterations"] = record.linear_iterations;
-    }
-    entry["damping"] = record.damping;
-    entry["time_s"] = record.elapsed_s;
-    records_.push_back(entry);
-    return;
+  nlohmann::ordered_json entry = nlohmann::ordered_json::object();
+  if (sequential) entry["block"] = block + 1;
+  entry["iteration"] = record.iteration;
+  entry["residual_inf"] = record.residual_norm;
+  entry["residual_2"] = record.residual_2norm;
+  entry["step_inf"] = record.step_norm;
+  if (has_linear_solve) {
+    entry["linear_status"] = std::string(to_string(record.linear_status));
+    entry["linear_iterations"] = record.linear_iterations;
   }
+  entry["damping"] = record.damping;
+  entry["time_s"] = record.elapsed_s - paused_since_start();
+  records_.push_back(entry);
+  if (text_out_ == nullptr) return;
   if (!header_printed_) {
     if (sequential) *text_out_ << fmt::format("  {:>5}", "block");
     *text_out_ << fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>9}  {:>7}  {:>10}\n", "k", "||f||_inf",
@@ -112,7 +105,7 @@ void NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
                             record.iteration, record.residual_norm, record.residual_2norm, record.step_norm,
                             has_linear_solve ? std::string(to_string(record.linear_status)) : "-",
                             has_linear_solve ? std::to_string(record.linear_iterations) : "-", record.damping,
-                            record.elapsed_s);
+                            record.elapsed_s - paused_since_start());
   pause_if_stepping(step_);
 }
 

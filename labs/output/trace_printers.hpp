@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "cli/cli_common.hpp"
+
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
@@ -15,14 +17,17 @@
 
 namespace numlab::cli {
 
-// What every tracer holds: where text goes (nullptr: collect JSON records instead), whether to
-// pause after each record (--step), and the records collected.
+// What every tracer holds: the records collected (for JSON's "trace"), where text goes as each
+// record comes (nullptr: nowhere), and whether to pause after each printed record (--step).
 class TraceOutput {
  public:
   TraceOutput(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
   const nlohmann::ordered_json& records() const { return records_; }
 
  protected:
+  // Seconds paused at --step since this tracer was made: taken off the times it prints.
+  double paused_since_start() const { return paused_seconds() - paused_at_start_; }
+  double paused_at_start_ = paused_seconds();
   std::ostream* text_out_;
   bool step_;
   bool header_printed_ = false;

@@ -116,7 +116,7 @@ TEST_CASE("numlab fit --chart draws the data with the curve, and writes its CSV 
   const auto run = run_numlab("fit --data " + nist + "/Pontius.dat --degree 2 --method normal-scaled --chart " + folder +
                               "/pontius.svg");
   CHECK(run.exit_code == 0);
-  for (const char* file : {"/pontius.svg", "/pontius.csv", "/pontius.gp"}) CHECK(std::filesystem::exists(folder + file));
+  for (const char* file : {"/pontius.svg", "/pontius.svg.data.csv", "/pontius.svg.gp"}) CHECK(std::filesystem::exists(folder + file));
   std::ifstream svg(folder + "/pontius.svg");
   const std::string contents((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
   CHECK_THAT(contents, Contains("<svg") && Contains("degree-2 fit"));

@@ -129,7 +129,7 @@ TEST_CASE("The jansen-sequential lab draws Figure 4 and the beest lab draws four
   const auto sequential = run_numlab("lab jansen-sequential --out " + folder);
   CHECK(sequential.exit_code == 0);
   CHECK(std::filesystem::file_size(folder + "/lab-jansen-sequential/figure4.svg") > 1000);
-  CHECK(std::filesystem::exists(folder + "/lab-jansen-sequential/figure4.gp"));
+  CHECK(std::filesystem::exists(folder + "/lab-jansen-sequential/figure4.svg.gp"));
   check_report(folder + "/lab-jansen-sequential", sequential.out);
   const auto beest = run_numlab("lab beest --out " + folder);
   CHECK(beest.exit_code == 0);
@@ -161,8 +161,8 @@ TEST_CASE("numlab bench linear: JSON rows, a chart, and its data and script besi
   CHECK(solvers == std::set<std::string>{"gepp", "gsl-lu", "eigen-lu", "gauss-seidel", "gauss-seidel-plain"});
   CHECK(out["rows"].size() == 15);
   CHECK(std::filesystem::file_size(folder + "/linear.svg") > 1000);
-  CHECK(std::filesystem::exists(folder + "/linear.csv"));
-  CHECK(std::filesystem::exists(folder + "/linear.gp"));
+  CHECK(std::filesystem::exists(folder + "/linear.svg.data.csv"));
+  CHECK(std::filesystem::exists(folder + "/linear.svg.gp"));
   std::filesystem::remove_all(folder);
 
   const auto bad_chart = run_numlab("bench linear --quick --sizes 2 --chart chart.pdf");
@@ -250,8 +250,8 @@ TEST_CASE("numlab bench fit: every method at degrees 1 .. 12 on Wampler4, digits
   CHECK(out["benchmark"] == "fit");
   REQUIRE(out["rows"].size() == 48);  // 4 methods x 12 degrees
   CHECK(std::filesystem::exists(folder + "/bench-fit.svg"));
-  CHECK(std::filesystem::exists(folder + "/bench-fit.csv"));
-  CHECK(std::filesystem::exists(folder + "/bench-fit.gp"));
+  CHECK(std::filesystem::exists(folder + "/bench-fit.svg.data.csv"));
+  CHECK(std::filesystem::exists(folder + "/bench-fit.svg.gp"));
   for (const auto& row : out["rows"]) {
     const std::string method = row["solver"];
     const int degree = row["degree"];

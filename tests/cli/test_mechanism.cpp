@@ -63,7 +63,7 @@ TEST_CASE("mechanism: bad input gets one error line and exit 2", "[cli][mechanis
   require_bad_input("mechanism jansen --sweep 0:x:1", "'x' is not a finite number");
   require_bad_input("mechanism jansen --crank 10 --sweep 0:10:1", "excludes");
   require_bad_input("mechanism jansen --crank 10 --solver bisection", "--solver");
-  require_bad_input("mechanism jansen --crank 10 --tol -1", "non-negative");
+  require_bad_input("mechanism jansen --crank 10 --tol -1", "--tol: must be a finite number >= 0");
   require_bad_input("mechanism mustang --crank 45 --beest b.svg", "--beest");
   require_bad_input("mechanism mustang --sweep 0:10:-1", "point from START to STOP");
 }

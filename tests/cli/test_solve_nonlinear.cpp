@@ -93,10 +93,10 @@ TEST_CASE("solve nonlinear: bad input gets one error line and exit 2", "[cli][no
   require_bad_input("--problem wood --method newton --x0 1,2,3", "has 3 numbers but the problem has 4 unknowns");
   require_bad_input("--problem rosenbrock --method newton --x0 1,abc", "'abc' is not a finite number");
   require_bad_input("--problem rosenbrock --method newton --x0 1,nan", "'nan' is not a finite number");
-  require_bad_input("--problem rosenbrock --method newton --tol -1", "non-negative");
+  require_bad_input("--problem rosenbrock --method newton --tol -1", "--tol: must be a finite number >= 0");
   require_bad_input("--problem wood --method newton --linear inverse2x2", "inverse2x2 needs a 2x2");
   // GSL's types do their own step control: --damped would be silently ignored, so it is refused.
-  require_bad_input("--problem rosenbrock --method gsl-newton --damped", "--damped applies to --method newton only");
+  require_bad_input("--problem rosenbrock --method gsl-newton --damped", "--damped applies only to --method newton");
   require_bad_input("--problem wood --method gsl-hybridsj --damped --format json",
-                    "--damped applies to --method newton only");
+                    "--damped applies only to --method newton");
 }
