@@ -174,6 +174,8 @@ void PolynomialFitter::solve_system() {
     fit_.condition_estimate = reference.condition_estimate;
     fit_.condition_unscaled = reference.condition_unscaled;
     fit_.condition_of = gsl ? "column-scaled Vandermonde matrix (GSL's SVD)" : "Vandermonde matrix V";
+    fit_.condition_measure = gsl ? "1/rcond of GSL's SVD, columns balanced by powers of two"
+                                 : "kappa_2, columns scaled to unit 2-norm";
     if (!reference.coefficients.allFinite()) {
       fit_.status = Status::non_finite;
       coefficients_.resize(0);
@@ -192,6 +194,7 @@ void PolynomialFitter::solve_system() {
   fit_.condition_estimate = equilibrated_condition(system_.matrix);
   fit_.condition_unscaled = linalg::condition_estimate(system_.matrix);
   fit_.condition_of = scaled ? "normal matrix of the scaled variable t" : "normal matrix V^T V";
+  fit_.condition_measure = "kappa_1 estimate, rows and columns scaled to a unit diagonal";
   const std::string failure = failure_warning(solved);
   coefficients_ = solved.x;
   if (solved.status == Status::singular || solved.status == Status::non_finite || !solved.x.allFinite()) {

@@ -84,6 +84,7 @@ nlohmann::ordered_json json_report(const FitRun& run) {
       {"condition_estimate", number_or_null(fit.condition_estimate)},
       {"condition_unscaled", number_or_null(fit.condition_unscaled)},
       {"condition_of", fit.condition_of},
+      {"condition_measure", fit.condition_measure},
       {"warning", fit.warning.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(fit.warning)},
       {"time_s", run.time_s}};
   if (run.certified) {
@@ -121,8 +122,8 @@ void print_text(std::ostream& out, const FitRun& run) {
                      run.options.solver == fitting::NormalSolver::gauss_seidel && uses_normal_equations(fit.method)
                          ? "sweeps" : "steps",
                      run.time_s);
-  out << fmt::format("condition of the {}: {:.3g} with unit-size columns ({:.3g} as it stands)\n", fit.condition_of,
-                     fit.condition_estimate, fit.condition_unscaled);
+  out << fmt::format("condition of the {}: {:.3g} ({}; {:.3g} as it stands)\n", fit.condition_of,
+                     fit.condition_estimate, fit.condition_measure, fit.condition_unscaled);
   if (!fit.warning.empty()) out << "WARNING: " << fit.warning << '\n';
   if (fit.coefficients.size() == 0) {
     out << "no coefficients.\n";

@@ -71,10 +71,14 @@ nlohmann::ordered_json json_of(const std::string& name, const std::string& solve
                             {"foot_speed", number_or_null(foot_speed(model, pose))},
                             {"iterations", pose.outcome.iterations},
                             {"residual_inf", pose.outcome.residual_norm},
-                            {"status", std::string(to_string(pose.outcome.status))}});
+                            {"status", std::string(to_string(pose.outcome.status))},
+                            {"closed_form_distance", number_or_null(pose.closed_form_distance)},
+                            {"closed_form_bound", number_or_null(pose.closed_form_bound)}});
   }
   out["status"] = std::string(to_string(sweep.status));
   out["worst_closed_form_distance"] = number_or_null(sweep.worst_closed_form_distance);
+  out["worst_closed_form_bound"] = number_or_null(sweep.worst_closed_form_bound);
+  out["closed_form_verified"] = sweep.closed_form_verified;
   out["worst_length_error"] = number_or_null(sweep.worst_length_error);
   out["branch_kept"] = sweep.orientation_kept;
   out["step_halvings"] = sweep.step_halvings;
@@ -84,6 +88,13 @@ nlohmann::ordered_json json_of(const std::string& name, const std::string& solve
     for (const auto& attempt : tracer->attempts()) out["trace"].push_back(attempt_json(attempt));
   }
   return out;
+}
+
+// The branch check in words: kept, flipped, or not verified when a pose is farther from the closed
+// form than its residual and conditioning justify (mechanisms/closed_form_bound.hpp).
+std::string branch_verdict(const mechanisms::JansenSweep& sweep) {
+  if (!sweep.closed_form_verified) return "NOT VERIFIED (a pose is beyond its closed-form bound)";
+  return sweep.orientation_kept ? "kept" : "FLIPPED";
 }
 
 void print_text(std::ostream& out, const std::string& name, const std::string& solver, JansenModel model,
@@ -107,10 +118,10 @@ void print_text(std::ostream& out, const std::string& name, const std::string& s
                    std::string(to_string(pose.outcome.status))});
   }
   table.print(out);
-  out << fmt::format("checks             worst joint distance from the closed form {:.2g}; worst link-length "
-                     "error {:.2g}; branch {}\n",
-                     sweep.worst_closed_form_distance, sweep.worst_length_error,
-                     sweep.orientation_kept ? "kept" : "FLIPPED")
+  out << fmt::format("checks             worst joint distance from the closed form {:.2g} (bound {:.2g}); worst "
+                     "link-length error {:.2g}; branch {}\n",
+                     sweep.worst_closed_form_distance, sweep.worst_closed_form_bound, sweep.worst_length_error,
+                     branch_verdict(sweep))
       << fmt::format("time               {:.3g} s\n", time_s)
       << "foot speed is |dF/d theta_i|: length units per radian of crank\n";
 }

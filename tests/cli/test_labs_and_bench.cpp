@@ -71,8 +71,9 @@ TEST_CASE("numlab labs lists the labs", "[cli][labs]") {
                           Contains("fit"));
 }
 
-TEST_CASE("Each lab runs its steps with --step without blocking, and ends with the GSL comparison", "[cli][labs]") {
-  // Each lab's table that compares hand-written methods with GSL, and that table's header.
+TEST_CASE("Each lab runs its steps with --step without blocking, and saves its comparison table", "[cli][labs]") {
+  // Each lab's table that compares its methods (with GSL's where GSL has the method; jansen-sequential
+  // compares models and solvers), and that table's header.
   const std::map<std::string, std::pair<std::string, std::string>> comparisons = {
       {"gauss", {"step5-comparison.csv", "method,status,x_1,x_n,relative residual,forward error,time (median)"}},
       {"seidel", {"step4-comparison.csv", "method,status,x_1,x_n,relative residual,forward error,time (median)"}},
@@ -90,7 +91,7 @@ TEST_CASE("Each lab runs its steps with --step without blocking, and ends with t
     INFO(lab << "\n" << run.err);
     CHECK(run.exit_code == 0);
     CHECK_THAT(run.out, Contains("Step 1:") && Contains("Step 3:"));
-    // Every table is also saved as CSV, the GSL comparison among them.
+    // Every table is also saved as CSV, the comparison among them.
     const std::string saved = folder + "/lab-" + lab + "/" + comparison.first;
     std::ifstream csv(saved);
     REQUIRE(csv.good());

@@ -91,7 +91,7 @@ ProgramRun run_at_terminal(const std::string& typed_script, const std::string& a
 
 }  // namespace
 
-TEST_CASE("--tol: a finite number >= 0, for every sub-command that takes it; never an abort", "[cli][options]") {
+TEST_CASE("Option --tol: a finite number >= 0, for every sub-command that takes it; never an abort", "[cli][options]") {
   for (const std::string& command : commands_with_tol) {
     for (const std::string value : {"abc", "1e400", "-1e400", "inf", "-inf", "nan", "-1", "''", "1e-3x", "0x1p-3"}) {
       require_rejected_writing_nothing(command + " --tol " + value, "--tol: must be a finite number >= 0");
@@ -103,7 +103,7 @@ TEST_CASE("--tol: a finite number >= 0, for every sub-command that takes it; nev
   CHECK(run_numlab("solve nonlinear --problem rosenbrock --method newton --tol 0").exit_code != 2);
 }
 
-TEST_CASE("--max-iter: a whole number from 1 to 1e8, said in one short line", "[cli][options]") {
+TEST_CASE("Option --max-iter: a whole number from 1 to 1e8, said in one short line", "[cli][options]") {
   for (const std::string value : {"0", "-3", "1.5", "1e3", "abc", "100000001", "99999999999999999999", "''"}) {
     const ProgramRun run = run_numlab("solve nonlinear --problem rosenbrock --method newton --max-iter " + value);
     INFO(value << ": " << run.err);
@@ -115,7 +115,7 @@ TEST_CASE("--max-iter: a whole number from 1 to 1e8, said in one short line", "[
   CHECK(run_numlab("solve nonlinear --problem rosenbrock --method newton --max-iter 1").exit_code == 1);
 }
 
-TEST_CASE("--format: exactly text, json or csv (any case), no CLI11 internals", "[cli][options]") {
+TEST_CASE("Option --format: exactly text, json or csv (any case), no CLI11 internals", "[cli][options]") {
   for (const std::string value : {"xml", "1", "0", "''", "jsonx"}) {
     const ProgramRun run = run_numlab("solve linear --method gepp --generate random:3 --format " + value);
     INFO(value << ": " << run.err);
@@ -173,7 +173,7 @@ TEST_CASE("A shared flag a sub-command does not honour is rejected, naming where
                                    "--seed applies only to --generate");
 }
 
-TEST_CASE("--trace goes to stderr under --format csv; stdout stays CSV", "[cli][options][trace]") {
+TEST_CASE("Option --trace goes to stderr under --format csv; stdout stays CSV", "[cli][options][trace]") {
   const ProgramRun nonlinear = run_numlab("solve nonlinear --problem wood --method newton --trace --format csv");
   CHECK(nonlinear.exit_code == 0);
   CHECK(nonlinear.out.starts_with("problem,method,status,"));
@@ -191,7 +191,7 @@ TEST_CASE("--trace goes to stderr under --format csv; stdout stays CSV", "[cli][
   CHECK_THAT(mustang.err, Contains("kappa(J)"));
 }
 
-TEST_CASE("--step implies --trace; without a terminal it never pauses and says so once", "[cli][options][step]") {
+TEST_CASE("Option --step implies --trace; without a terminal it never pauses and says so once", "[cli][options][step]") {
   for (const std::string arguments : {"solve nonlinear --problem wood --method newton --step --format json",
                                       "solve linear --method gauss-seidel --generate diag-dominant:4 --step --format json",
                                       "mechanism jansen --sweep 0:10:5 --step --format json",

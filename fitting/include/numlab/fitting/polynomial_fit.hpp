@@ -57,6 +57,7 @@ struct PolynomialFit {
   double condition_estimate = 0.0;
   double condition_unscaled = 0.0;
   std::string condition_of;               // which matrix that is, in words
+  std::string condition_measure;          // how condition_estimate was measured and scaled, in words
   std::string warning;                    // empty, or why the coefficients cannot be trusted
 };
 
