@@ -65,7 +65,7 @@ std::vector<std::string> run_case(const Case& row) {
 
   // 4. Its output, then the files it left.
   std::vector<std::string> failures = judge_run(row, run, limit, read_bytes(io / "out"), read_bytes(io / "err"));
-  for (const std::string& failure : judge_files(row, before, snapshot_tree(box.string()))) failures.push_back(failure);
+  for (const std::string& failure : judge_files(row, run.exit_code, before, snapshot_tree(box.string()))) failures.push_back(failure);
   for (const std::string& name : list_names(up.string())) {
     if (name != "box") failures.push_back("wrote '" + name + "' in the parent folder");
   }

@@ -72,7 +72,8 @@ void judge_error_line(const std::string& out, const std::string& err, std::vecto
   if (line.size() > 1000) failures.push_back("stderr line is " + std::to_string(line.size()) + " bytes long");
 }
 
-// The row's extra checks: json, status=S, out~T, out!~T, err~T, err!~T, short.
+// The row's extra checks on the output: json, status=S, out~T, out!~T, err~T, err!~T, short
+// (made=PATH is judged with the files).
 void judge_extra(const std::string& check, const std::string& out, const std::string& err,
                  std::vector<std::string>& failures) {
   const auto contains = [](const std::string& text, const std::string& part) {
@@ -149,7 +150,7 @@ std::vector<std::string> judge_run(const Case& row, const ChildResult& run, doub
   return failures;
 }
 
-std::vector<std::string> judge_files(const Case& row, const std::map<std::string, std::string>& before,
+std::vector<std::string> judge_files(const Case& row, int exit_code, const std::map<std::string, std::string>& before,
                                      const std::map<std::string, std::string>& after) {
   std::vector<std::string> failures;
   // 1. Every prepared file still there, unchanged.
@@ -169,6 +170,12 @@ std::vector<std::string> judge_files(const Case& row, const std::map<std::string
     const std::string parent = path.substr(0, path.rfind('/') == std::string::npos ? 0 : path.rfind('/'));
     if (parent.empty() || before.count(parent) != 0 || allowed(parent, row.writes)) {
       failures.push_back("wrote '" + shown(path) + (state == "dir" ? "/', not asked for" : "', not asked for"));
+    }
+  }
+  // 3. The files a success promises.
+  for (const std::string& check : row.checks) {
+    if (exit_code == 0 && check.starts_with("made=") && after.count(check.substr(5)) == 0) {
+      failures.push_back("exit 0 but '" + check.substr(5) + "' was not written");
     }
   }
   return failures;

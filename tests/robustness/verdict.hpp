@@ -16,8 +16,8 @@ std::vector<std::string> judge_run(const Case& row, const ChildResult& run, doub
                                    const std::string& err);
 
 // The case folder before and after: prepared files unchanged and still there, new entries only
-// where the row allows them, and no *.partial anywhere.
-std::vector<std::string> judge_files(const Case& row, const std::map<std::string, std::string>& before,
+// where the row allows them, no *.partial anywhere, and after exit 0 each made=PATH of the row there.
+std::vector<std::string> judge_files(const Case& row, int exit_code, const std::map<std::string, std::string>& before,
                                      const std::map<std::string, std::string>& after);
 
 }  // namespace numlab::robustness
