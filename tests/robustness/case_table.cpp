@@ -37,6 +37,15 @@ std::vector<int> parse_exit_codes(const std::string& field) {
   return codes;
 }
 
+// A misspelt check would never fail, so only these forms are accepted.
+bool known_check(const std::string& check) {
+  if (check == "json" || check == "short") return true;
+  for (const char* prefix : {"status=", "out~", "out!~", "err~", "err!~", "made="}) {
+    if (check.starts_with(prefix) && check.size() > std::string(prefix).size()) return true;
+  }
+  return false;
+}
+
 Case parse_row(const std::string& line, const std::string& nist_dir) {
   // 1. Seven tab-separated fields: id, exit, seconds, writes, checks, arguments, note.
   const std::vector<std::string> fields = split(line, '\t');
@@ -55,6 +64,9 @@ Case parse_row(const std::string& line, const std::string& nist_dir) {
   // 3. The allowed new files ("-": none) and the extra checks ("-": none).
   if (fields[3] != "-") row.writes = split(fields[3], ',');
   if (fields[4] != "-") row.checks = split(fields[4], ' ');
+  for (const std::string& check : row.checks) {
+    if (!known_check(check)) throw std::runtime_error("unknown check '" + check + "'");
+  }
   // 4. The arguments, one word per space, each decoded.
   for (const std::string& word : split(fields[5], ' ')) row.arguments.push_back(decode_word(word, nist_dir));
   row.note = fields[6];
