@@ -1,0 +1,161 @@
+#include "sandbox.hpp"
+
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace numlab::robustness {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string bom = "\xEF\xBB\xBF";
+const std::string csv_rows = "0,1\n1,3\n2,5\n3,7.1\n4,8.9\n";
+
+// Files every case finds in its folder, by name and contents.
+std::vector<std::pair<std::string, std::string>> text_inputs() {
+  return {
+      // Matrix files (docs/cli.md, solve linear --matrix).
+      {"a2.txt", "4 1\n1 3\n"},
+      {"aug3.txt", "4 1 0 5\n1 4 1 6\n0 1 4 5\n"},
+      {"rhs2.txt", "5\n4\n"},
+      {"rhs3.txt", "1\n2\n3\n"},
+      {"bom.txt", bom + "4 1\n1 3\n"},
+      {"crlf.txt", "4 1\r\n1 3\r\n"},
+      {"emptycell.txt", "1,,2\n3,4\n"},
+      {"escape.txt", "4 1\n1 \x1b]0;pwned\x07\n"},
+      {"csi.txt", "\x1b[2J\x1b[31m4 1\n1 3\n"},
+      {"carriage.txt", "4 1\n1 3x\rnumlab: fine\n"},
+      {"nul.txt", std::string("4 1\n1 3\0 9\n", 11)},
+      {"fullwidth.txt", "4 1\n1 \xEF\xBC\x93\n"},
+      {"nan.txt", "nan 1\n1 3\n"},
+      {"inf.txt", "inf 1\n1 3\n"},
+      {"overflow.txt", "1e400 1\n1 3\n"},
+      {"huge.txt", "1e300 0\n0 1e300\n"},
+      {"tiny.txt", "1e-320 0\n0 1e-320\n"},
+      {"singular.txt", "1 2\n2 4\n"},
+      {"nonsquare.txt", "1 2 3\n4 5 6\n7 8 9\n10 11 12\n"},
+      {"ragged.txt", "1 2\n3\n"},
+      {"empty.txt", ""},
+      {"comments.txt", "# only a comment\n"},
+      {"one.txt", "5\n"},
+      // CSV data sets (fit --data).
+      {"mydata.csv", "x,y\n" + csv_rows},
+      {"bom.csv", bom + "x,y\n" + csv_rows},
+      {"crlf.csv", "x,y\r\n0,1\r\n1,3\r\n2,5\r\n"},
+      {"nan.csv", "x,y\n0,1\n1,nan\n2,5\n3,7\n"},
+      {"inf.csv", "x,y\n0,1\n1,inf\n2,5\n3,7\n"},
+      {"text.csv", "x,y\n0,1\n1,abc\n2,5\n"},
+      {"escape.csv", "x,y\n0,1\n1,\x1b]0;pwned\x07\n"},
+      {"emptycell.csv", "x,y\n0,,1\n1,3\n2,5\n"},
+      {"nocols.csv", "a,b\n1,2\n3,4\n"},
+      {"header.csv", "x,y\n"},
+      {"samex.csv", "x,y\n1,1\n1,2\n1,3\n"},
+      {"bigx.csv", "x,y\n1e200,2.1\n2e200,2.9\n3e200,4.2\n4e200,4.8\n5e200,6.1\n6e200,7.0\n7e200,7.9\n"},
+      // Not a NIST file, though named like one.
+      {"noheader.dat", "hello\n"},
+  };
+}
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream contents;
+  contents << file.rdbuf();
+  return contents.str();
+}
+
+void write_bytes(const fs::path& path, const std::string& contents) {
+  std::ofstream file(path, std::ios::binary);
+  file << contents;
+  if (!file.flush()) throw std::runtime_error("cannot write " + path.string());
+}
+
+// Every byte value once, then the escape sequences that retitle or clear a terminal.
+std::string binary_garbage() {
+  std::string bytes;
+  for (int b = 0; b < 256; ++b) bytes += static_cast<char>(b);
+  return bytes + "\x1b]0;title\x07\x1b[2J\x1b[1;31m\r\n\xff\xfe";
+}
+
+// The first `keep` lines of a NIST file: its header still promises every row.
+std::string first_lines(const std::string& text, int keep) {
+  std::size_t end = 0;
+  for (int line = 0; line < keep && end < text.size(); ++line) {
+    const std::size_t newline = text.find('\n', end);
+    end = newline == std::string::npos ? text.size() : newline + 1;
+  }
+  return text.substr(0, end);
+}
+
+// One row of 200 000 numbers.
+std::string long_row() {
+  std::string row;
+  for (int i = 0; i < 200000; ++i) row += "1 ";
+  return row + "\n";
+}
+
+std::string hash_of(const std::string& bytes) {
+  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64 bits
+  for (const char c : bytes) {
+    hash ^= static_cast<unsigned char>(c);
+    hash *= 1099511628211ull;
+  }
+  return std::to_string(bytes.size()) + ":" + std::to_string(hash);
+}
+
+}  // namespace
+
+void prepare_inputs(const std::string& folder, const std::string& nist_dir) {
+  // 1. Small text inputs.
+  for (const auto& [name, contents] : text_inputs()) write_bytes(fs::path(folder) / name, contents);
+  // 2. Binary garbage and a very long row.
+  write_bytes(fs::path(folder) / "binary.bin", binary_garbage());
+  write_bytes(fs::path(folder) / "longrow.txt", long_row());
+  // 3. NIST data sets: Norris whole, and Norris cut to 15 of its 36 rows (data from line 61).
+  const std::string norris = read_bytes(fs::path(nist_dir) / "Norris.dat");
+  if (norris.empty()) throw std::runtime_error("cannot read Norris.dat in " + nist_dir);
+  write_bytes(fs::path(folder) / "Norris.dat", norris);
+  write_bytes(fs::path(folder) / "truncated.dat", first_lines(norris, 60 + 15));
+  // 4. A folder, a folder named like a chart, and a pipe nobody writes to.
+  fs::create_directory(fs::path(folder) / "adir");
+  fs::create_directory(fs::path(folder) / "svgdir.svg");
+  if (mkfifo((fs::path(folder) / "fifo").c_str(), 0600) != 0) throw std::runtime_error("mkfifo failed");
+}
+
+std::map<std::string, std::string> snapshot_tree(const std::string& folder) {
+  std::map<std::string, std::string> entries;
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(folder, error), end; it != end; it.increment(error)) {
+    if (error) break;
+    const std::string name = fs::relative(it->path(), folder).string();
+    const fs::file_status status = it->symlink_status();
+    if (fs::is_symlink(status)) {
+      entries[name] = "link -> " + fs::read_symlink(it->path()).string();
+    } else if (fs::is_directory(status)) {
+      entries[name] = "dir";
+    } else if (fs::is_regular_file(status)) {
+      entries[name] = hash_of(read_bytes(it->path()));
+    } else {
+      entries[name] = "other";
+    }
+  }
+  return entries;
+}
+
+std::set<std::string> list_names(const std::string& folder) {
+  std::set<std::string> names;
+  std::error_code error;
+  for (fs::directory_iterator it(folder, error), end; it != end; it.increment(error)) {
+    if (error) break;
+    names.insert(it->path().filename().string());
+  }
+  return names;
+}
+
+}  // namespace numlab::robustness
