@@ -2,7 +2,9 @@
 // Exit codes: 0 the method succeeded, 1 it ran but did not succeed, 2 bad usage or bad input.
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
+#include <string>
 #include <stdexcept>
 
 #include "bench/bench_linear.hpp"
@@ -23,9 +25,32 @@ int run_main_job() {
   return numlab::cli::run_lab("jansen", false, "out");
 }
 
-// Bad input: one line on stderr, whatever bytes the message quotes from outside.
+// A word (a run without spaces) longer than max_word bytes keeps its first bytes and says how long
+// it was, so that a 100 kB argument quoted in a message still gives a short line. Cuts at a
+// character boundary: the text is printable() output, so whole UTF-8 characters.
+std::string shorten_long_words(const std::string& text, std::size_t max_word = 80) {
+  std::string shortened;
+  std::size_t position = 0;
+  while (position < text.size()) {
+    const std::size_t space = std::min(text.find(' ', position), text.size());
+    const std::size_t length = space - position;
+    if (length <= max_word) {
+      shortened.append(text, position, length);
+    } else {
+      std::size_t cut = position + max_word - 20;
+      while (cut > position && (static_cast<unsigned char>(text[cut]) & 0xC0u) == 0x80u) --cut;
+      shortened.append(text, position, cut - position);
+      shortened += "...(" + std::to_string(length) + " bytes)";
+    }
+    if (space < text.size()) shortened += ' ';
+    position = space + 1;
+  }
+  return shortened;
+}
+
+// Bad input: one short line on stderr, whatever bytes the message quotes from outside.
 int bad_input(const std::string& message) {
-  std::cerr << "numlab: error: " << numlab::printable(message) << '\n';
+  std::cerr << "numlab: error: " << shorten_long_words(numlab::printable(message)) << '\n';
   return numlab::cli::exit_bad_input;
 }
 

@@ -170,6 +170,8 @@ int FitCommand::run() const {
   require_applies(given(common, "--max-iter"), sweeps, "--max-iter", "--linear gauss-seidel (its sweep limit)");
   if (common.tolerance) options.sweep_tolerance = *common.tolerance;
   if (common.max_iterations) options.max_sweeps = *common.max_iterations;
+  require_applies(given(common, "--out"), !chart_.empty(), "--out", "--chart (the folder for the files it writes)");
+  if (given(*command_, "--chart") && chart_.empty()) throw std::invalid_argument("--chart needs a file name");
   const std::string chart_path = output_path(common, chart_);
   const std::optional<ChartFiles> chart = chart_.empty() ? std::nullopt : std::optional(chart_files(chart_path));
   if (chart) check_outputs(planned_files(*chart, "--chart"), data_file_.empty() ? std::vector<std::string>{} : std::vector{data_file_});

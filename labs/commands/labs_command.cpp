@@ -40,6 +40,8 @@ int LabsCommand::run() const {
 int run_lab(const std::string& name, bool step, const std::string& out_dir) {
   for (const Lab& lab : all_labs()) {
     if (lab.name != name) continue;
+    // The lab's folder first: a folder that cannot be made is bad input before any output.
+    ensure_directory(out_dir + "/lab-" + lab.name);
     std::cout << fmt::format("numlab lab {}: {}\n", lab.name, lab.summary);
     if (step && isatty(STDIN_FILENO) != 0) std::cout << "(--step: Enter after each step goes on; q, Enter stops)\n";
     LabSession session(std::cout, step, out_dir + "/lab-" + lab.name, lab.name, lab.summary);

@@ -128,6 +128,18 @@ void print_text(std::ostream& out, const std::string& name, const std::string& s
 
 }  // namespace
 
+// The beest puts its legs half a turn apart on one solved cycle: the sweep must be one whole turn
+// (START:START+360-STEP:STEP) with an even number of poses.
+void require_full_turn(const SweepRange& range) {
+  const double turn = std::abs(range.stop - range.start) + std::abs(range.step);
+  const double poses = 360.0 / std::abs(range.step);
+  const bool whole = std::abs(turn - 360.0) <= 1e-9 * 360.0;
+  const bool even = std::abs(poses - std::round(poses)) <= 1e-9 && static_cast<long long>(std::round(poses)) % 2 == 0;
+  if (!whole || !even) {
+    throw std::invalid_argument("--beest needs one whole turn with an even number of poses, e.g. --sweep 0:358:2");
+  }
+}
+
 SweepRange parse_sweep(const std::string& text) {
   const DegreeRange range = parse_degree_range(text, "--sweep");
   return {range.start, range.stop, range.step};
@@ -160,9 +172,18 @@ int MechanismCommand::run() const {
   require_applies(given(common, "--tol"), solver_ != "analytic", "--tol", "the iterative solvers (not analytic)");
   require_applies(given(common, "--max-iter"), solver_ != "analytic", "--max-iter", "the iterative solvers (not analytic)");
   require_applies(given(*command_, "--beest-animated"), !beest_.empty(), "--beest-animated", "--beest FILE");
+  require_applies(given(common, "--out"), !svg_.empty() || !animate_.empty() || !beest_.empty(), "--out",
+                  "--svg, --animate or --beest (the folder for the files they name)");
+  for (const auto& [flag, value] : {std::pair{"--svg", &svg_}, std::pair{"--animate", &animate_}, std::pair{"--beest", &beest_}}) {
+    if (given(*command_, flag) && value->empty()) throw std::invalid_argument(std::string(flag) + " needs a file name");
+  }
+  if (given(*command_, "--beest-animated") && !(beest_seconds_ > 0.0 && std::isfinite(beest_seconds_))) {
+    throw std::invalid_argument("--beest-animated: the stride time must be a positive number of seconds");
+  }
   if (!crank_ && sweep_.empty()) throw std::invalid_argument("give --crank DEG or --sweep START:STOP:STEP");
   if (crank_ && !std::isfinite(*crank_)) throw std::invalid_argument("--crank must be a finite number of degrees");
   const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : parse_sweep(sweep_);
+  if (!beest_.empty()) require_full_turn(range);
   const std::string svg = output_path(common, svg_), animate = output_path(common, animate_),
                     beest = output_path(common, beest_);
   std::vector<PlannedFile> outputs;

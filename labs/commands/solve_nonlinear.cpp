@@ -53,6 +53,7 @@ int SolveNonlinearCommand::run() const {
   require_applies(given(*command_, "--linear"), is_newton, "--linear", "--method newton");
   const nonlinear::TestProblem problem = nonlinear::make_test_problem(problem_);
   const int n = problem.system->dimension();
+  if (given(*command_, "--x0") && x0_.empty()) throw std::invalid_argument("--x0 needs numbers a,b,... (or leave it out for the standard start)");
   const Eigen::VectorXd x0 = x0_.empty() ? problem.standard_start : parse_point(x0_, n, "--x0");
 
   NonlinearSettings settings;

@@ -1,10 +1,14 @@
 #include "numlab/linalg/matrix_file.hpp"
 
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <vector>
 
@@ -16,6 +20,19 @@ namespace {
 
 constexpr std::string_view separators = " \t\r\v\f,";
 constexpr std::string_view blanks = " \t\r\v\f";
+// A file descriptor closed when it goes out of scope.
+struct OpenFile {
+  explicit OpenFile(int fd) : descriptor(fd) {}
+  OpenFile(const OpenFile&) = delete;
+  OpenFile& operator=(const OpenFile&) = delete;
+  ~OpenFile() {
+    if (descriptor >= 0) ::close(descriptor);
+  }
+  int descriptor;
+};
+
+// How long a FIFO may stay silent before numlab says so (a shell's <(command) is a FIFO).
+constexpr int fifo_wait_ms = 10000;
 
 // "16 MiB" for whole mebibytes, else the byte count.
 std::string size_text(std::size_t bytes) {
@@ -72,23 +89,37 @@ std::size_t parse_row(std::string_view line, const std::string& source, int line
 
 std::string read_text_file(const std::string& path, std::size_t max_bytes) {
   const std::string name = printable(path);
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) throw std::invalid_argument(name + ": is a directory, not a file");
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::invalid_argument(name + ": cannot open the file (missing or unreadable)");
-  // 1. Read in chunks, never more than max_bytes + 1 bytes in all (a device may never end).
+  // 1. Open without blocking: opening a FIFO for reading would otherwise wait for a writer forever.
+  const OpenFile file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+  const int fd = file.descriptor;
+  if (fd < 0) throw std::invalid_argument(name + ": cannot open the file (missing or unreadable)");
+  struct stat info {};
+  if (::fstat(fd, &info) != 0) throw std::invalid_argument(name + ": cannot read the file");
+  if (S_ISDIR(info.st_mode)) throw std::invalid_argument(name + ": is a directory, not a file");
+  // 2. A pipe must bring data (or its end) within fifo_wait_ms; then read as from any file.
+  if (S_ISFIFO(info.st_mode)) {
+    pollfd waiting{fd, POLLIN, 0};
+    if (::poll(&waiting, 1, fifo_wait_ms) == 0) {
+      throw std::invalid_argument(name + ": a pipe with nothing written to it within " +
+                                  std::to_string(fifo_wait_ms / 1000) + " s");
+    }
+  }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  // 3. Read in chunks, never more than max_bytes + 1 bytes in all (a device may never end).
   std::string text;
   std::array<char, 1 << 16> chunk{};
-  while (file && text.size() <= max_bytes) {
+  while (text.size() <= max_bytes) {
     const std::size_t wanted = std::min(chunk.size(), max_bytes + 1 - text.size());
-    file.read(chunk.data(), static_cast<std::streamsize>(wanted));
-    text.append(chunk.data(), static_cast<std::size_t>(file.gcount()));
+    const ssize_t got = ::read(fd, chunk.data(), wanted);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) throw std::invalid_argument(name + ": cannot read the file");
+    if (got == 0) break;
+    text.append(chunk.data(), static_cast<std::size_t>(got));
   }
-  // 2. One byte past the limit means the file is too long to be an input file.
+  // 4. One byte past the limit means the file is too long to be an input file.
   if (text.size() > max_bytes) {
     throw std::invalid_argument(name + ": longer than the " + size_text(max_bytes) + " limit for input files");
   }
-  if (file.bad()) throw std::invalid_argument(name + ": cannot read the file");
   return text;
 }
 

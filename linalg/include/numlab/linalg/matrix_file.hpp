@@ -16,7 +16,8 @@ inline constexpr std::size_t max_input_file_bytes = std::size_t{16} << 20;
 
 // The whole file, read in chunks so that character devices and FIFOs work too. Throws
 // std::invalid_argument naming the file for: a directory, a file that cannot be opened or read,
-// and a file longer than max_bytes (reading stops at max_bytes + 1).
+// a FIFO with nothing written to it within 10 s, and a file longer than max_bytes (reading stops
+// at max_bytes + 1).
 std::string read_text_file(const std::string& path, std::size_t max_bytes = max_input_file_bytes);
 
 // The text without a leading UTF-8 byte-order mark (EF BB BF), if it has one.
