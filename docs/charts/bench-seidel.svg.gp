@@ -8,4 +8,4 @@ set key top left box opaque
 set xlabel 'kappa_2(A)'
 set ylabel 'sweeps to tolerance 1e-9'
 set title 'Gauss-Seidel on A^T A x = A^T b (n = 8): sweeps grow like kappa^2'
-plot 'docs/charts/bench-seidel.csv' using 1:2 skip 1 with linespoints lw 2 pt 7 title 'sweeps', 1.02551 * x**2 with lines dt 2 lc rgb 'gray40' title 'kappa^2 guide'
+plot 'docs/charts/bench-seidel.svg.data.csv' using 1:2 skip 1 with linespoints lw 2 pt 7 title 'sweeps', 1.02551 * x**2 with lines dt 2 lc rgb 'gray40' title 'kappa^2 guide'
