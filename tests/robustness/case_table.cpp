@@ -40,7 +40,7 @@ std::vector<int> parse_exit_codes(const std::string& field) {
 // A misspelt check would never fail, so only these forms are accepted.
 bool known_check(const std::string& check) {
   if (check == "json" || check == "short") return true;
-  for (const char* prefix : {"status=", "out~", "out!~", "err~", "err!~", "made="}) {
+  for (const char* prefix : {"status=", "out~", "out!~", "err~", "err!~", "made=", "mem="}) {
     if (check.starts_with(prefix) && check.size() > std::string(prefix).size()) return true;
   }
   return false;

@@ -12,7 +12,7 @@ struct Case {
   std::vector<int> exit_codes;        // the allowed exit codes ("0", "1", "2", or e.g. "0|2")
   std::vector<std::string> arguments; // after the program name, decoded (see decode_word)
   std::vector<std::string> writes;    // globs of the files the case may create, relative to its sandbox
-  std::vector<std::string> checks;    // extra checks: json, status=S, out~T, out!~T, err~T, err!~T, short, made=PATH
+  std::vector<std::string> checks;    // extra checks: json, status=S, out~T, out!~T, err~T, err!~T, short, made=PATH, mem=MB
   double seconds = 0;                 // time limit in the release build (multiplied by the time scale)
   std::string note;                   // why the row is there
 };

@@ -54,21 +54,23 @@ ChildResult run_child(const std::string& program, const std::vector<std::string>
   // 3. Wait for it, up to the time limit; then kill its whole group.
   ChildResult result;
   int status = 0;
+  rusage usage{};
   while (true) {
-    const pid_t done = waitpid(pid, &status, WNOHANG);
+    const pid_t done = wait4(pid, &status, WNOHANG, &usage);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (done == pid) break;
-    if (done < 0) throw std::runtime_error("waitpid failed");
+    if (done < 0) throw std::runtime_error("wait4 failed");
     if (result.seconds > time_limit) {
       result.timed_out = true;
       kill(-pid, SIGKILL);
-      waitpid(pid, &status, 0);
+      wait4(pid, &status, 0, &usage);
       break;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   kill(-pid, SIGKILL);  // 4. Whatever it left running (none expected).
 
+  result.peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in kB
   if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
   return result;

@@ -13,6 +13,7 @@ struct ChildResult {
   int exit_code = -1;  // when it exited
   int signal = 0;      // when a signal ended it
   double seconds = 0;  // wall-clock time
+  double peak_mb = 0;  // its largest resident set size, in MB
 };
 
 // `memory_limit_mb` > 0 caps the child's address space (not usable under AddressSanitizer, which

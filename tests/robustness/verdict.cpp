@@ -72,9 +72,9 @@ void judge_error_line(const std::string& out, const std::string& err, std::vecto
   if (line.size() > 1000) failures.push_back("stderr line is " + std::to_string(line.size()) + " bytes long");
 }
 
-// The row's extra checks on the output: json, status=S, out~T, out!~T, err~T, err!~T, short
+// The row's extra checks on the run: json, status=S, out~T, out!~T, err~T, err!~T, short, mem=MB
 // (made=PATH is judged with the files).
-void judge_extra(const std::string& check, const std::string& out, const std::string& err,
+void judge_extra(const std::string& check, const ChildResult& run, const std::string& out, const std::string& err,
                  std::vector<std::string>& failures) {
   const auto contains = [](const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
@@ -102,6 +102,14 @@ void judge_extra(const std::string& check, const std::string& out, const std::st
     failures.push_back("stderr contains '" + wanted + "': " + shown(err));
   } else if (check == "short" && err.size() > 161) {
     failures.push_back("error line longer than 160 characters: " + shown(err));
+  } else if (check.starts_with("mem=")) {
+    // A refused input is refused before it is read whole; AddressSanitizer's shadow memory
+    // triples a program's resident size.
+    const double limit = std::stod(wanted) * (NUMLAB_CHILD_SANITIZED ? 3 : 1);
+    if (run.peak_mb > limit) {
+      failures.push_back("used " + std::to_string(static_cast<long>(run.peak_mb)) + " MB, more than " +
+                         std::to_string(static_cast<long>(limit)) + " MB");
+    }
   }
 }
 
@@ -146,7 +154,7 @@ std::vector<std::string> judge_run(const Case& row, const ChildResult& run, doub
     failures.push_back("stdout is not valid JSON: " + shown(out));
   }
   // 5. The row's own checks.
-  for (const std::string& check : row.checks) judge_extra(check, out, err, failures);
+  for (const std::string& check : row.checks) judge_extra(check, run, out, err, failures);
   return failures;
 }
 
