@@ -13,14 +13,12 @@
 
 namespace numlab::test {
 
-namespace {
 std::string read_all(const std::string& path) {
   std::ifstream file(path);
   std::ostringstream contents;
   contents << file.rdbuf();
   return contents.str();
 }
-}  // namespace
 
 std::string temporary_folder() {
   std::string pattern = (std::filesystem::temp_directory_path() / "numlab-test-XXXXXX").string();

@@ -23,6 +23,9 @@ nlohmann::json run_json(const std::string& command, const std::string& arguments
 // "numlab: error:" and contains `named`.
 void require_bad_input(const std::string& arguments, const std::string& named);
 
+// The whole contents of a file ("" when it cannot be read).
+std::string read_all(const std::string& path);
+
 // A fresh temporary folder for files a test writes.
 std::string temporary_folder();
 

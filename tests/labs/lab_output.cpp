@@ -17,13 +17,6 @@ namespace numlab::test {
 
 namespace {
 
-std::string read_all(const std::string& path) {
-  std::ifstream file(path);
-  std::ostringstream contents;
-  contents << file.rdbuf();
-  return contents.str();
-}
-
 // Every run of white space as one space.
 std::string unwrapped(const std::string& text) {
   std::string flat;
