@@ -1,0 +1,64 @@
+#include "exercises/checker.hpp"
+
+#include <fmt/format.h>
+
+#include "exercises/reply_fields.hpp"
+
+namespace numlab::exercises {
+
+std::string to_string(CheckStatus status) {
+  switch (status) {
+    case CheckStatus::pass: return "pass";
+    case CheckStatus::fail: return "fail";
+    case CheckStatus::error: return "error";
+  }
+  return "error";
+}
+
+namespace {
+
+// One check: its verdict, or what stopped the program from giving one.
+CheckResult run_one(const Check& check, Session& session, bool& child_failed) {
+  CheckResult result{check.name, check.task_id, CheckStatus::error, "", "", "", 0.0, {}};
+  child_failed = false;
+  session.begin_check();
+  try {
+    const Verdict verdict = check.run(session);
+    result.status = verdict.passed ? CheckStatus::pass : CheckStatus::fail;
+    result.message = verdict.message;
+    result.hint = verdict.hint;
+    result.references = verdict.references;
+  } catch (const StudentError& error) {
+    result.status = CheckStatus::fail;
+    result.message = fmt::format("your program replied with an error: {}", error.what());
+  } catch (const ReplyError& error) {
+    result.message = fmt::format("the reply is not a usable answer: {}", error.what());
+  } catch (const ChildFailure& error) {
+    result.message = error.what();
+    child_failed = true;
+  }
+  result.seconds_per_request = session.seconds_per_request();
+  result.output = session.take_output();
+  return result;
+}
+
+}  // namespace
+
+std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session) {
+  std::vector<CheckResult> results;
+  int failures_in_a_row = 0;
+  for (const Check& check : exercise.battery()) {
+    if (failures_in_a_row >= max_failures_in_a_row) {
+      results.push_back({check.name, check.task_id, CheckStatus::error,
+                         fmt::format("not run: the program gave no reply in the {} checks before", failures_in_a_row),
+                         "", "", 0.0, {}});
+      continue;
+    }
+    bool child_failed = false;
+    results.push_back(run_one(check, session, child_failed));
+    failures_in_a_row = child_failed ? failures_in_a_row + 1 : 0;
+  }
+  return results;
+}
+
+}  // namespace numlab::exercises

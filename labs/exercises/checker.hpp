@@ -1,0 +1,34 @@
+#pragma once
+// Runs an exercise's battery through a session and turns each check's outcome into a result:
+// pass, fail (the program answered, wrongly, or said it could not), or error (no proper reply).
+
+#include <string>
+#include <vector>
+
+#include "exercises/exercise.hpp"
+#include "exercises/session.hpp"
+
+namespace numlab::exercises {
+
+enum class CheckStatus { pass, fail, error };
+
+std::string to_string(CheckStatus status);  // "pass", "fail", "error"
+
+struct CheckResult {
+  std::string name;
+  int task_id = 1;
+  CheckStatus status = CheckStatus::error;
+  std::string message;  // "" on pass
+  std::string hint;     // a known mistake that fits, or ""
+  std::string output;   // the program's stderr during the check
+  double seconds_per_request = 0.0;  // the student's program
+  std::vector<ReferenceTime> references;
+};
+
+// After this many checks in a row end in ChildFailure, the rest are not run: each is an error that
+// says so (a program that hangs on every request costs at most this many time limits).
+inline constexpr int max_failures_in_a_row = 3;
+
+std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session);
+
+}  // namespace numlab::exercises

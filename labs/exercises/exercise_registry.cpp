@@ -1,0 +1,25 @@
+#include <algorithm>
+#include <stdexcept>
+
+#include "exercises/exercise.hpp"
+#include "exercises/exercise_list.hpp"
+
+namespace numlab::exercises {
+
+const std::vector<Exercise>& all_exercises() {
+  static const std::vector<Exercise> exercises = {
+  };
+  return exercises;
+}
+
+const Exercise& find_exercise(const std::string& name) {
+  const auto& exercises = all_exercises();
+  const auto found = std::find_if(exercises.begin(), exercises.end(),
+                                  [&](const Exercise& exercise) { return exercise.name == name; });
+  if (found != exercises.end()) return *found;
+  std::string known;
+  for (const Exercise& exercise : exercises) known += (known.empty() ? "" : ", ") + exercise.name;
+  throw std::invalid_argument("exercise: unknown exercise '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace numlab::exercises

@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""Runs `numlab exercise check` on one solution and checks the verdict it gives.
+
+  expect_verdict.py NUMLAB reference EXERCISE COMMAND...   every check passes (exit 0, status pass)
+  expect_verdict.py NUMLAB mutant FILE.py                  the mutant is caught as its header says
+  expect_verdict.py NUMLAB summary MUTANT_DIR              the catch rate, overall and by exercise
+
+A mutant is tests/exercises/mutants/EXERCISE/NAME.py. Its header names the bug and the verdict:
+  # BUG: what is wrong (and, for a seed's error, which seed)
+  # EXPECT-CHECK: part of the name of a check that must FAIL (not error)
+  # EXPECT-MESSAGE: part of that check's message (one line each; all must appear)
+"""
+import json
+import os
+import subprocess
+import sys
+
+
+def run_check(numlab, exercise, command):
+    run = subprocess.run([numlab, "exercise", "check", exercise, "--format", "json", "--"] + command,
+                         capture_output=True, text=True, timeout=600)
+    try:
+        results = json.loads(run.stdout)
+    except json.JSONDecodeError:
+        sys.exit(f"not JSON on stdout (exit {run.returncode}):\n{run.stdout}\n{run.stderr}")
+    return run.returncode, results
+
+
+def header(path):
+    fields = {"BUG": [], "EXPECT-CHECK": [], "EXPECT-MESSAGE": []}
+    with open(path, encoding="utf-8") as source:
+        for line in source:
+            if not line.startswith("#"):
+                continue
+            key, _, value = line[1:].strip().partition(":")
+            if key in fields:
+                fields[key].append(value.strip())
+    if len(fields["BUG"]) != 1 or len(fields["EXPECT-CHECK"]) != 1:
+        sys.exit(f"{path}: the header needs one '# BUG:' and one '# EXPECT-CHECK:' line")
+    return fields
+
+
+def caught(results, fields):
+    """The failing check the header names, or a reason why the mutant was not caught."""
+    wanted = fields["EXPECT-CHECK"][0]
+    named = [test for test in results["tests"] if wanted in test["name"]]
+    if not named:
+        return None, f"no check is named like '{wanted}'"
+    failing = [test for test in named if test["status"] == "fail"]
+    if not failing:
+        return None, f"'{wanted}' gave " + ", ".join(test["status"] for test in named)
+    for test in failing:
+        message = test.get("message") or ""
+        if all(part in message for part in fields["EXPECT-MESSAGE"]):
+            return test, ""
+    return None, "the message does not say " + " / ".join(fields["EXPECT-MESSAGE"]) + ":\n" + \
+        "\n".join(test.get("message") or "" for test in failing)
+
+
+def expect_reference(numlab, exercise, command):
+    code, results = run_check(numlab, exercise, command)
+    wrong = [test for test in results["tests"] if test["status"] != "pass"]
+    for test in wrong:
+        print(f"false failure: {test['name']}: {test['status']}: {test.get('message')}")
+    if code != 0 or results["status"] != "pass" or wrong or not results["tests"]:
+        sys.exit(f"the reference solution did not pass every check (exit {code}, status {results['status']})")
+    print(f"{len(results['tests'])} checks pass")
+
+
+def mutant_exercise(path):
+    return os.path.basename(os.path.dirname(os.path.abspath(path)))
+
+
+def expect_mutant(numlab, path):
+    fields = header(path)
+    _, results = run_check(numlab, mutant_exercise(path), [sys.executable, os.path.abspath(path)])
+    test, why = caught(results, fields)
+    if test is None:
+        sys.exit(f"{path} ({fields['BUG'][0]}) was not caught: {why}")
+    print(f"caught by '{test['name']}':\n{test['message']}")
+
+
+def summary(numlab, folder):
+    counts = {}
+    for exercise in sorted(os.listdir(folder)):
+        directory = os.path.join(folder, exercise)
+        for name in sorted(os.listdir(directory)):
+            if not name.endswith(".py"):
+                continue
+            path = os.path.join(directory, name)
+            _, results = run_check(numlab, exercise, [sys.executable, path])
+            test, why = caught(results, header(path))
+            flagged = any(t["status"] == "fail" for t in results["tests"])
+            total, hit, pointed = counts.get(exercise, (0, 0, 0))
+            counts[exercise] = (total + 1, hit + flagged, pointed + (test is not None))
+            print(f"{exercise}/{name}: {'caught' if test else 'MISSED: ' + why}")
+    grand = [sum(values) for values in zip(*counts.values())]
+    for exercise, (total, hit, pointed) in counts.items():
+        print(f"{exercise}: flagged {hit}/{total}, at the named check {pointed}/{total}")
+    print(f"all: flagged {grand[1]}/{grand[0]}, at the named check {grand[2]}/{grand[0]}")
+
+
+if __name__ == "__main__":
+    numlab, mode = sys.argv[1], sys.argv[2]
+    if mode == "reference":
+        expect_reference(numlab, sys.argv[3], sys.argv[4:])
+    elif mode == "mutant":
+        expect_mutant(numlab, sys.argv[3])
+    elif mode == "summary":
+        summary(numlab, sys.argv[3])
+    else:
+        sys.exit(f"unknown mode {mode}")
