@@ -1,0 +1,273 @@
+#include "exercises/child_session.hpp"
+
+#include <sys/prctl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fmt/format.h>
+#include <mutex>
+#include <numlab/printable_text.hpp>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+namespace numlab::exercises {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// The command, made to work from another directory.
+
+std::invalid_argument cannot_run(const std::string& name, const std::string& reason) {
+  return std::invalid_argument(fmt::format("exercise check: cannot run '{}': {}", printable(name), reason));
+}
+
+// Why `path` cannot be executed, or "" when it can.
+std::string why_not_runnable(const fs::path& path) {
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!fs::exists(status)) return "no such file";
+  if (fs::is_directory(status)) return "it is a folder, not a program";
+  if (!fs::is_regular_file(status)) return "it is not a regular file";
+  if (access(path.c_str(), X_OK) != 0) return fmt::format("it is not executable ({})", std::strerror(errno));
+  return "";
+}
+
+std::string resolve_program(const std::string& name) {
+  if (name.empty()) throw cannot_run(name, "the command is empty");
+  if (name.find('/') != std::string::npos) {
+    const fs::path path = fs::absolute(name);
+    if (const std::string why = why_not_runnable(path); !why.empty()) throw cannot_run(name, why);
+    return path.string();
+  }
+  const char* search = std::getenv("PATH");
+  const std::string folders = search != nullptr && *search != '\0' ? search : "/usr/local/bin:/usr/bin:/bin";
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = folders.find(':', start);
+    const std::string folder = folders.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    const fs::path candidate = fs::absolute(fs::path(folder.empty() ? "." : folder) / name);
+    if (why_not_runnable(candidate).empty()) return candidate.string();
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  throw cannot_run(name, "not found on PATH");
+}
+
+std::vector<std::string> resolve_command(std::vector<std::string> command) {
+  if (command.empty()) throw std::invalid_argument("exercise check: no command given after --");
+  command[0] = resolve_program(command[0]);
+  // The program runs in its own directory: files and folders the student named go there absolute.
+  for (std::size_t i = 1; i < command.size(); ++i) {
+    std::error_code error;
+    if (!command[i].empty() && fs::exists(command[i], error)) command[i] = fs::absolute(command[i]).string();
+  }
+  return command;
+}
+
+std::string make_temporary_directory() {
+  const char* tmpdir = std::getenv("TMPDIR");
+  std::string pattern = (tmpdir != nullptr && *tmpdir != '\0' ? std::string(tmpdir) : std::string("/tmp")) +
+                        "/numlab-exercise-XXXXXX";
+  if (mkdtemp(pattern.data()) == nullptr)
+    throw std::system_error(errno, std::generic_category(), "exercise check: cannot make a working directory");
+  return pattern;
+}
+
+void remove_directory(std::string& directory) {
+  if (directory.empty()) return;
+  std::error_code ignored;
+  fs::remove_all(directory, ignored);
+  directory.clear();
+}
+
+// ---------------------------------------------------------------------------------------------
+// numlab interrupted during a check: end the program's group first, then die as asked.
+
+volatile std::sig_atomic_t running_group = 0;
+struct sigaction previous_interrupt {};
+struct sigaction previous_terminate {};
+
+extern "C" void end_group_and_reraise(int signal) {
+  const pid_t group = running_group;
+  if (group > 0) kill(-group, SIGKILL);
+  sigaction(signal, signal == SIGINT ? &previous_interrupt : &previous_terminate, nullptr);
+  raise(signal);  // delivered with the previous disposition once this handler returns
+}
+
+void ignore_sigpipe_and_adopt_orphans() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    // A write to a program that died is EPIPE, not the end of numlab.
+    std::signal(SIGPIPE, SIG_IGN);
+    // Group members whose parent dies come to numlab, so stopping a program reaps all of them.
+    prctl(PR_SET_CHILD_SUBREAPER, 1);
+  });
+}
+
+// Checked at every start, since others (a test framework) may have set their own handlers since.
+void end_group_on_interrupt() {
+  struct sigaction action {};
+  action.sa_handler = end_group_and_reraise;
+  sigemptyset(&action.sa_mask);
+  for (auto [signal, previous] : {std::pair{SIGINT, &previous_interrupt}, std::pair{SIGTERM, &previous_terminate}}) {
+    struct sigaction current {};
+    sigaction(signal, nullptr, &current);
+    if (current.sa_handler == end_group_and_reraise || current.sa_handler == SIG_IGN) continue;  // ignored stays so
+    *previous = current;
+    sigaction(signal, &action, nullptr);
+  }
+}
+
+// What a line that is not a reply looks like, for the message.
+std::string excerpt(std::string_view line) {
+  if (line.empty()) return "(an empty line)";
+  constexpr std::size_t shown = 80;
+  std::string text = printable(line.substr(0, shown));
+  if (line.size() > shown) text += "...";
+  return text;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const std::size_t middle = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle), values.end());
+  if (values.size() % 2 == 1) return values[middle];
+  const double upper = values[middle];
+  const double lower = *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle));
+  return 0.5 * (lower + upper);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+ChildSession::ChildSession(std::string exercise, std::vector<std::string> command, double timeout_seconds)
+    : exercise_(std::move(exercise)), command_(resolve_command(std::move(command))), timeout_seconds_(timeout_seconds) {
+  if (!(timeout_seconds > 0.0) || !std::isfinite(timeout_seconds))
+    throw std::invalid_argument(
+        fmt::format("exercise check: the time limit must be a positive number of seconds, got {}", timeout_seconds));
+  ignore_sigpipe_and_adopt_orphans();
+  try {
+    start();
+  } catch (const StartError& error) {
+    remove_directory(directory_);
+    throw cannot_run(command_[0], error.what());
+  }
+}
+
+ChildSession::~ChildSession() {
+  finish();
+  remove_directory(directory_);
+}
+
+void ChildSession::start() {
+  remove_directory(directory_);
+  directory_ = make_temporary_directory();
+  process_.reset();
+  end_group_on_interrupt();
+  process_ = std::make_unique<ChildProcess>(command_[0], std::vector<std::string>(command_.begin() + 1, command_.end()),
+                                            directory_);
+  running_group = process_->process_group();
+}
+
+void ChildSession::stop_now() {
+  if (process_ && process_->running()) process_->stop(ChildProcess::Clock::duration::zero(), output_);
+  running_group = 0;
+}
+
+void ChildSession::finish() {
+  if (process_ && process_->running()) process_->stop(std::chrono::seconds(1), output_);
+  running_group = 0;
+}
+
+void ChildSession::fail(const std::string& message) {
+  stop_now();
+  throw ChildFailure(message);
+}
+
+pid_t ChildSession::process_group() const { return process_ && process_->running() ? process_->process_group() : 0; }
+
+void ChildSession::begin_check() {
+  seconds_.clear();
+  output_.clear();
+  if (process_ && process_->running()) return;
+  try {
+    start();
+  } catch (const std::exception&) {
+    // ask() tries again and reports why the program could not be started.
+  }
+}
+
+std::string ChildSession::take_output() { return output_.take(); }
+
+double ChildSession::seconds_per_request() const { return median(seconds_); }
+
+std::string ChildSession::ended_message(long long id) {
+  const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
+                                                         std::chrono::duration<double>(timeout_seconds_));
+  if (!process_->wait_for_exit(deadline, output_))
+    return fmt::format("the program closed its output before replying to request {} (the program was stopped)", id);
+  const int status = process_->stop(ChildProcess::Clock::duration::zero(), output_);
+  return fmt::format("the program {} before replying to request {}", describe_wait_status(status), id);
+}
+
+nlohmann::json ChildSession::ask(nlohmann::json request) {
+  using Clock = ChildProcess::Clock;
+  if (!process_ || !process_->running()) {
+    try {
+      start();
+    } catch (const std::exception& error) {
+      throw ChildFailure(fmt::format("the program could not be started again: {}", error.what()));
+    }
+  }
+  const long long id = ++last_id_;
+  request["exercise"] = exercise_;
+  request["id"] = id;
+  const std::string text = request.dump() + '\n';
+
+  const Clock::time_point sent = Clock::now();
+  const Clock::time_point deadline =
+      sent + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_seconds_));
+  std::string line;
+  switch (process_->exchange(text, deadline, reply_cap, line, output_)) {
+    case ChildProcess::Outcome::line: break;
+    case ChildProcess::Outcome::timed_out:
+      fail(fmt::format("no reply within {:g} s to request {} (the program was stopped)", timeout_seconds_, id));
+    case ChildProcess::Outcome::line_too_long:
+      fail(fmt::format("the reply to request {} is longer than 16 MiB (the program was stopped)", id));
+    case ChildProcess::Outcome::output_closed: fail(ended_message(id));
+  }
+  seconds_.push_back(std::chrono::duration<double>(Clock::now() - sent).count());
+
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  const nlohmann::json reply = nlohmann::json::parse(line, nullptr, false);
+  if (reply.is_discarded()) {
+    const bool non_finite = line.find("NaN") != std::string::npos || line.find("Infinity") != std::string::npos;
+    fail(fmt::format("the reply is not JSON: {}{}", excerpt(line),
+                     non_finite ? " (NaN and Infinity are not JSON numbers)" : ""));
+  }
+  if (!reply.is_object()) fail(fmt::format("the reply is not a JSON object: {}", excerpt(line)));
+  if (!reply.contains("id")) fail(fmt::format("the reply to request {} has no \"id\"", id));
+  const nlohmann::json& echoed = reply["id"];
+  if (!echoed.is_number() || echoed.get<double>() != static_cast<double>(id))
+    fail(fmt::format("the reply has id {} but request {} was expected", excerpt(echoed.dump()), id));
+  if (reply.contains("error")) {
+    const nlohmann::json& error = reply["error"];
+    const std::string text = error.is_string() ? error.get<std::string>() : error.dump();
+    throw StudentError(printable(text.substr(0, 2000)));
+  }
+  return reply;
+}
+
+}  // namespace numlab::exercises
