@@ -310,6 +310,8 @@ std::vector<Check> gauss_seidel_battery() {
   const Problem from_above = problem("diagonally dominant 10x10, plain, x0 = 10 (above the solution)", dominant, false,
                                      1e-9, 200, 10.0);
   const Problem normal_diverging = problem("[[1,2,4],[2,1,2],[4,2,1]], normal equations", diverging, true, 1e-10, 2000);
+  const Problem normal_random =
+      problem("random 4x4 (not symmetric), normal equations", linalg::random_matrix(4, 8), true, 1e-10, 5000);
   const Problem normal_tall = problem("random 8x3 least squares, normal equations", overdetermined(), true, 1e-10, 500);
   const Problem plain_diverging = problem("[[1,2,4],[2,1,2],[4,2,1]], plain", diverging, false, 1e-9, 100);
   const Problem capped = problem("Hilbert 6x6, normal equations, max_iterations = 25", linalg::hilbert_matrix(6), true,
@@ -327,8 +329,9 @@ std::vector<Check> gauss_seidel_battery() {
        2, [=](Session& s) { return ends_without_converging(s, plain_diverging); }},
       {"Gauss-Seidel stops with status max_iterations after exactly max_iterations sweeps when the tolerance is not met",
        2, [=](Session& s) { return ends_without_converging(s, capped); }},
-      {"Gauss-Seidel on the normal equations A^T A x = A^T b converges where plain GS diverges", 3,
-       [=](Session& s) { return converges_accurately(s, {normal_diverging}); }},
+      {"Gauss-Seidel on the normal equations A^T A x = A^T b converges on matrices that are not diagonally dominant "
+       "([[1,2,4],[2,1,2],[4,2,1]], on which plain GS diverges; a random 4x4)",
+       3, [=](Session& s) { return converges_accurately(s, {normal_diverging, normal_random}); }},
       {"Gauss-Seidel on the normal equations solves an overdetermined 8x3 least-squares system", 3,
        [=](Session& s) { return converges_accurately(s, {normal_tall}); }},
       {"Gauss-Seidel's sweeps (trace) match numlab's stepper, sweep by sweep", 4,

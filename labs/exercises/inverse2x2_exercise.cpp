@@ -72,10 +72,11 @@ Verdict inverts_accurately(Session& session, const std::vector<Case>& cases) {
     const Reference reference = reference_for(item, times);
     const nlohmann::json reply = session.ask({{"A", to_json(Eigen::MatrixXd(item.A))}});
     if (replied_singular(reply)) {
-      return Verdict::fail(fmt::format("{}: you replied \"singular\"; |det A| = {} is above eps*||A||_F^2 = {} "
-                                       "(kappa = {}), numlab's closed form inverts it",
-                                       item.label, sci(std::abs(reference.closed_form.determinant)),
-                                       sci(reference.threshold), sci(reference.closed_form.condition_number)),
+      // |det A| / ||A||_F^2 = 1 / (kappa + 1/kappa) for a 2x2 matrix: free of A's scale.
+      const double kappa = reference.closed_form.condition_number;
+      return Verdict::fail(fmt::format("{}: you replied \"singular\"; |det A| / ||A||_F^2 = {} is above eps = {} "
+                                       "(kappa = {}): numlab's closed form, with A scaled by a power of two, inverts it",
+                                       item.label, sci(1.0 / (kappa + 1.0 / kappa)), sci(eps), sci(kappa)),
                            "only |det A| <= eps*||A||_F^2 means singular; scale A by a power of two first when a d "
                            "or b c could overflow or underflow",
                            times.medians());
