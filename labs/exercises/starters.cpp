@@ -169,26 +169,23 @@ end
                      fmt::arg("body", as_body(exercise.stubs.octave, "  ")));
 }
 
-std::string how_to_check(const Exercise& exercise, Language language) {
+// What to write and what it needs, before the command.
+std::string what_to_write(Language language) {
   switch (language) {
-    case Language::python:
-      return fmt::format(
-          "Write `solve(request)` in `solution.py` (Python 3 with numpy). Then, in this folder:\n\n"
-          "```\n{}\n```\n",
-          check_command(exercise, language));
+    case Language::python: return "Write `solve(request)` in `solution.py` (Python 3 with numpy).";
     case Language::cpp:
-      return fmt::format(
-          "Write `solve(request)` in `solution.cpp`. It builds against an installed numlab (its header "
-          "`numlab/exercise_protocol.hpp` runs the protocol loop); the command below finds numlab's install "
-          "prefix from the `numlab` on your PATH (PREFIX/bin/numlab). Then, in this folder:\n\n```\n{}\n```\n",
-          check_command(exercise, language));
+      return "Write `solve(request)` in `solution.cpp`. It builds against an installed numlab (its header "
+             "`numlab/exercise_protocol.hpp` runs the protocol loop); the command below finds numlab's install "
+             "prefix from the `numlab` on your PATH (PREFIX/bin/numlab).";
     case Language::octave:
-      return fmt::format(
-          "Write `solve(request)` in `solution.m` (Octave 7 or later: `apt-get install octave`). Then, in "
-          "this folder:\n\n```\n{}\n```\n",
-          check_command(exercise, language));
+      return "Write `solve(request)` in `solution.m` (Octave 7 or later: `apt-get install octave`).";
   }
   return "";
+}
+
+std::string how_to_check(const Exercise& exercise, Language language) {
+  return fmt::format("{} Then, in this folder:\n\n```\n{}\n```\n", what_to_write(language),
+                     check_command(exercise, language));
 }
 
 }  // namespace
