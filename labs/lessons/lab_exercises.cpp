@@ -96,7 +96,7 @@ int run_exercises_lab(LabSession& session) {
     not_implemented += result.status == CheckStatus::fail && result.message.find("not implemented") != std::string::npos;
   }
   const int total = static_cast<int>(starter_results.size());
-  session.say(fmt::format("{} checks fail with the stub's \"not implemented\"; {} error. A failing check means "
+  session.say(fmt::format("{} checks fail with the stub's \"not implemented\", and {} give an error. A failing check means "
                           "the program answered and the answer was wrong (here: it said it cannot answer); an "
                           "error would mean it gave no usable reply (a crash, a hang, garbage).",
                           count_of(not_implemented, total),
@@ -126,7 +126,7 @@ int run_exercises_lab(LabSession& session) {
   const auto buggy = check(session, gepp, examples + "/gepp_no_pivoting.py", "check-no-pivoting");
   const int buggy_fails = count_status(buggy, CheckStatus::fail);
   const int buggy_total = static_cast<int>(buggy.size());
-  session.say(fmt::format("{} checks fail and {} error; {} pass.", count_of(buggy_fails, buggy_total),
+  session.say(fmt::format("{} checks fail, {} give an error, and {} pass.", count_of(buggy_fails, buggy_total),
                           count_of(count_status(buggy, CheckStatus::error), buggy_total),
                           count_of(count_status(buggy, CheckStatus::pass), buggy_total)));
   for (const CheckResult& result : buggy) {
