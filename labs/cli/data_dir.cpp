@@ -13,34 +13,40 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool holds_nist_data(const fs::path& folder) {
-  std::error_code error;
-  return fs::is_regular_file(folder / "Wampler4.dat", error);
-}
-
-// PREFIX/share/numlab/nist for the executable at PREFIX/bin/numlab (Linux: /proc/self/exe).
-std::optional<fs::path> installed_data_dir() {
+// PREFIX/share/numlab/SUBFOLDER for the executable at PREFIX/bin/numlab (Linux: /proc/self/exe).
+std::optional<fs::path> installed_data_dir(const std::string& subfolder) {
   std::error_code error;
   const fs::path executable = fs::read_symlink("/proc/self/exe", error);
   if (error) return std::nullopt;
-  return executable.parent_path().parent_path() / "share" / "numlab" / "nist";
+  return executable.parent_path().parent_path() / "share" / "numlab" / subfolder;
+}
+
+// The first of $NUMLAB_DATA_DIR/SUBFOLDER, the installed SUBFOLDER and `source_dir` that holds `marker`.
+std::string find_data_dir(const std::string& subfolder, const std::string& marker, const std::string& source_dir,
+                          const std::string& what) {
+  std::vector<fs::path> candidates;
+  if (const char* variable = std::getenv("NUMLAB_DATA_DIR"); variable != nullptr && *variable != '\0') {
+    candidates.push_back(fs::path(variable) / subfolder);
+  }
+  if (const auto installed = installed_data_dir(subfolder)) candidates.push_back(*installed);
+  candidates.emplace_back(source_dir);
+  std::string looked_in;
+  for (const fs::path& folder : candidates) {
+    std::error_code error;
+    if (fs::is_regular_file(folder / marker, error)) return folder.string();
+    looked_in += (looked_in.empty() ? "" : ", ") + folder.string();
+  }
+  throw std::invalid_argument("cannot find " + what + " (looked in " + looked_in + ")");
 }
 
 }  // namespace
 
 std::string nist_data_dir() {
-  std::vector<fs::path> candidates;
-  if (const char* variable = std::getenv("NUMLAB_DATA_DIR"); variable != nullptr && *variable != '\0') {
-    candidates.push_back(fs::path(variable) / "nist");
-  }
-  if (const auto installed = installed_data_dir()) candidates.push_back(*installed);
-  candidates.emplace_back(NUMLAB_SOURCE_NIST_DIR);
-  std::string looked_in;
-  for (const fs::path& folder : candidates) {
-    if (holds_nist_data(folder)) return folder.string();
-    looked_in += (looked_in.empty() ? "" : ", ") + folder.string();
-  }
-  throw std::invalid_argument("cannot find the NIST data sets (looked in " + looked_in + ")");
+  return find_data_dir("nist", "Wampler4.dat", NUMLAB_SOURCE_NIST_DIR, "the NIST data sets");
+}
+
+std::string examples_dir() {
+  return find_data_dir("examples", "gepp_solution.py", NUMLAB_SOURCE_EXAMPLES_DIR, "the example solutions");
 }
 
 }  // namespace numlab::cli

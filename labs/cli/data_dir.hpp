@@ -1,5 +1,5 @@
 #pragma once
-// Where the NIST StRD data sets are: beside an installed numlab, or in the source tree it was built from.
+// Where numlab's data is: beside an installed numlab, or in the source tree it was built from.
 
 #include <string>
 
@@ -12,5 +12,10 @@ namespace numlab::cli {
 //   3. the source tree's fitting/data/nist (a numlab run from its build tree).
 // Throws std::invalid_argument, listing the places looked in, when none holds Wampler4.dat.
 std::string nist_data_dir();
+
+// The folder of the example solutions `lab exercises` runs, looked up the same way:
+// $NUMLAB_DATA_DIR/examples, PREFIX/share/numlab/examples, the source tree's labs/exercises/examples.
+// Throws std::invalid_argument, listing the places looked in, when none holds gepp_solution.py.
+std::string examples_dir();
 
 }  // namespace numlab::cli

@@ -8,6 +8,9 @@ namespace numlab::exercises {
 
 const std::vector<Exercise>& all_exercises() {
   static const std::vector<Exercise> exercises = {
+      gepp_exercise(),
+      gauss_seidel_exercise(),
+      inverse2x2_exercise(),
   };
   return exercises;
 }

@@ -46,21 +46,6 @@ std::string inline_svg(const std::string& svg, const std::string& path) {
 
 }  // namespace
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 void LabReport::add_step(int number, const std::string& title) {
   body_ += "<h2 id=\"step" + std::to_string(number) + "\">Step " + std::to_string(number) + ": " + html_escape(title) +
            "</h2>\n";
@@ -100,22 +85,7 @@ void LabReport::add_figure(const std::string& path, const std::string& caption) 
 }
 
 std::string LabReport::html() const {
-  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>numlab lab " +
-         html_escape(title_) +
-         "</title>\n<style>\n"
-         "body { font-family: Helvetica, Arial, sans-serif; max-width: 1100px; margin: 2em auto; padding: 0 1em; "
-         "color: #222; line-height: 1.45; }\n"
-         "h1 { border-bottom: 2px solid #1f77b4; padding-bottom: 0.2em; }\n"
-         "h2 { margin-top: 2em; color: #1f4e79; }\n"
-         "table { border-collapse: collapse; margin: 0.8em 0; font-size: 0.9em; display: block; overflow-x: auto; }\n"
-         "th, td { border: 1px solid #bbb; padding: 0.25em 0.6em; text-align: right; white-space: nowrap; }\n"
-         "th { background: #e8eef5; } td:first-child, th:first-child { text-align: left; }\n"
-         "tr:nth-child(even) td { background: #f7f9fb; }\n"
-         "pre { background: #f4f4f4; padding: 0.8em; overflow-x: auto; font-size: 0.85em; }\n"
-         "figure { margin: 1.5em 0; } figure svg, figure img { max-width: 100%; height: auto; border: 1px solid #ddd; }\n"
-         "figcaption { font-size: 0.9em; color: #555; } .saved { font-size: 0.8em; color: #777; }\n"
-         "</style>\n</head>\n<body>\n<h1>numlab lab " +
-         html_escape(title_) + "</h1>\n<p><em>" + html_escape(summary_) + "</em></p>\n" + body_ + "</body>\n</html>\n";
+  return html_page("numlab lab " + title_, "<p><em>" + html_escape(summary_) + "</em></p>\n" + body_);
 }
 
 }  // namespace numlab::cli

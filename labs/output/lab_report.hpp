@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "output/report_style.hpp"
 #include "output/table.hpp"
 
 namespace numlab::cli {
@@ -33,8 +34,5 @@ class LabReport {
   std::string body_;
   std::vector<std::string> figures_;
 };
-
-// Text with &, <, > and " escaped for HTML.
-std::string html_escape(const std::string& text);
 
 }  // namespace numlab::cli

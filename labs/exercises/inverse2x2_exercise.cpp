@@ -1,0 +1,197 @@
+// The `inverse2x2` exercise: the student's closed-form 2x2 inverse, checked against numlab's closed
+// form (with its scaling and its singular test) and GSL LU's inverse (one solve per column).
+
+#include <Eigen/Core>
+#include <fmt/format.h>
+#include <optional>
+
+#include "exercises/exercise_list.hpp"
+#include "exercises/linear_checks.hpp"
+#include "exercises/reply_fields.hpp"
+#include "exercises/session.hpp"
+#include "numlab/linalg/gsl_reference.hpp"
+#include "numlab/linalg/inverse2x2.hpp"
+
+namespace numlab::exercises {
+
+namespace {
+
+using linear::eps;
+using linear::sci;
+
+struct Case {
+  std::string label;
+  Eigen::Matrix2d A;
+};
+
+Case matrix(std::string label, double a, double b, double c, double d) {
+  return {std::move(label), (Eigen::Matrix2d() << a, b, c, d).finished()};
+}
+
+struct Reference {
+  linalg::Inverse2x2 closed_form;
+  Eigen::Matrix2d gsl;  // GSL LU's inverse, column by column
+  double threshold = 0.0;  // eps * ||A||_F^2
+};
+
+Reference reference_for(const Case& item, linear::ReferenceTimes& times) {
+  Reference reference;
+  reference.closed_form = linalg::inverse2x2(item.A);
+  reference.threshold = eps * item.A.squaredNorm();
+  linalg::GslLu gsl(2);
+  const Eigen::MatrixXd A = item.A;
+  const auto gsl_inverse = [&] {
+    Eigen::Matrix2d inverse;
+    for (int j = 0; j < 2; ++j) inverse.col(j) = gsl.solve(A, Eigen::Vector2d::Unit(j)).x;
+    return inverse;
+  };
+  reference.gsl = gsl_inverse();
+  times.time("numlab closed form", [&] { linalg::inverse2x2(item.A); });
+  times.time("GSL LU", [&] { gsl_inverse(); });
+  return reference;
+}
+
+bool replied_singular(const nlohmann::json& reply) { return optional_status(reply) == std::optional<std::string>("singular"); }
+
+// The mistake that turns the closed form into `yours`.
+std::string hint_for(const Eigen::Matrix2d& yours, const Eigen::Matrix2d& inverse, const Eigen::Matrix2d& A,
+                     double allowed) {
+  const auto close = [&](const Eigen::Matrix2d& candidate) { return linear::relative_error(yours, candidate) <= allowed; };
+  const double det = A.determinant();
+  if (close(-inverse)) return "determinant with the wrong sign: det = a d - b c";
+  if (close(inverse.transpose())) return "inverse transposed: A^-1 = [d -b; -c a] / det";
+  if (close(inverse * det)) return "not divided by the determinant: A^-1 = [d -b; -c a] / det";
+  if (close(inverse * det * det)) return "multiplied by the determinant instead of dividing by it";
+  return "A^-1 = [d -b; -c a] / (a d - b c)";
+}
+
+// Task 1 (and 3): the inverse to kappa*eps, for matrices numlab's closed form finds invertible.
+Verdict inverts_accurately(Session& session, const std::vector<Case>& cases) {
+  linear::ReferenceTimes times;
+  for (const Case& item : cases) {
+    const Reference reference = reference_for(item, times);
+    const nlohmann::json reply = session.ask({{"A", to_json(Eigen::MatrixXd(item.A))}});
+    if (replied_singular(reply)) {
+      // |det A| / ||A||_F^2 = 1 / (kappa + 1/kappa) for a 2x2 matrix: free of A's scale.
+      const double kappa = reference.closed_form.condition_number;
+      return Verdict::fail(fmt::format("{}: you replied \"singular\"; |det A| / ||A||_F^2 = {} is above eps = {} "
+                                       "(kappa = {}): numlab's closed form, with A scaled by a power of two, inverts it",
+                                       item.label, sci(1.0 / (kappa + 1.0 / kappa)), sci(eps), sci(kappa)),
+                           "only |det A| <= eps*||A||_F^2 means singular; scale A by a power of two first when a d "
+                           "or b c could overflow or underflow",
+                           times.medians());
+    }
+    const Eigen::Matrix2d yours = matrix_field(reply, "inverse", 2, 2);
+    const Eigen::Matrix2d& inverse = reference.closed_form.inverse;
+    const double kappa = reference.closed_form.condition_number;
+    const double allowed = 10.0 * kappa * eps;
+    const double error = linear::relative_error(yours, inverse);
+    if (!(error <= allowed)) {
+      Eigen::Index i = 0, j = 0;
+      (yours - inverse).cwiseAbs().maxCoeff(&i, &j);
+      return Verdict::fail(fmt::format("{}: inverse[{}][{}] = {}, the closed form gives {}: inverse differs by {} "
+                                       "(relative, max-norm), allowed {} (10*kappa*eps, kappa = {}); GSL LU agrees "
+                                       "with the closed form to {}",
+                                       item.label, i, j, sci(yours(i, j)), sci(inverse(i, j)), sci(error),
+                                       sci(allowed), sci(kappa), sci(linear::relative_error(reference.gsl, inverse))),
+                           hint_for(yours, inverse, item.A, allowed), times.medians());
+    }
+  }
+  return Verdict::pass(times.medians());
+}
+
+// Task 2: "singular" where numlab's closed form finds |det A| <= eps*||A||_F^2.
+Verdict reports_singular(Session& session, const std::vector<Case>& cases) {
+  linear::ReferenceTimes times;
+  for (const Case& item : cases) {
+    const Reference reference = reference_for(item, times);
+    const nlohmann::json reply = session.ask({{"A", to_json(Eigen::MatrixXd(item.A))}});
+    if (!replied_singular(reply)) {
+      return Verdict::fail(fmt::format("{}: your reply has no \"status\": \"singular\"; |det A| = {} <= "
+                                       "eps*||A||_F^2 = {} (kappa_2 >= 1/eps)",
+                                       item.label, sci(std::abs(reference.closed_form.determinant)),
+                                       sci(reference.threshold)),
+                           "missing singular test: compare |a d - b c| with eps*(a^2 + b^2 + c^2 + d^2) before "
+                           "dividing by the determinant",
+                           times.medians());
+    }
+  }
+  return Verdict::pass(times.medians());
+}
+
+std::vector<Check> inverse2x2_battery() {
+  return {
+      {"the inverse of well-conditioned 2x2 matrices matches the closed form and GSL LU to 10*kappa*eps", 1,
+       [](Session& s) {
+         return inverts_accurately(s, {matrix("[[4, 7], [2, 6]]", 4, 7, 2, 6), matrix("[[0, 1], [1, 0]]", 0, 1, 1, 0),
+                                       matrix("[[-3, 5], [2, -1]]", -3, 5, 2, -1),
+                                       matrix("[[0.3, -1.7], [2.5, 0.9]]", 0.3, -1.7, 2.5, 0.9)});
+       }},
+      {"the inverse of badly scaled and nearly singular 2x2 matrices is accurate to 10*kappa*eps", 1,
+       [](Session& s) {
+         return inverts_accurately(s, {matrix("[[1e-8, 1], [1, 1]]", 1e-8, 1, 1, 1),
+                                       matrix("[[1e5, 3], [2e-3, 7e-5]]", 1e5, 3, 2e-3, 7e-5),
+                                       matrix("[[1, 2], [0.5, 1 + 2^-40]] (kappa ~ 7e12)", 1, 2, 0.5,
+                                              1 + 0x1p-40)});
+       }},
+      {"exactly singular 2x2 matrices ([[1, 2], [2, 4]], [[0, 0], [0, 0]]) are reported as singular", 2,
+       [](Session& s) {
+         return reports_singular(s, {matrix("[[1, 2], [2, 4]]", 1, 2, 2, 4), matrix("[[0, 0], [0, 0]]", 0, 0, 0, 0)});
+       }},
+      {"a 2x2 matrix singular to working precision (|det A| <= eps*||A||_F^2) is reported as singular", 2,
+       [](Session& s) {
+         return reports_singular(s, {matrix("[[1, 2], [0.5, 1 + 2^-51]]", 1, 2, 0.5, 1 + 0x1p-51)});
+       }},
+      {"the inverse of a 2x2 matrix scaled by 1e-170 or 1e170 is accurate (a d under/overflows unless A is scaled)",
+       3, [](Session& s) {
+         return inverts_accurately(s, {matrix("1e-170 [[4, 7], [2, 6]]", 4e-170, 7e-170, 2e-170, 6e-170),
+                                       matrix("1e170 [[4, 7], [2, 6]]", 4e170, 7e170, 2e170, 6e170)});
+       }},
+  };
+}
+
+const char* const inverse2x2_task = R"md(# inverse2x2: the closed-form inverse of a 2x2 matrix
+
+Write `solve(request)`: the inverse of a 2x2 matrix by the closed form (seed 003's inner solve), by hand.
+
+## Request and reply
+- Request: `A`, two rows `[[a, b], [c, d]]`.
+- Reply: `inverse` (two rows), or `"status": "singular"`.
+
+## The closed form
+det A = a d - b c and A^-1 = (1 / det A) [[d, -b], [-c, a]].
+A is singular to working precision when |det A| <= eps * (a^2 + b^2 + c^2 + d^2), eps = 2.220446049250313e-16
+(for a 2x2 matrix this means kappa_2(A) >= 1/eps): reply `{"status": "singular"}`.
+
+## Task 1: invert accurately
+The inverse must agree with the closed form (and GSL LU) to 10*kappa*eps, relative, including matrices with
+entries of very different sizes and a nearly singular (kappa ~ 7e12) matrix that is still invertible.
+
+## Task 2: report singular matrices
+Exactly singular matrices and matrices singular to working precision must give `"status": "singular"`.
+
+## Task 3: scale first
+A = 1e-170 [[4, 7], [2, 6]]: a d = 2.4e-339 underflows, and 1e170 [[4, 7], [2, 6]] overflows. Scale A by a power
+of two s (exact: `math.frexp`/`math.ldexp`, `std::frexp`/`std::ldexp`) so max|a_ij| is near 1, invert, and
+divide the result by s.
+
+## Hints
+- det = a d - b c, not b c - a d: a sign error negates the whole inverse.
+- The inverse is [[d, -b], [-c, a]] / det: the off-diagonal entries stay where they are (not transposed).
+)md";
+
+}  // namespace
+
+Exercise inverse2x2_exercise() {
+  Exercise exercise;
+  exercise.name = "inverse2x2";
+  exercise.summary = "the closed-form 2x2 inverse, its singular test, and scaling";
+  exercise.task = inverse2x2_task;
+  exercise.stubs.python = "    raise NotImplementedError(\"not implemented: 2x2 inverse (reply inverse, or status singular)\")\n";
+  exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: 2x2 inverse (reply inverse, or status singular)\");\n";
+  exercise.stubs.octave = "  error('not implemented: 2x2 inverse (reply inverse, or status singular)');\n";
+  exercise.battery = inverse2x2_battery;
+  return exercise;
+}
+
+}  // namespace numlab::exercises

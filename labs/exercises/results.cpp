@@ -1,0 +1,170 @@
+#include "exercises/results.hpp"
+
+#include <fmt/format.h>
+
+#include <sstream>
+
+#include "output/report_style.hpp"
+
+namespace numlab::exercises {
+
+namespace {
+
+using cli::html_escape;
+
+int count(const std::vector<CheckResult>& results, CheckStatus status) {
+  int n = 0;
+  for (const CheckResult& result : results) n += result.status == status ? 1 : 0;
+  return n;
+}
+
+// The check's message and, when a known mistake fits, its hint.
+std::string message_with_hint(const CheckResult& result) {
+  if (result.hint.empty()) return result.message;
+  return result.message + "\nHint: " + result.hint;
+}
+
+std::string milliseconds(double seconds) { return fmt::format("{:.3g} ms", seconds * 1e3); }
+
+// "you 0.41 ms/request, numlab GEPP 0.012 ms, GSL LU 0.009 ms"; "" when the program was not timed.
+std::string timing_line(const CheckResult& result) {
+  if (result.seconds_per_request <= 0.0) return "";
+  std::string line = "you " + milliseconds(result.seconds_per_request) + "/request";
+  for (const ReferenceTime& reference : result.references) {
+    line += ", " + reference.name + " " + milliseconds(reference.seconds_per_request);
+  }
+  return line;
+}
+
+// The program's stderr cut to its first lines (each cut too), for the terminal.
+std::string shortened(const std::string& output) {
+  constexpr std::size_t max_lines = 8, max_columns = 160;
+  std::istringstream lines(output);
+  std::string line, out;
+  std::size_t shown = 0, total = 0;
+  while (std::getline(lines, line)) {
+    ++total;
+    if (shown == max_lines) continue;
+    if (line.size() > max_columns) line = line.substr(0, max_columns) + " ...";
+    out += line + '\n';
+    ++shown;
+  }
+  if (total > shown) out += fmt::format("... ({} more lines)\n", total - shown);
+  return out;
+}
+
+std::string indented(const std::string& text, const std::string& indent) {
+  std::istringstream lines(text);
+  std::string line, out;
+  while (std::getline(lines, line)) out += indent + line + '\n';
+  return out;
+}
+
+std::string mark(const CheckResult& result) {
+  switch (result.status) {
+    case CheckStatus::pass: return "✓ " + result.name;
+    case CheckStatus::fail: return "✗ " + result.name;
+    case CheckStatus::error: return "✗ " + result.name + " (error)";
+  }
+  return result.name;
+}
+
+}  // namespace
+
+nlohmann::ordered_json results_json(const std::vector<CheckResult>& results, const std::string& error_message) {
+  const int errors = count(results, CheckStatus::error);
+  const int passes = count(results, CheckStatus::pass);
+  const bool all_errored = errors == static_cast<int>(results.size());
+  const char* status = all_errored ? "error" : passes == static_cast<int>(results.size()) ? "pass" : "fail";
+
+  nlohmann::ordered_json json;
+  json["version"] = 3;
+  json["status"] = status;
+  if (!error_message.empty()) {
+    json["message"] = error_message;
+  } else if (!all_errored) {
+    json["message"] = nullptr;
+  } else if (results.empty()) {
+    json["message"] = "no check was run";
+  } else {
+    json["message"] = fmt::format("every check errored; the first, '{}': {}", results.front().name,
+                                  results.front().message);
+  }
+  json["tests"] = nlohmann::ordered_json::array();
+  for (const CheckResult& result : results) {
+    nlohmann::ordered_json test;
+    test["name"] = result.name;
+    test["status"] = to_string(result.status);
+    test["message"] = result.status == CheckStatus::pass ? nlohmann::ordered_json() : nlohmann::ordered_json(message_with_hint(result));
+    test["task_id"] = result.task_id;
+    test["output"] = result.output.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(result.output);
+    nlohmann::ordered_json timing;
+    timing["you"] = result.seconds_per_request > 0.0 ? nlohmann::ordered_json(result.seconds_per_request)
+                                                      : nlohmann::ordered_json();
+    for (const ReferenceTime& reference : result.references) timing[reference.name] = reference.seconds_per_request;
+    test["timing"] = timing;
+    json["tests"].push_back(test);
+  }
+  return json;
+}
+
+std::string results_summary(const std::vector<CheckResult>& results) {
+  const int total = static_cast<int>(results.size());
+  const int fails = count(results, CheckStatus::fail), errors = count(results, CheckStatus::error);
+  std::string line = fmt::format("{} of {} checks pass", count(results, CheckStatus::pass), total);
+  if (fails > 0) line += fmt::format("; {} fail", fails);
+  if (errors > 0) line += fmt::format("{} {} error{}", fails > 0 ? "," : ";", errors, errors == 1 ? "" : "s");
+  return line;
+}
+
+std::string results_text(const Exercise& exercise, const std::vector<CheckResult>& results) {
+  std::string text = fmt::format("numlab exercise {}: {}\n\n", exercise.name, exercise.summary);
+  for (const CheckResult& result : results) {
+    text += mark(result) + '\n';
+    if (const std::string timing = timing_line(result); !timing.empty()) text += "    " + timing + '\n';
+  }
+  if (count(results, CheckStatus::pass) < static_cast<int>(results.size())) {
+    text += "\nFailures\n--------\n";
+    for (const CheckResult& result : results) {
+      if (result.status == CheckStatus::pass) continue;
+      text += '\n' + mark(result) + '\n' + indented(message_with_hint(result), "    ");
+      if (!result.output.empty()) text += "    Output (stderr):\n" + indented(shortened(result.output), "      | ");
+    }
+  }
+  return text + '\n' + results_summary(results) + '\n';
+}
+
+std::string results_html(const Exercise& exercise, const std::vector<CheckResult>& results,
+                         const std::string& command) {
+  std::string body = "<p><em>" + html_escape(exercise.summary) + "</em></p>\n<p>Checked: <code>" +
+                     html_escape(command) + "</code></p>\n<p class=\"summary\">" +
+                     html_escape(results_summary(results)) + "</p>\n";
+  body += "<h2>Checks</h2>\n<table>\n<tr><th>check</th><th>task</th><th>result</th><th>time per request</th></tr>\n";
+  for (const CheckResult& result : results) {
+    const std::string status = to_string(result.status);
+    const std::string timing = timing_line(result);
+    body += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{} {}</td><td>{}</td></tr>\n",
+                        html_escape(result.name), result.task_id, status,
+                        result.status == CheckStatus::pass ? "✓" : "✗", status,
+                        timing.empty() ? "-" : html_escape(timing));
+  }
+  body += "</table>\n";
+  if (count(results, CheckStatus::pass) < static_cast<int>(results.size())) {
+    body += "<h2>Failures</h2>\n";
+    for (const CheckResult& result : results) {
+      if (result.status == CheckStatus::pass) continue;
+      body += fmt::format("<h3 class=\"{}\">✗ {}</h3>\n<p class=\"message\">{}</p>\n", to_string(result.status),
+                          html_escape(result.name), html_escape(result.message));
+      if (!result.hint.empty()) body += "<p class=\"hint\">Hint: " + html_escape(result.hint) + "</p>\n";
+      if (!result.output.empty()) body += "<p>Output (stderr):</p>\n<pre>" + html_escape(result.output) + "</pre>\n";
+    }
+  }
+  const std::string css =
+      ".pass { color: #1a7f37; font-weight: bold; } .fail { color: #b42318; font-weight: bold; }\n"
+      ".error { color: #b54708; font-weight: bold; } .summary { font-size: 1.15em; font-weight: bold; }\n"
+      ".message { white-space: pre-wrap; font-family: monospace; } .hint { background: #fff8e1; padding: 0.4em; }\n"
+      "td:nth-child(2) { text-align: center; } td:nth-child(3) { text-align: left; }\n";
+  return cli::html_page("numlab exercise " + exercise.name, body, css);
+}
+
+}  // namespace numlab::exercises

@@ -1,0 +1,35 @@
+#pragma once
+// What `numlab exercise check` reports (docs/exercises.md, "Output"): the results of a battery as
+// results.json (the Exercism test-runner interface, version 3), as text for the terminal, and as
+// a self-contained report.html in the style of the lab reports.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "exercises/checker.hpp"
+#include "exercises/exercise.hpp"
+
+namespace numlab::exercises {
+
+// {"version": 3, "status", "message", "tests": [{"name", "status", "message", "task_id", "output",
+// "timing"}]}. The status is "pass" when every check passes, "error" when every check errored (or
+// none ran), "fail" otherwise. The top message is null unless the status is "error": then it says
+// why (`error_message` when given, else the first check's error). A test's message is null on a
+// pass, else the check's message with its hint ("Hint: ..."); its output is the program's stderr
+// (null when empty); "timing" (an extra field) holds seconds per request: "you" and each reference.
+nlohmann::ordered_json results_json(const std::vector<CheckResult>& results, const std::string& error_message = "");
+
+// One line per check ("✓ name", "✗ name", "✗ name (error)") with the time per request beside the
+// references', then the failures (message, hint, shortened output), then the summary line
+// ("5 of 9 checks pass; 3 fail, 1 error").
+std::string results_text(const Exercise& exercise, const std::vector<CheckResult>& results);
+
+// The summary line alone.
+std::string results_summary(const std::vector<CheckResult>& results);
+
+// report.html: the exercise, the command checked, a table of the checks and each failure in full.
+std::string results_html(const Exercise& exercise, const std::vector<CheckResult>& results,
+                         const std::string& command);
+
+}  // namespace numlab::exercises

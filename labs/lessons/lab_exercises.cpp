@@ -1,0 +1,148 @@
+// Lab `exercises`: `numlab exercise` from an instructor's side. The exercises, a Python starter
+// for gepp, the starter checked (every check fails: not implemented), a correct GEPP and one
+// without pivoting checked, and their verdicts read. Every sentence is built from the results.
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "cli/cli_common.hpp"
+#include "cli/data_dir.hpp"
+#include "exercises/checker.hpp"
+#include "exercises/child_session.hpp"
+#include "exercises/results.hpp"
+#include "exercises/starters.hpp"
+#include "lessons/lab.hpp"
+#include "lessons/lab_sentences.hpp"
+
+namespace numlab::cli {
+
+namespace {
+
+using exercises::CheckResult;
+using exercises::CheckStatus;
+
+constexpr double time_limit_s = 10.0;
+
+bool python_with_numpy() { return std::system("python3 -c 'import numpy' >/dev/null 2>&1") == 0; }
+
+int count_status(const std::vector<CheckResult>& results, CheckStatus status) {
+  int n = 0;
+  for (const CheckResult& result : results) n += result.status == status ? 1 : 0;
+  return n;
+}
+
+// Runs the battery against `python3 program` and prints the text a student sees. Also writes
+// results.json and report.html into FOLDER/NAME, as `exercise check --out` does.
+std::vector<CheckResult> check(LabSession& session, const exercises::Exercise& exercise, const std::string& program,
+                               const std::string& name) {
+  const std::vector<std::string> command = {"python3", program};
+  session.out() << fmt::format("$ numlab exercise check {} --out {}/{} -- python3 {}\n\n", exercise.name,
+                               session.folder(), name, program);
+  exercises::ChildSession child(exercise.name, command, time_limit_s);
+  const std::vector<CheckResult> results = exercises::run_checks(exercise, child);
+  session.out() << exercises::results_text(exercise, results) << '\n';
+  const std::string out = session.folder() + "/" + name;
+  ensure_directory(out);
+  write_file_atomically(out + "/results.json", exercises::results_json(results).dump(2) + "\n");
+  write_file_atomically(out + "/report.html", exercises::results_html(exercise, results, "python3 " + program));
+  return results;
+}
+
+// The first line of `text` (a message's first line is its verdict).
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+}  // namespace
+
+int run_exercises_lab(LabSession& session) {
+  session.begin_step("The exercises",
+                     "`numlab exercise list` names the methods a student writes in their own language. The "
+                     "checker runs the student's program as a child process, sends it requests as JSON lines and "
+                     "compares each reply with an independent reference: GSL, Eigen, numlab's own steppers, a "
+                     "closed form or NIST's certified values.");
+  Table list({"exercise", "what the student writes"});
+  for (const exercises::Exercise& exercise : exercises::all_exercises()) list.add_row({exercise.name, exercise.summary});
+  session.show(list, "exercises");
+
+  if (!python_with_numpy()) {
+    session.say("This lab runs Python solutions, and `python3 -c 'import numpy'` fails here: python3 with numpy "
+                "is needed (Debian: apt-get install python3 python3-numpy). The lab stops.");
+    return 1;
+  }
+
+  const exercises::Exercise& gepp = exercises::find_exercise("gepp");
+  const std::string starter = session.folder() + "/gepp-starter";
+  const std::vector<exercises::StarterFile> files = exercises::starter_files(gepp, exercises::Language::python);
+  exercises::write_starter_files(starter, files);
+  std::string written;
+  for (const exercises::StarterFile& file : files) {
+    written += fmt::format("{}{} ({} bytes)", written.empty() ? "" : ", ", file.path, file.contents.size());
+  }
+  session.begin_step("A Python starter for gepp",
+                     fmt::format("`numlab exercise init gepp {} --lang python` wrote {}. TASK.md is the task "
+                                 "(`numlab exercise show gepp`) with the command that checks it. solution.py "
+                                 "already reads the requests and prints the replies; the student writes only "
+                                 "solve(request), which as generated raises \"not implemented\".",
+                                 starter, written));
+
+  const std::string program = starter + "/solution.py";
+  session.begin_step("The starter, checked", "Before a line of the method is written, the check runs: the "
+                                             "starter must fail honestly, not crash.");
+  const auto starter_results = check(session, gepp, program, "check-starter");
+  int not_implemented = 0;
+  for (const CheckResult& result : starter_results) {
+    not_implemented += result.status == CheckStatus::fail && result.message.find("not implemented") != std::string::npos;
+  }
+  const int total = static_cast<int>(starter_results.size());
+  session.say(fmt::format("{} checks fail with the stub's \"not implemented\", and {} give an error. A failing check means "
+                          "the program answered and the answer was wrong (here: it said it cannot answer); an "
+                          "error would mean it gave no usable reply (a crash, a hang, garbage).",
+                          count_of(not_implemented, total),
+                          count_of(count_status(starter_results, CheckStatus::error), total)));
+
+  const std::string examples = examples_dir();
+  session.begin_step("A correct GEPP",
+                     "gepp_solution.py does Gaussian elimination with partial pivoting by hand on numpy arrays, "
+                     "and reports its pivots as a trace, one entry per column.");
+  const auto correct = check(session, gepp, examples + "/gepp_solution.py", "check-correct");
+  const int correct_passes = count_status(correct, CheckStatus::pass);
+  session.say(fmt::format("{} checks pass.", count_of(correct_passes, static_cast<int>(correct.size()))));
+  for (const CheckResult& result : correct) {
+    if (result.status != CheckStatus::pass || result.references.empty() || result.seconds_per_request <= 0) continue;
+    const exercises::ReferenceTime& reference = result.references.front();
+    session.say(fmt::format("Speed is shown, never judged: on \"{}\" the Python solution took {:.3g} ms per "
+                            "request, {} {} ({:.3g} ms); the time includes the JSON exchange with the child.",
+                            result.name, result.seconds_per_request * 1e3,
+                            speed_ratio_phrase(result.seconds_per_request, reference.seconds_per_request),
+                            reference.name, reference.seconds_per_request * 1e3));
+    break;
+  }
+
+  session.begin_step("A GEPP without pivoting",
+                     "gepp_no_pivoting.py is the same program with one bug, named in its header: it never swaps "
+                     "rows, and eliminates each column with its diagonal entry.");
+  const auto buggy = check(session, gepp, examples + "/gepp_no_pivoting.py", "check-no-pivoting");
+  const int buggy_fails = count_status(buggy, CheckStatus::fail);
+  const int buggy_total = static_cast<int>(buggy.size());
+  session.say(fmt::format("{} checks fail, {} give an error, and {} pass.", count_of(buggy_fails, buggy_total),
+                          count_of(count_status(buggy, CheckStatus::error), buggy_total),
+                          count_of(count_status(buggy, CheckStatus::pass), buggy_total)));
+  for (const CheckResult& result : buggy) {
+    if (result.status != CheckStatus::fail) continue;
+    session.say(fmt::format("\"{}\" fails: {}{}", result.name, first_line(result.message),
+                            result.hint.empty() ? std::string(" No hint fits.") : " The hint: " + result.hint));
+  }
+
+  session.begin_step("Reading the verdicts",
+                     fmt::format("Each check run above also wrote results.json (the Exercism test-runner v3 shape, "
+                                 "for graders and CI) and report.html into {}/check-*. The correct solution passes "
+                                 "{}; the one without pivoting passes {}.",
+                                 session.folder(), count_of(correct_passes, static_cast<int>(correct.size())),
+                                 count_of(count_status(buggy, CheckStatus::pass), buggy_total)));
+  // The lab's lesson holds only if the checker told the two programs apart.
+  return correct_passes == static_cast<int>(correct.size()) && buggy_fails > 0 ? 0 : 1;
+}
+
+}  // namespace numlab::cli
