@@ -73,7 +73,8 @@ bool converges_linearly(const std::vector<TraceRow>& rows, std::size_t from) {
 }  // namespace
 
 std::optional<TraceDeparture> first_departure(const std::vector<TraceRow>& student, const std::vector<TraceRow>& reference,
-                                              double relative, double residual_floor, double step_floor) {
+                                              double relative, double residual_floor, double step_floor,
+                                              double start_residual) {
   const std::string allowed = fmt::format("allowed {} relative plus rounding {} on residual_inf", sci(relative), sci(residual_floor));
   for (std::size_t k = 0; k < reference.size(); ++k) {
     const TraceRow& ref = reference[k];
@@ -83,7 +84,8 @@ std::optional<TraceDeparture> first_departure(const std::vector<TraceRow>& stude
           fmt::format("iteration {}: your trace ends after {} iterations; numlab's Newton from the same start goes on "
                       "(residual_inf {} after iteration {})",
                       k + 1, student.size(), sci(reference[k].residual_inf), k + 1),
-          "a stop test that passes too early (a sum of residuals that cancel, or a signed test without abs)"};
+          "a stop test that passes too early (a sum of residuals that cancel, a signed test without abs), or a J that "
+          "is singular where f's derivative is not (a column from the wrong angle can make it so)"};
     }
     const TraceRow& got = student[k];
     const bool step_ok = std::abs(got.step_inf - ref.step_inf) <= relative * ref.step_inf + step_floor;
@@ -94,7 +96,10 @@ std::optional<TraceDeparture> first_departure(const std::vector<TraceRow>& stude
         "iteration {}: residual_inf = {}, step_inf = {}; numlab's Newton (GEPP, x <- x + dx with J dx = -f) from the same "
         "start has residual_inf = {}, step_inf = {} ({})",
         k + 1, sci(got.residual_inf), sci(got.step_inf), sci(ref.residual_inf), sci(ref.step_inf), allowed);
-    if (step_ok && got.residual_inf > ref.residual_inf) {
+    const double before = k == 0 ? start_residual : reference[k - 1].residual_inf;
+    if (std::abs(got.residual_inf - before) <= relative * before + residual_floor) {
+      departure.hint = "residual_inf is the residual before the step: record ||f|| after x <- x + dx";
+    } else if (step_ok && got.residual_inf > before) {
       departure.hint = "the step has Newton's length but the residual does not fall as it should: a sign error, such as "
                        "x <- x - dx where dx already solves J dx = -f";
     } else if (converges_linearly(student, k)) {

@@ -57,14 +57,15 @@ std::optional<std::vector<TraceRow>> read_trace(const nlohmann::json& reply);
 // A row departs when residual_inf or step_inf differs from numlab's by more than `relative`
 // (relative to numlab's value), while numlab's residual is above `residual_floor` (below it both
 // are rounding noise). The message names the iteration and both values; `hint` the mistake that
-// fits (a sign error when the step's size agrees and the residual does not, a wrong Jacobian when
-// convergence is no longer quadratic).
+// fits (the residual recorded before the step, a sign error when the step's size agrees and the
+// residual grew, a wrong Jacobian when convergence is no longer quadratic). start_residual: ||f(x0)||_inf.
 struct TraceDeparture {
   std::string message;
   std::string hint;
 };
 std::optional<TraceDeparture> first_departure(const std::vector<TraceRow>& student, const std::vector<TraceRow>& reference,
-                                              double relative, double residual_floor, double step_floor);
+                                              double relative, double residual_floor, double step_floor,
+                                              double start_residual);
 
 // A start whose residual is exactly `target` (to rounding): numlab's Newton on f(x) - target from
 // the root x_root. Used to build starts on which a wrong stop test passes (components that cancel

@@ -95,9 +95,6 @@ class NewtonBattery {
       const Request& request = requests[r];
       const Answer answer = ask(session, request);
       const std::string where = Linkage::where(request.angle);
-      if (auto dishonest = dishonest_reply(answer.reply, request.tolerance, request.max_iterations, rounding(), where)) {
-        return *dishonest;
-      }
       const Closure closure(request.angle);
       typename Closure::Vector f;
       typename Closure::Matrix J;
@@ -119,12 +116,16 @@ class NewtonBattery {
       if (error > allowed) {
         return Verdict::fail(
             fmt::format("{}: {} differs from the closed form by {} rad, allowed {} (2 ||J^-1||_inf (tolerance + 1e3 eps "
-                        "L), kappa_inf(J) = {}); your ||f||_inf = {}",
+                        "L), kappa_inf(J) = {}); ||f||_inf at your angles (numlab's f) = {}",
                         where, Linkage::angle_name(worst), sci(error), sci(allowed), sci(kappa_inf(J)),
                         sci(answer.reply.residual_inf)),
             error > 0.1 ? "a root of another branch (assembly mode), or a wrong f: start from the given angles and "
                           "check f against the task's equations"
-                        : "the residual test passed on a wrong f: compare f with the task's equations");
+                        : "the residual test passed on a wrong f: compare f with the task's equations (lengths, "
+                          "and which angles are measured from -x)");
+      }
+      if (auto dishonest = dishonest_reply(answer.reply, request.tolerance, request.max_iterations, rounding(), where)) {
+        return *dishonest;
       }
     }
     return Verdict::pass(reference_times(requests.front()));
@@ -157,8 +158,11 @@ class NewtonBattery {
       // Two correct Newton codes from one start agree to rounding amplified by kappa at each step.
       const double relative = std::max(1e-6, 1e3 * kappa_inf(J) * eps);
       const double step_floor = inverse_inf_norm(J) * rounding();
-      if (auto departure = first_departure(*trace, reference, relative, rounding(), step_floor)) {
-        return Verdict::fail(where + ", " + departure->message, departure->hint);
+      if (auto departure = first_departure(*trace, reference, relative, rounding(), step_floor,
+                                           f.template lpNorm<Eigen::Infinity>())) {
+        return Verdict::fail(fmt::format("{} (your status \"{}\" after {} iterations), {}", where, answer.reply.status,
+                                         answer.reply.iterations, departure->message),
+                             departure->hint);
       }
     }
     return Verdict::pass(reference_times(requests.front()));
