@@ -36,6 +36,10 @@ CheckResult run_one(const Check& check, Session& session, bool& child_failed) {
   } catch (const ChildFailure& error) {
     result.message = error.what();
     child_failed = true;
+  } catch (const std::exception& error) {
+    // A reply shaped in a way no check foresaw: still an error of this check, never a crash of the
+    // checker (fuzz/fuzz_exercise_reply.cpp hunts for these).
+    result.message = fmt::format("numlab could not use the reply: {}", error.what());
   }
   result.seconds_per_request = session.seconds_per_request();
   result.output = session.take_output();

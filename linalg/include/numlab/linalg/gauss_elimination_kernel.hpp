@@ -29,7 +29,7 @@ EliminationOutcome gepp_kernel(WorkMatrix& U, VectorType& c, VectorType& inverse
   const int n = N == Eigen::Dynamic ? static_cast<int>(U.rows()) : N;
   // Differs from the textbook: rows as raw pointers (row-major, so each row is contiguous).
   double* const rows = U.data();
-  const auto row = [rows, n](int i) { return rows + static_cast<Eigen::Index>(i) * n; };
+  const auto row = [rows, stride = static_cast<Eigen::Index>(n)](int i) { return rows + static_cast<Eigen::Index>(i) * stride; };
 
   for (int k = 0; k < n; ++k) {
     int pivot_row = k;
