@@ -10,6 +10,7 @@ Exercise gauss_seidel_exercise();
 Exercise inverse2x2_exercise();
 Exercise polyfit_exercise();
 Exercise jansen_jacobian_exercise();
+Exercise jansen10_jacobian_exercise();
 Exercise jansen_newton_exercise();
 Exercise mustang_newton_exercise();
 

@@ -13,6 +13,7 @@ const std::vector<Exercise>& all_exercises() {
       inverse2x2_exercise(),
       polyfit_exercise(),
       jansen_jacobian_exercise(),
+      jansen10_jacobian_exercise(),
       jansen_newton_exercise(),
       mustang_newton_exercise(),
   };

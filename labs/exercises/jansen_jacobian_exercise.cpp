@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <limits>
-#include <optional>
 
 #include "exercises/exercise_list.hpp"
 #include "exercises/jansen_poses.hpp"
@@ -53,17 +52,7 @@ std::string pose_text(const Pose& pose) {
 double f_tolerance() { return 1e3 * eps * jansen_links_sum(); }
 
 std::vector<ReferenceTime> closure_time(const Pose& pose) {
-  const JansenClosure closure(pose.crank_angle);
-  JansenClosure::Vector f;
-  JansenClosure::Matrix J;
-  volatile double sink = 0.0;
-  const double seconds = median_seconds([&] {
-    for (int i = 0; i < 1000; ++i) {
-      closure.residual_and_jacobian(pose.theta, f, J);
-      sink = sink + J(0, 0);
-    }
-  });
-  return {{"numlab JansenClosure (f and J)", seconds / 1000.0}};
+  return {{"numlab JansenClosure (f and J)", residual_and_jacobian_seconds(JansenClosure(pose.crank_angle), pose.theta)}};
 }
 
 std::string f_hint(int row, double got, double expected) {
@@ -93,40 +82,9 @@ Verdict check_f(Session& session) {
   return Verdict::pass(closure_time(list.front()));
 }
 
-// Central differences of numlab's f: the independent reference for numlab's analytic J.
-Eigen::MatrixXd central_differences(const Pose& pose) {
-  const JansenClosure closure(pose.crank_angle);
-  Eigen::MatrixXd J(8, 8);
-  for (int k = 0; k < 8; ++k) {
-    const double h = std::cbrt(eps) * std::max(1.0, std::abs(pose.theta(k)));
-    JansenAngles up = pose.theta, down = pose.theta;
-    up(k) += h;
-    down(k) -= h;
-    JansenClosure::Vector f_up, f_down;
-    closure.residual(up, f_up);
-    closure.residual(down, f_down);
-    J.col(k) = (f_up - f_down) / (2.0 * h);
-  }
-  return J;
-}
-
-// The angle whose column k the student's column k is, if any: numlab's J with theta_k replaced by
-// theta_j, for each j != k.
-std::optional<int> column_from_angle(const Eigen::MatrixXd& got, const Pose& pose, int k, double tolerance) {
-  for (int j = 0; j < 8; ++j) {
-    if (j == k) continue;
-    JansenAngles swapped = pose.theta;
-    swapped(k) = pose.theta(j);
-    JansenClosure::Matrix other;
-    JansenClosure(pose.crank_angle).jacobian(swapped, other);
-    if ((got.col(k) - other.col(k)).cwiseAbs().maxCoeff() <= tolerance) return j;
-  }
-  return std::nullopt;
-}
-
 std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, const Pose& pose, int row, int col,
                    double tolerance) {
-  if (const auto angle = column_from_angle(got, pose, col, tolerance)) {
+  if (const auto angle = column_from_angle(JansenClosure(pose.crank_angle), got, pose.theta, col, tolerance)) {
     return fmt::format("column {} (d/d {}) is evaluated at {}: a column from the wrong angle", col,
                        jansen_angle_name(col), jansen_angle_name(*angle));
   }
@@ -144,7 +102,7 @@ Verdict check_J(Session& session) {
     const Eigen::MatrixXd J = matrix_field(reply, "J", 8, 8);
     JansenClosure::Matrix expected;
     JansenClosure(pose.crank_angle).jacobian(pose.theta, expected);
-    const Eigen::MatrixXd differences = central_differences(pose);
+    const Eigen::MatrixXd differences = central_differences(JansenClosure(pose.crank_angle), pose.theta);
     // J's entries are at most a link long; rounding in them is a few eps of that.
     const double tolerance = 1e3 * eps * expected.cwiseAbs().maxCoeff();
     for (int i = 0; i < 8; ++i) {

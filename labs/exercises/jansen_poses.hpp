@@ -11,6 +11,10 @@ namespace numlab::exercises {
 // theta1 ... theta8 of the closed-form pose at `crank_angle` (radians), on seed 000's branch.
 mechanisms::JansenAngles jansen_closed_form_angles(double crank_angle);
 
+// theta3 ... theta12 of seed 001's 10-equation model at the same closed-form pose, each within pi
+// of the model's start (jansen_seed_estimates).
+Eigen::VectorXd jansen10_closed_form_angles(double crank_angle);
+
 // The sum of the links of the 8-equation closure (15 + 50 + ... + 36.7): f's scale in messages.
 double jansen_links_sum();
 

@@ -6,6 +6,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -23,6 +25,39 @@ double worst_angle_error(const Eigen::VectorXd& got, const Eigen::VectorXd& expe
 // ||J^-1||_inf and kappa_inf(J) = ||J||_inf ||J^-1||_inf (infinite for a singular J).
 double inverse_inf_norm(const Eigen::MatrixXd& J);
 double kappa_inf(const Eigen::MatrixXd& J);
+
+// Central differences of a closure's f at theta (step cbrt(eps) max(1, |theta_k|)): the
+// independent reference shown beside its analytic Jacobian in the Jacobian exercises' messages.
+template <typename Closure>
+Eigen::MatrixXd central_differences(const Closure& closure, const typename Closure::Vector& theta) {
+  Eigen::MatrixXd J(Closure::size, Closure::size);
+  for (int k = 0; k < Closure::size; ++k) {
+    const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(theta(k)));
+    typename Closure::Vector up = theta, down = theta, f_up, f_down;
+    up(k) += h;
+    down(k) -= h;
+    closure.residual(up, f_up);
+    closure.residual(down, f_down);
+    J.col(k) = (f_up - f_down) / (2.0 * h);
+  }
+  return J;
+}
+
+// The angle whose column k a student's column k is, if any: the closure's J with theta_k replaced
+// by theta_j, for each j != k, within `tolerance` (the mark of a column from the wrong angle).
+template <typename Closure>
+std::optional<int> column_from_angle(const Closure& closure, const Eigen::MatrixXd& got,
+                                     const typename Closure::Vector& theta, int k, double tolerance) {
+  for (int j = 0; j < Closure::size; ++j) {
+    if (j == k) continue;
+    typename Closure::Vector swapped = theta;
+    swapped(k) = theta(j);
+    typename Closure::Matrix other;
+    closure.jacobian(swapped, other);
+    if ((got.col(k) - other.col(k)).cwiseAbs().maxCoeff() <= tolerance) return j;
+  }
+  return std::nullopt;
+}
 
 // One iteration of a Newton trace: ||f||_inf after the step and ||step||_inf.
 struct TraceRow {
@@ -108,6 +143,21 @@ double median_seconds(Run&& run, int repeats = 5) {
   }
   std::sort(times.begin(), times.end());
   return times[times.size() / 2];
+}
+
+// Median seconds per evaluation of f and J together by `closure` at theta (for ReferenceTime).
+template <typename Closure>
+double residual_and_jacobian_seconds(const Closure& closure, const typename Closure::Vector& theta) {
+  typename Closure::Vector f;
+  typename Closure::Matrix J;
+  volatile double sink = 0.0;
+  const double seconds = median_seconds([&] {
+    for (int i = 0; i < 1000; ++i) {
+      closure.residual_and_jacobian(theta, f, J);
+      sink = sink + J(0, 0);
+    }
+  });
+  return seconds / 1000.0;
 }
 
 // "1.2e-03" style numbers for messages.

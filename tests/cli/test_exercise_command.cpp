@@ -24,8 +24,8 @@ namespace fs = std::filesystem;
 TEST_CASE("exercise list names the seven exercises of the contract, one line each", "[exercise]") {
   const ProgramRun run = run_numlab("exercise list");
   REQUIRE(run.exit_code == 0);
-  for (const char* name : {"gepp", "gauss-seidel", "inverse2x2", "polyfit", "jansen-jacobian", "jansen-newton",
-                           "mustang-newton"}) {
+  for (const char* name : {"gepp", "gauss-seidel", "inverse2x2", "polyfit", "jansen-jacobian", "jansen10-jacobian",
+                           "jansen-newton", "mustang-newton"}) {
     CHECK_THAT(run.out, Contains(std::string("\n") + name + " ") || Catch::Matchers::StartsWith(std::string(name) + " "));
   }
 }

@@ -1,0 +1,282 @@
+// jansen10-jacobian: the student's f and J of seed 001's 10-equation Jansen closure, against
+// numlab's Jansen10Closure (with central differences of its f shown beside it).
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <limits>
+#include <optional>
+
+#include "exercises/exercise_list.hpp"
+#include "exercises/jansen_poses.hpp"
+#include "exercises/linkage_checks.hpp"
+#include "exercises/reply_fields.hpp"
+#include "exercises/session.hpp"
+#include "numlab/mechanisms/jansen10_closure.hpp"
+#include "numlab/mechanisms/jansen_leg.hpp"
+#include "numlab/mechanisms/jansen_solvers.hpp"
+
+namespace numlab::exercises {
+
+namespace {
+
+using mechanisms::Jansen10Closure;
+using mechanisms::JansenModel;
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+// The unknown theta_(k+3) is the direction of seed 001's vector r_(k+3).
+struct Link {
+  const char* vector;
+  const char* joints;
+  double length;
+};
+
+std::array<Link, 10> links() {
+  const mechanisms::JansenLengths L;
+  const mechanisms::JansenFootLengths foot;
+  return {{{"r3", "A->B", L.l1},
+           {"r4", "B->P1", L.l2},
+           {"r5", "B->C", L.l3},
+           {"r6", "C->P1", L.l4},
+           {"r7", "C->E", L.l5},
+           {"r8", "P1->D", L.l7},
+           {"r9", "E->D", L.l8},
+           {"r10", "D->A", L.l6},
+           {"r11", "D->F", foot.l9},
+           {"r12", "F->E", foot.l10}}};
+}
+
+std::string angle_name(int k) { return mechanisms::jansen_angle_names(JansenModel::ten_equations)[static_cast<std::size_t>(k)]; }
+
+// f's scale: the crank, the ten links and the offsets of P1.
+double links_sum() {
+  const mechanisms::JansenLengths L;
+  double sum = L.crank + L.a + L.b;
+  for (const Link& link : links()) sum += link.length;
+  return sum;
+}
+
+struct Pose {
+  double crank_angle;
+  Jansen10Closure::Vector theta;
+};
+
+// The model's start (seed 000's estimates read through their joints), four solved poses around
+// the cycle, and two poses away from any root (where f is large, so every term of every row counts).
+std::vector<Pose> poses() {
+  std::vector<Pose> list = {
+      {mechanisms::JansenClosure::seed_crank_angle, mechanisms::jansen_seed_estimates(JansenModel::ten_equations, mechanisms::JansenLeg())}};
+  for (double deg : {0.0, 90.0, 200.0, 300.0}) list.push_back({deg * degrees, jansen10_closed_form_angles(deg * degrees)});
+  Jansen10Closure::Vector offset;
+  offset << 0.3, -0.2, 0.5, -0.4, 0.25, -0.35, 0.45, -0.15, 0.2, -0.3;
+  list.push_back({1.0, jansen10_closed_form_angles(1.0) + offset});
+  list.push_back({4.0, jansen10_closed_form_angles(4.0) - 2.0 * offset});
+  return list;
+}
+
+nlohmann::json request_for(const Pose& pose) {
+  return {{"crank_angle", pose.crank_angle}, {"theta", to_json(Eigen::VectorXd(pose.theta))}};
+}
+
+std::string pose_text(const Pose& pose) {
+  return fmt::format("crank_angle (theta2) {:.4f} rad, theta3 ... theta12 = [{:.4f}]", pose.crank_angle,
+                     fmt::join(pose.theta.data(), pose.theta.data() + 10, ", "));
+}
+
+std::vector<ReferenceTime> closure_time(const Pose& pose) {
+  return {{"numlab Jansen10Closure (f and J)", residual_and_jacobian_seconds(Jansen10Closure(pose.crank_angle), pose.theta)}};
+}
+
+// Rows 0, 1, 6 and 7 start from P1->A = (b + li cos theta2, a + li sin theta2).
+std::string f_hint(int row, double got, double expected) {
+  const mechanisms::JansenLengths L;
+  const bool from_crank = row == 0 || row == 1 || row == 6 || row == 7;
+  if (from_crank && std::abs(std::abs(got - expected) - (L.b - L.a)) < 1e-6) {
+    return "the offsets of P1 are swapped: X = b + li cos(theta2) with b = 38, Y = a + li sin(theta2) with a = 7.8";
+  }
+  return "compare the row with the task's equation: even rows are x components (cosines), odd rows y components "
+         "(sines), each loop's vectors with the signs of its direction";
+}
+
+Verdict check_f(Session& session) {
+  const double tolerance = 1e3 * eps * links_sum();  // far above rounding, far below any wrong term
+  const auto list = poses();
+  for (const Pose& pose : list) {
+    const nlohmann::json reply = session.ask(request_for(pose));
+    const Eigen::VectorXd f = vector_field(reply, "f", 10);
+    Jansen10Closure::Vector expected;
+    Jansen10Closure(pose.crank_angle).residual(pose.theta, expected);
+    for (int i = 0; i < 10; ++i) {
+      if (std::abs(f(i) - expected(i)) <= tolerance) continue;
+      return Verdict::fail(fmt::format("f[{}] = {:.10g}, expected {:.10g} (numlab's Jansen10Closure, seed 001's f{}, "
+                                       "eq {}) at {}; allowed |error| {} (1e3 eps times the links' sum {:.4g})",
+                                       i, f(i), expected(i), i + 1, i + 8, pose_text(pose), sci(tolerance), links_sum()),
+                           f_hint(i, f(i), expected(i)));
+    }
+  }
+  return Verdict::pass(closure_time(list.front()));
+}
+
+// The digits of a length to 0.1 (67.5 and 65.7 have the same ones).
+std::string sorted_digits(double length) {
+  std::string digits = fmt::format("{:.1f}", length);
+  std::sort(digits.begin(), digits.end());
+  return digits;
+}
+
+// The length a student's J[row][col] implies: even (x) rows hold -+L sin, odd (y) rows +-L cos.
+// Nothing where that sine or cosine is too small to read a length from.
+std::optional<double> length_used(double entry, double angle, int row) {
+  const double trig = row % 2 == 0 ? std::sin(angle) : std::cos(angle);
+  if (std::abs(trig) < 0.2) return std::nullopt;
+  return std::abs(entry / trig);
+}
+
+std::string length_hint(double used, int col) {
+  const auto list = links();
+  const Link& link = list[static_cast<std::size_t>(col)];
+  for (const Link& other : list) {
+    if (&other != &link && std::abs(used - other.length) < 0.05) {
+      return fmt::format("an entry from the wrong link: it has |{}| = {:.4g} ({}) where |{}| = {:.4g} ({}) belongs",
+                         other.vector, other.length, other.joints, link.vector, link.length, link.joints);
+    }
+  }
+  if (std::abs(used - link.length) >= 0.05 && sorted_digits(used) == sorted_digits(link.length)) {
+    return fmt::format("a typed constant: the entry uses {:.1f} where |{}| = {:.4g} ({}), digits transposed, as in seed "
+                       "001's Jacobian (20), whose rows 9-10 have 67.5 for 65.7; type each length once, as a named "
+                       "constant",
+                       used, link.vector, link.length, link.joints);
+  }
+  return fmt::format("an entry from the wrong link or a mistyped constant: the entry implies a length {:.4g}; {} is "
+                     "|{}| = {:.4g} long",
+                     used, link.joints, link.vector, link.length);
+}
+
+std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, const Pose& pose, int row, int col,
+                   double tolerance) {
+  if (const auto angle = column_from_angle(Jansen10Closure(pose.crank_angle), got, pose.theta, col, tolerance)) {
+    return fmt::format("column {} (d/d {}) is evaluated at {}: a column from the wrong angle", col, angle_name(col),
+                       angle_name(*angle));
+  }
+  if (expected(row, col) == 0.0) {
+    return fmt::format("f[{}] has no {} term, so J[{}][{}] is 0: a term in the wrong row or column", row,
+                       angle_name(col), row, col);
+  }
+  if (std::abs(got(row, col) + expected(row, col)) <= tolerance) {
+    return "a sign: d(l sin t)/dt = l cos t and d(l cos t)/dt = -l sin t";
+  }
+  if (const auto used = length_used(got(row, col), pose.theta(col), row)) return length_hint(*used, col);
+  return "an entry from the wrong link or a mistyped constant: J[i][k] is +-l sin or +-l cos of theta_(k+3), with the "
+         "length l of that angle's link";
+}
+
+Verdict check_J(Session& session) {
+  const auto list = poses();
+  for (const Pose& pose : list) {
+    const nlohmann::json reply = session.ask(request_for(pose));
+    const Eigen::MatrixXd J = matrix_field(reply, "J", 10, 10);
+    const Jansen10Closure closure(pose.crank_angle);
+    Jansen10Closure::Matrix expected;
+    closure.jacobian(pose.theta, expected);
+    const Eigen::MatrixXd differences = central_differences(closure, pose.theta);
+    // J's entries are at most a link long; rounding in them is a few eps of that.
+    const double tolerance = 1e3 * eps * expected.cwiseAbs().maxCoeff();
+    for (int i = 0; i < 10; ++i) {
+      for (int k = 0; k < 10; ++k) {
+        if (std::abs(J(i, k) - expected(i, k)) <= tolerance) continue;
+        return Verdict::fail(
+            fmt::format("J[{}][{}] = {:.6g}, expected {:.6g} (d f[{}] / d {} from numlab's Jansen10Closure; central "
+                        "differences of f give {:.6g}) at {}; allowed |error| {} (1e3 eps times max |J|)",
+                        i, k, J(i, k), expected(i, k), i, angle_name(k), differences(i, k), pose_text(pose),
+                        sci(tolerance)),
+            J_hint(J, expected, pose, i, k, tolerance));
+      }
+    }
+  }
+  return Verdict::pass(closure_time(list.front()));
+}
+
+std::string equations_markdown() {
+  return R"(### The model: seed 001's Jansen leg, 10 equations in theta3 ... theta12
+
+Frame (as `numlab mechanism jansen10`): crank pivot O at the origin, fixed joint P1 = (-b, -a) =
+(-38, -7.8). The crank O->A has length li = 15 at `crank_angle` theta2 (radians, counter-clockwise
+from +x). Every unknown is the direction of one of seed 001's vectors, from +x, in radians:
+
+| unknown | vector | from->to | length | | unknown | vector | from->to | length |
+| --- | --- | --- | --- | --- | --- | --- | --- | --- |
+| theta3 | r3 | A->B | 50 | | theta8 | r8 | P1->D | 39.3 |
+| theta4 | r4 | B->P1 | 41.5 | | theta9 | r9 | E->D | 36.7 |
+| theta5 | r5 | B->C | 55.8 | | theta10 | r10 | D->A | 61.9 |
+| theta6 | r6 | C->P1 | 40.1 | | theta11 | r11 | D->F | 49 |
+| theta7 | r7 | C->E | 39.4 | | theta12 | r12 | F->E | 65.7 |
+
+With c_k = cos(theta_k), s_k = sin(theta_k), X = b + li cos(theta2) and Y = a + li sin(theta2)
+(the vector P1->A), f has exactly these 10 entries (index 0 first; f[i] is seed 001's f(i+1),
+its eq 8+i). Each pair closes one loop, x component first:
+
+    f[0] = X + 50 c3 + 41.5 c4                      (P1->A->B->P1, x)
+    f[1] = Y + 50 s3 + 41.5 s4                      (P1->A->B->P1, y)
+    f[2] = -41.5 c4 + 55.8 c5 + 40.1 c6             (P1->B->C->P1, x)
+    f[3] = -41.5 s4 + 55.8 s5 + 40.1 s6             (P1->B->C->P1, y)
+    f[4] = 40.1 c6 - 39.4 c7 + 39.3 c8 - 36.7 c9    (C->P1->D->E->C, x)
+    f[5] = 40.1 s6 - 39.4 s7 + 39.3 s8 - 36.7 s9    (C->P1->D->E->C, y)
+    f[6] = X - 39.3 c8 - 61.9 c10                   (P1->A->D->P1, x)
+    f[7] = Y - 39.3 s8 - 61.9 s10                   (P1->A->D->P1, y)
+    f[8] = 36.7 c9 + 49 c11 + 65.7 c12              (E->D->F->E, x)
+    f[9] = 36.7 s9 + 49 s11 + 65.7 s12              (E->D->F->E, y)
+
+J[i][k] = d f[i] / d theta_(k+3): d(l cos t)/dt = -l sin t and d(l sin t)/dt = l cos t. The
+crank angle is fixed, so X and Y have no derivative.
+)";
+}
+
+}  // namespace
+
+Exercise jansen10_jacobian_exercise() {
+  Exercise exercise;
+  exercise.name = "jansen10-jacobian";
+  exercise.summary = "f and J of seed 001's 10-equation Jansen leg closure, entry by entry";
+  exercise.task = R"(# jansen10-jacobian: seed 001's ten closure equations and their Jacobian
+
+Write `solve(request)` that evaluates the loop-closure residual f and its Jacobian J of seed 001's
+10-equation Jansen leg at given angles.
+
+- **Request:** `crank_angle` (theta2, radians), `theta` (10 angles theta3 ... theta12, radians).
+- **Reply:** `f` (10 numbers, in the order below), `J` (10 rows of 10: J[i][k] = d f[i] / d theta_(k+3)).
+
+)" + equations_markdown() + R"(
+## Task 1
+f follows the equations above exactly (same rows, same signs), at the model's start, at solved
+poses and at poses far from any root. Checked against numlab's `Jansen10Closure` to 1e3 eps of the
+links' sum.
+
+## Task 2
+J is the derivative of f, entry by entry. Checked against numlab's analytic Jacobian; the message
+also gives central differences of f. It names the first wrong entry.
+
+## Hints
+- Seed 001's own Jacobian (its eq 20, rows 9-10) has 67.5 where |r12| = 65.7: type each length
+  once, as a named constant, and use the name everywhere.
+- Each column k holds only theta_(k+3)'s link: an entry with another link's length is a term
+  copied from the wrong place.
+- A column from the wrong angle (cos theta6 where cos theta5 belongs) makes a whole column wrong.
+)";
+  exercise.stubs.python = "    raise NotImplementedError(\"not implemented: f and J of the 10-equation Jansen closure\")\n";
+  exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: f and J of the 10-equation Jansen closure\");\n";
+  exercise.stubs.octave = "  error('not implemented: f and J of the 10-equation Jansen closure');\n";
+  exercise.battery = [] {
+    return std::vector<Check>{
+        {"f follows seed 001's closure equations f1-f10 (its eqs 8-17) at 7 poses, to rounding (1e3 eps of the "
+         "links' sum)",
+         1, check_f},
+        {"J is the derivative of f: every entry matches numlab's analytic Jacobian of the 10 equations at 7 poses", 2,
+         check_J},
+    };
+  };
+  return exercise;
+}
+
+}  // namespace numlab::exercises
