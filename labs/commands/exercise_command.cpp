@@ -119,7 +119,7 @@ int ExerciseCommand::run() const {
 
 int ExerciseCommand::list() const {
   for (const auto& exercise : exercises::all_exercises()) {
-    std::cout << fmt::format("{:<16} {}\n", exercise.name, exercise.summary);
+    std::cout << fmt::format("{:<18} {}\n", exercise.name, exercise.summary);
   }
   return exit_success;
 }

@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 }  // namespace
 
-TEST_CASE("exercise list names the seven exercises of the contract, one line each", "[exercise]") {
+TEST_CASE("exercise list names the seven exercises of the contract and jansen10-jacobian, one line each", "[exercise]") {
   const ProgramRun run = run_numlab("exercise list");
   REQUIRE(run.exit_code == 0);
   for (const char* name : {"gepp", "gauss-seidel", "inverse2x2", "polyfit", "jansen-jacobian", "jansen10-jacobian",
