@@ -77,11 +77,11 @@ namespace {
 struct Pipe {
   std::array<int, 2> ends{-1, -1};
   Pipe() {
-    if (pipe2(ends.data(), O_CLOEXEC) != 0) throw_errno("exercise check: pipe");
+    if (pipe2(ends.data(), O_CLOEXEC) != 0) throw_errno("pipe");
     for (int& end : ends) {
       if (end > 2) continue;
       const int moved = fcntl(end, F_DUPFD_CLOEXEC, 3);
-      if (moved < 0) throw_errno("exercise check: fcntl");
+      if (moved < 0) throw_errno("fcntl");
       close(end);
       end = moved;
     }
@@ -160,7 +160,7 @@ ChildProcess::ChildProcess(const std::string& program, const std::vector<std::st
 
   const pid_t parent = getpid();
   pid_ = fork();
-  if (pid_ < 0) throw_errno("exercise check: fork");
+  if (pid_ < 0) throw_errno("fork");
   if (pid_ == 0)
     become_the_program(program.c_str(), argv.data(), directory.c_str(), parent, in.read_end(), out.write_end(),
                        err.write_end(), status.write_end());
@@ -252,7 +252,7 @@ ChildProcess::Outcome ChildProcess::exchange(std::string_view request, Clock::ti
                               pollfd{writing ? stdin_ : -1, POLLOUT, 0}};
     if (poll(fds.data(), fds.size(), wait_ms) < 0) {
       if (errno == EINTR) continue;
-      throw_errno("exercise check: poll");
+      throw_errno("poll");
     }
     if (fds[2].revents != 0) {
       const ssize_t put = write(stdin_, request.data() + written, request.size() - written);

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <csignal>
@@ -214,6 +215,9 @@ TEST_CASE("numlab terminated during a check takes the program's whole group with
       ChildSession session("echo", python_child("grandchild.py"), 30.0);
       const pid_t pids[2] = {session.process_group(), session.ask({}).at("grandchild").get<pid_t>()};
       if (write(report[1], pids, sizeof pids) != sizeof pids) _exit(3);
+      const std::string& folder = session.working_directory();
+      if (write(report[1], folder.data(), folder.size()) != static_cast<ssize_t>(folder.size())) _exit(3);
+      close(report[1]);
       session.ask({{"hang", true}});
     } catch (...) {
     }
@@ -222,6 +226,8 @@ TEST_CASE("numlab terminated during a check takes the program's whole group with
   close(report[1]);
   pid_t pids[2] = {0, 0};
   const bool reported = read(report[0], pids, sizeof pids) == sizeof pids;
+  std::string folder(4096, '\0');
+  folder.resize(static_cast<std::size_t>(std::max<ssize_t>(0, read(report[0], folder.data(), folder.size()))));
   close(report[0]);
   kill(checker, SIGTERM);
   int status = 0;
@@ -234,4 +240,7 @@ TEST_CASE("numlab terminated during a check takes the program's whole group with
   CHECK(group_gone(pids[0]));
   CHECK(process_gone(pids[1]));
   kill_survivors(pids[0]);
+  // The program wrote nothing there, so even a signal handler can remove its folder.
+  CHECK_THAT(folder, Contains("numlab-exercise-"));
+  CHECK_FALSE(fs::exists(folder));
 }
