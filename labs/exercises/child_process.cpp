@@ -195,6 +195,9 @@ ChildProcess::~ChildProcess() {
 
 namespace {
 
+// While nothing arrives, whether the program is still alive is looked at this often.
+constexpr int exit_check_ms = 50;
+
 int milliseconds_until(ChildProcess::Clock::time_point deadline) {
   const auto left = deadline - ChildProcess::Clock::now();
   if (left <= ChildProcess::Clock::duration::zero()) return 0;
@@ -244,16 +247,18 @@ ChildProcess::Outcome ChildProcess::exchange(std::string_view request, Clock::ti
       return Outcome::line;
     }
     if (pending_.size() > max_line) return Outcome::line_too_long;
-    if (stdout_ < 0) return Outcome::output_closed;
+    if (stdout_ < 0) return Outcome::ended;
     const int wait_ms = milliseconds_until(deadline);
     if (wait_ms == 0) return Outcome::timed_out;
 
     std::array<pollfd, 3> fds{pollfd{stdout_, POLLIN, 0}, pollfd{stderr_, POLLIN, 0},
                               pollfd{writing ? stdin_ : -1, POLLOUT, 0}};
-    if (poll(fds.data(), fds.size(), wait_ms) < 0) {
+    const int ready = poll(fds.data(), fds.size(), std::min(wait_ms, exit_check_ms));
+    if (ready < 0) {
       if (errno == EINTR) continue;
       throw_errno("poll");
     }
+    if (ready == 0 && leader_exited()) return Outcome::ended;
     if (fds[2].revents != 0) {
       const ssize_t put = write(stdin_, request.data() + written, request.size() - written);
       if (put > 0) written += static_cast<std::size_t>(put);

@@ -275,7 +275,7 @@ nlohmann::json ChildSession::ask(nlohmann::json request) {
       fail(fmt::format("no reply within {:g} s to request {} (the program was stopped)", timeout_seconds_, id));
     case ChildProcess::Outcome::line_too_long:
       fail(fmt::format("the reply to request {} is longer than 16 MiB (the program was stopped)", id));
-    case ChildProcess::Outcome::output_closed: fail(ended_message(id));
+    case ChildProcess::Outcome::ended: fail(ended_message(id));
   }
   seconds_.push_back(std::chrono::duration<double>(Clock::now() - sent).count());
 
