@@ -279,7 +279,8 @@ void ChildProcess::drain(int timeout_ms, CappedText& errors) {
   if (fds[1].revents != 0 && read_available(stderr_, keep_errors) == ReadResult::finished)
     close_fd(stderr_);
   // Lines after the awaited one are not replies to anything; they are dropped.
-  if (fds[0].revents != 0 && read_available(stdout_, [](std::string_view) {}) == ReadResult::finished) close_fd(stdout_);
+  if (fds[0].revents != 0 && read_available(stdout_, [](std::string_view) {}) == ReadResult::finished)
+    close_fd(stdout_);
 }
 
 // ---------------------------------------------------------------------------------------------

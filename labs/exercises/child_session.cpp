@@ -209,6 +209,8 @@ void ChildSession::start() {
                                             directory_);
   if (directory_.size() < sizeof running_directory)
     std::copy(directory_.c_str(), directory_.c_str() + directory_.size() + 1, running_directory);
+  else
+    running_directory[0] = '\0';
   running_group = process_->process_group();
 }
 

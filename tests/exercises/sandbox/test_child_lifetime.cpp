@@ -126,6 +126,14 @@ TEST_CASE("the program has its own process group, no descriptor of numlab's and 
   CHECK(reply.at("core_limit") == nlohmann::json{0, 0});
 }
 
+TEST_CASE("the program starts with no signal ignored, although numlab ignores SIGPIPE", "[sandbox]") {
+  // sh, since Python ignores SIGPIPE itself; the mask is SigIgn of /proc/PID/status.
+  ChildSession session("echo", {"sh", "-c", R"(read -r line; mask=$(grep SigIgn /proc/$$/status | cut -f2);
+                                              printf '{"id": 1, "ignored": "%s"}\n' "$mask"; cat >/dev/null)"},
+                       generous_limit);
+  CHECK(session.ask({}).at("ignored") == "0000000000000000");
+}
+
 TEST_CASE("a command without a slash is found on PATH and made absolute", "[command]") {
   ChildSession session("echo", {"sh", "-c", "while read line; do :; done"}, generous_limit);
   const std::string program = session.resolved_command().at(0);
