@@ -77,11 +77,11 @@ namespace {
 struct Pipe {
   std::array<int, 2> ends{-1, -1};
   Pipe() {
-    if (pipe2(ends.data(), O_CLOEXEC) != 0) throw_errno("exercise check: pipe");
+    if (pipe2(ends.data(), O_CLOEXEC) != 0) throw_errno("pipe");
     for (int& end : ends) {
       if (end > 2) continue;
       const int moved = fcntl(end, F_DUPFD_CLOEXEC, 3);
-      if (moved < 0) throw_errno("exercise check: fcntl");
+      if (moved < 0) throw_errno("fcntl");
       close(end);
       end = moved;
     }
@@ -160,7 +160,7 @@ ChildProcess::ChildProcess(const std::string& program, const std::vector<std::st
 
   const pid_t parent = getpid();
   pid_ = fork();
-  if (pid_ < 0) throw_errno("exercise check: fork");
+  if (pid_ < 0) throw_errno("fork");
   if (pid_ == 0)
     become_the_program(program.c_str(), argv.data(), directory.c_str(), parent, in.read_end(), out.write_end(),
                        err.write_end(), status.write_end());
@@ -194,6 +194,9 @@ ChildProcess::~ChildProcess() {
 // Talking to it.
 
 namespace {
+
+// While nothing arrives, whether the program is still alive is looked at this often.
+constexpr int exit_check_ms = 50;
 
 int milliseconds_until(ChildProcess::Clock::time_point deadline) {
   const auto left = deadline - ChildProcess::Clock::now();
@@ -244,16 +247,18 @@ ChildProcess::Outcome ChildProcess::exchange(std::string_view request, Clock::ti
       return Outcome::line;
     }
     if (pending_.size() > max_line) return Outcome::line_too_long;
-    if (stdout_ < 0) return Outcome::output_closed;
+    if (stdout_ < 0) return Outcome::ended;
     const int wait_ms = milliseconds_until(deadline);
     if (wait_ms == 0) return Outcome::timed_out;
 
     std::array<pollfd, 3> fds{pollfd{stdout_, POLLIN, 0}, pollfd{stderr_, POLLIN, 0},
                               pollfd{writing ? stdin_ : -1, POLLOUT, 0}};
-    if (poll(fds.data(), fds.size(), wait_ms) < 0) {
+    const int ready = poll(fds.data(), fds.size(), std::min(wait_ms, exit_check_ms));
+    if (ready < 0) {
       if (errno == EINTR) continue;
-      throw_errno("exercise check: poll");
+      throw_errno("poll");
     }
+    if (ready == 0 && leader_exited()) return Outcome::ended;
     if (fds[2].revents != 0) {
       const ssize_t put = write(stdin_, request.data() + written, request.size() - written);
       if (put > 0) written += static_cast<std::size_t>(put);
@@ -274,7 +279,8 @@ void ChildProcess::drain(int timeout_ms, CappedText& errors) {
   if (fds[1].revents != 0 && read_available(stderr_, keep_errors) == ReadResult::finished)
     close_fd(stderr_);
   // Lines after the awaited one are not replies to anything; they are dropped.
-  if (fds[0].revents != 0 && read_available(stdout_, [](std::string_view) {}) == ReadResult::finished) close_fd(stdout_);
+  if (fds[0].revents != 0 && read_available(stdout_, [](std::string_view) {}) == ReadResult::finished)
+    close_fd(stdout_);
 }
 
 // ---------------------------------------------------------------------------------------------

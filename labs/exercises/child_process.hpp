@@ -57,11 +57,12 @@ class ChildProcess {
   pid_t process_group() const { return pid_; }  // the child is its group's leader
   bool running() const { return !status_.has_value(); }
 
-  enum class Outcome { line, timed_out, output_closed, line_too_long };
+  enum class Outcome { line, timed_out, ended, line_too_long };
   // Writes `request` to the child's stdin and waits, until `deadline`, for one whole line on its
   // stdout (returned in `line` without the newline, at most `max_line` bytes). stderr goes to
-  // `errors` meanwhile. A child that stopped reading its stdin is not an error here: the outcome
-  // then comes from its stdout.
+  // `errors` meanwhile. `ended`: its stdout closed, or it exited (a background process it left
+  // may hold stdout open). A child that stopped reading its stdin is not an error here: the
+  // outcome then comes from its stdout.
   Outcome exchange(std::string_view request, Clock::time_point deadline, std::size_t max_line, std::string& line,
                    CappedText& errors);
 

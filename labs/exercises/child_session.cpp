@@ -77,10 +77,11 @@ std::vector<std::string> resolve_command(std::vector<std::string> command) {
 
 std::string make_temporary_directory() {
   const char* tmpdir = std::getenv("TMPDIR");
-  std::string pattern = (tmpdir != nullptr && *tmpdir != '\0' ? std::string(tmpdir) : std::string("/tmp")) +
-                        "/numlab-exercise-XXXXXX";
+  const fs::path root = fs::absolute(tmpdir != nullptr && *tmpdir != '\0' ? tmpdir : "/tmp");
+  std::string pattern = (root / "numlab-exercise-XXXXXX").string();
   if (mkdtemp(pattern.data()) == nullptr)
-    throw std::system_error(errno, std::generic_category(), "exercise check: cannot make a working directory");
+    throw std::system_error(errno, std::generic_category(),
+                            fmt::format("cannot make its working directory in {}", printable(root.string())));
   return pattern;
 }
 
@@ -95,12 +96,16 @@ void remove_directory(std::string& directory) {
 // numlab interrupted during a check: end the program's group first, then die as asked.
 
 volatile std::sig_atomic_t running_group = 0;
+char running_directory[4096] = "";  // read only while running_group is set
 struct sigaction previous_interrupt {};
 struct sigaction previous_terminate {};
 
 extern "C" void end_group_and_reraise(int signal) {
   const pid_t group = running_group;
-  if (group > 0) kill(-group, SIGKILL);
+  if (group > 0) {
+    kill(-group, SIGKILL);
+    rmdir(running_directory);  // only when the program left it empty: removing files is not signal-safe
+  }
   sigaction(signal, signal == SIGINT ? &previous_interrupt : &previous_terminate, nullptr);
   raise(signal);  // delivered with the previous disposition once this handler returns
 }
@@ -138,6 +143,29 @@ std::string excerpt(std::string_view line) {
   return text;
 }
 
+// Why `reply` (parsed from `line`) is not a reply to request `id`, or "".
+std::string why_not_a_reply(const nlohmann::json& reply, const std::string& line, long long id) {
+  if (reply.is_discarded()) {
+    const bool non_finite = line.find("NaN") != std::string::npos || line.find("Infinity") != std::string::npos;
+    const std::size_t first = line.find_first_not_of(" \t");
+    const bool not_an_object = first == std::string::npos || line[first] != '{';
+    return fmt::format("the reply is not JSON: {}{}", excerpt(line),
+                       non_finite      ? " (NaN and Infinity are not JSON numbers)"
+                       : not_an_object ? " (stdout is for replies only: print anything else to stderr)"
+                                       : "");
+  }
+  if (!reply.is_object()) return fmt::format("the reply is not a JSON object: {}", excerpt(line));
+  if (!reply.contains("id")) return fmt::format("the reply to request {} has no \"id\"", id);
+  const nlohmann::json& echoed = reply["id"];
+  if (!echoed.is_number() || echoed.get<double>() != static_cast<double>(id))
+    return fmt::format("the reply has id {} but request {} was expected", excerpt(echoed.dump()), id);
+  return "";
+}
+
+ChildProcess::Clock::duration as_duration(double seconds) {
+  return std::chrono::duration_cast<ChildProcess::Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   const std::size_t middle = values.size() / 2;
@@ -160,7 +188,7 @@ ChildSession::ChildSession(std::string exercise, std::vector<std::string> comman
   ignore_sigpipe_and_adopt_orphans();
   try {
     start();
-  } catch (const StartError& error) {
+  } catch (const std::exception& error) {  // StartError, or no directory, pipe or process to be had
     remove_directory(directory_);
     throw cannot_run(command_[0], error.what());
   }
@@ -172,12 +200,17 @@ ChildSession::~ChildSession() {
 }
 
 void ChildSession::start() {
+  running_group = 0;
   remove_directory(directory_);
   directory_ = make_temporary_directory();
   process_.reset();
   end_group_on_interrupt();
   process_ = std::make_unique<ChildProcess>(command_[0], std::vector<std::string>(command_.begin() + 1, command_.end()),
                                             directory_);
+  if (directory_.size() < sizeof running_directory)
+    std::copy(directory_.c_str(), directory_.c_str() + directory_.size() + 1, running_directory);
+  else
+    running_directory[0] = '\0';
   running_group = process_->process_group();
 }
 
@@ -214,8 +247,7 @@ std::string ChildSession::take_output() { return output_.take(); }
 double ChildSession::seconds_per_request() const { return median(seconds_); }
 
 std::string ChildSession::ended_message(long long id) {
-  const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
-                                                         std::chrono::duration<double>(timeout_seconds_));
+  const auto deadline = ChildProcess::Clock::now() + as_duration(timeout_seconds_);
   if (!process_->wait_for_exit(deadline, output_))
     return fmt::format("the program closed its output before replying to request {} (the program was stopped)", id);
   const int status = process_->stop(ChildProcess::Clock::duration::zero(), output_);
@@ -237,8 +269,7 @@ nlohmann::json ChildSession::ask(nlohmann::json request) {
   const std::string text = request.dump() + '\n';
 
   const Clock::time_point sent = Clock::now();
-  const Clock::time_point deadline =
-      sent + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_seconds_));
+  const Clock::time_point deadline = sent + as_duration(timeout_seconds_);
   std::string line;
   switch (process_->exchange(text, deadline, reply_cap, line, output_)) {
     case ChildProcess::Outcome::line: break;
@@ -246,22 +277,13 @@ nlohmann::json ChildSession::ask(nlohmann::json request) {
       fail(fmt::format("no reply within {:g} s to request {} (the program was stopped)", timeout_seconds_, id));
     case ChildProcess::Outcome::line_too_long:
       fail(fmt::format("the reply to request {} is longer than 16 MiB (the program was stopped)", id));
-    case ChildProcess::Outcome::output_closed: fail(ended_message(id));
+    case ChildProcess::Outcome::ended: fail(ended_message(id));
   }
   seconds_.push_back(std::chrono::duration<double>(Clock::now() - sent).count());
 
   if (!line.empty() && line.back() == '\r') line.pop_back();
   const nlohmann::json reply = nlohmann::json::parse(line, nullptr, false);
-  if (reply.is_discarded()) {
-    const bool non_finite = line.find("NaN") != std::string::npos || line.find("Infinity") != std::string::npos;
-    fail(fmt::format("the reply is not JSON: {}{}", excerpt(line),
-                     non_finite ? " (NaN and Infinity are not JSON numbers)" : ""));
-  }
-  if (!reply.is_object()) fail(fmt::format("the reply is not a JSON object: {}", excerpt(line)));
-  if (!reply.contains("id")) fail(fmt::format("the reply to request {} has no \"id\"", id));
-  const nlohmann::json& echoed = reply["id"];
-  if (!echoed.is_number() || echoed.get<double>() != static_cast<double>(id))
-    fail(fmt::format("the reply has id {} but request {} was expected", excerpt(echoed.dump()), id));
+  if (const std::string problem = why_not_a_reply(reply, line, id); !problem.empty()) fail(problem);
   if (reply.contains("error")) {
     const nlohmann::json& error = reply["error"];
     const std::string text = error.is_string() ? error.get<std::string>() : error.dump();

@@ -15,8 +15,14 @@ namespace numlab::exercises::sandbox_test {
 
 inline std::string child_script(const std::string& name) { return std::string(NUMLAB_SANDBOX_CHILDREN) + "/" + name; }
 
-// The command that runs children/<name> with the Python the build found.
+// The command that runs children/<name> with the Python the build found, or with sh.
 inline std::vector<std::string> python_child(const std::string& name) { return {NUMLAB_PYTHON, child_script(name)}; }
+inline std::vector<std::string> sh_child(const std::string& name) { return {"sh", child_script(name)}; }
+
+// The time limit of tests that expect replies (Python may start slowly on a loaded machine), and
+// of tests that expect a timeout (from a program that does not reply at all, or from sh).
+inline constexpr double generous_limit = 10.0;
+inline constexpr double short_limit = 0.5;
 
 // True when no process of the group (or with the pid) exists any more, zombies included.
 inline bool group_gone(pid_t group) { return kill(-group, 0) == -1 && errno == ESRCH; }

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <csignal>
@@ -28,8 +29,6 @@ using Catch::Matchers::Message;
 namespace fs = std::filesystem;
 
 namespace {
-
-constexpr double limit = 0.5;
 
 // Runs a block with another current directory.
 class InDirectory {
@@ -88,7 +87,7 @@ std::string temporary_root() {
 TEST_CASE("the program runs in a fresh, empty temporary folder that is removed afterwards", "[sandbox]") {
   std::string folder;
   {
-    ChildSession session("echo", python_child("echo.py"), limit);
+    ChildSession session("echo", python_child("echo.py"), generous_limit);
     const nlohmann::json reply = session.ask({});
     folder = reply.at("cwd").get<std::string>();
     CHECK(folder == fs::canonical(session.working_directory()).string());
@@ -102,7 +101,7 @@ TEST_CASE("the program runs in a fresh, empty temporary folder that is removed a
 TEST_CASE("the program gets only the student's arguments, with files and folders made absolute", "[sandbox]") {
   const fs::path children = NUMLAB_SANDBOX_CHILDREN;
   InDirectory here(children);
-  ChildSession session("echo", {NUMLAB_PYTHON, "echo.py", "--verbose", "no-such-file", "."}, limit);
+  ChildSession session("echo", {NUMLAB_PYTHON, "echo.py", "--verbose", "no-such-file", "."}, generous_limit);
   const nlohmann::json argv = session.ask({}).at("argv");
   const nlohmann::json expected = {(children / "echo.py").string(), "--verbose", "no-such-file", children.string()};
   // Python's argv[0] is the script; fs::absolute keeps "." as a last component, so compare folders.
@@ -117,7 +116,7 @@ TEST_CASE("the program gets only the student's arguments, with files and folders
 TEST_CASE("the program has its own process group, no descriptor of numlab's and no core dumps", "[sandbox]") {
   const int inherited = open("/dev/null", O_RDONLY);  // not close-on-exec: the child must not see it
   REQUIRE(inherited >= 0);
-  ChildSession session("echo", python_child("echo.py"), limit);
+  ChildSession session("echo", python_child("echo.py"), generous_limit);
   close(inherited);
   const nlohmann::json reply = session.ask({});
   CHECK(reply.at("pgid") == reply.at("pid"));
@@ -127,8 +126,16 @@ TEST_CASE("the program has its own process group, no descriptor of numlab's and 
   CHECK(reply.at("core_limit") == nlohmann::json{0, 0});
 }
 
+TEST_CASE("the program starts with no signal ignored, although numlab ignores SIGPIPE", "[sandbox]") {
+  // sh, since Python ignores SIGPIPE itself; the mask is SigIgn of /proc/PID/status.
+  ChildSession session("echo", {"sh", "-c", R"(read -r line; mask=$(grep SigIgn /proc/$$/status | cut -f2);
+                                              printf '{"id": 1, "ignored": "%s"}\n' "$mask"; cat >/dev/null)"},
+                       generous_limit);
+  CHECK(session.ask({}).at("ignored") == "0000000000000000");
+}
+
 TEST_CASE("a command without a slash is found on PATH and made absolute", "[command]") {
-  ChildSession session("echo", {"sh", "-c", "while read line; do :; done"}, limit);
+  ChildSession session("echo", {"sh", "-c", "while read line; do :; done"}, generous_limit);
   const std::string program = session.resolved_command().at(0);
   CHECK(fs::path(program).is_absolute());
   CHECK_THAT(program, EndsWith("/sh"));
@@ -136,37 +143,49 @@ TEST_CASE("a command without a slash is found on PATH and made absolute", "[comm
 }
 
 TEST_CASE("a command that cannot be run is bad input, naming the command and the reason", "[command]") {
-  CHECK_THROWS_MATCHES(ChildSession("echo", {"numlab-no-such-program"}, limit), std::invalid_argument,
+  CHECK_THROWS_MATCHES(ChildSession("echo", {"numlab-no-such-program"}, generous_limit), std::invalid_argument,
                        Message("exercise check: cannot run 'numlab-no-such-program': not found on PATH"));
-  CHECK_THROWS_MATCHES(ChildSession("echo", {"./numlab-no-such-program"}, limit), std::invalid_argument,
+  CHECK_THROWS_MATCHES(ChildSession("echo", {"./numlab-no-such-program"}, generous_limit), std::invalid_argument,
                        Message("exercise check: cannot run './numlab-no-such-program': no such file"));
-  CHECK_THROWS_MATCHES(ChildSession("echo", {NUMLAB_SANDBOX_CHILDREN}, limit), std::invalid_argument,
+  CHECK_THROWS_MATCHES(ChildSession("echo", {NUMLAB_SANDBOX_CHILDREN}, generous_limit), std::invalid_argument,
                        Message(std::string("exercise check: cannot run '") + NUMLAB_SANDBOX_CHILDREN +
                                "': it is a folder, not a program"));
-  CHECK_THROWS_AS(ChildSession("echo", {}, limit), std::invalid_argument);
+  CHECK_THROWS_AS(ChildSession("echo", {}, generous_limit), std::invalid_argument);
   CHECK_THROWS_AS(ChildSession("echo", python_child("echo.py"), 0.0), std::invalid_argument);
 }
 
 TEST_CASE("a file without execute permission cannot be run", "[command]") {
   const ScratchFile script("#!/bin/sh\n", fs::perms::owner_read | fs::perms::owner_write);
-  CHECK_THROWS_MATCHES(ChildSession("echo", {script.path()}, limit), std::invalid_argument,
+  CHECK_THROWS_MATCHES(ChildSession("echo", {script.path()}, generous_limit), std::invalid_argument,
                        Message("exercise check: cannot run '" + script.path() +
                                "': it is not executable (Permission denied)"));
 }
 
 TEST_CASE("an exec failure in the child (a missing #! interpreter) is reported as bad input", "[command]") {
   const ScratchFile script("#!/numlab/no/such/interpreter\n", fs::perms::owner_all);
-  CHECK_THROWS_MATCHES(ChildSession("echo", {script.path()}, limit), std::invalid_argument,
+  CHECK_THROWS_MATCHES(ChildSession("echo", {script.path()}, generous_limit), std::invalid_argument,
                        Message("exercise check: cannot run '" + script.path() +
                                "': its #! interpreter or loader was not found (No such file or directory)"));
 }
 
 TEST_CASE("a background grandchild dies with its group when the request times out", "[lifetime]") {
-  ChildSession session("echo", python_child("grandchild.py"), limit);
+  ChildSession session("echo", sh_child("grandchild.sh"), short_limit);
   const pid_t group = session.process_group();
   const pid_t grandchild = session.ask({}).at("grandchild").get<pid_t>();
   CHECK_FALSE(process_gone(grandchild));
   CHECK_THROWS_WITH(session.ask({{"hang", true}}), "no reply within 0.5 s to request 2 (the program was stopped)");
+  CHECK(group_gone(group));
+  CHECK(process_gone(grandchild));
+}
+
+TEST_CASE("a crash is seen although a background grandchild still holds the program's stdout", "[lifetime]") {
+  ChildSession session("echo", sh_child("grandchild.sh"), generous_limit);
+  const pid_t group = session.process_group();
+  const pid_t grandchild = session.ask({}).at("grandchild").get<pid_t>();
+  const auto start = std::chrono::steady_clock::now();
+  CHECK_THROWS_WITH(session.ask({{"crash", true}}),
+                    "the program was killed by signal SIGSEGV before replying to request 2");
+  CHECK(seconds_since(start) < slack_seconds);  // not the time limit
   CHECK(group_gone(group));
   CHECK(process_gone(grandchild));
 }
@@ -176,7 +195,7 @@ TEST_CASE("a background grandchild left by a program that exits does not outlive
   pid_t grandchild = 0;
   const auto start = std::chrono::steady_clock::now();
   {
-    ChildSession session("echo", python_child("grandchild.py"), limit);
+    ChildSession session("echo", sh_child("grandchild.sh"), short_limit);
     group = session.process_group();
     grandchild = session.ask({}).at("grandchild").get<pid_t>();
   }
@@ -190,7 +209,7 @@ TEST_CASE("a program that ignores the end of its input is killed 1 s after the s
   pid_t group = 0;
   auto start = std::chrono::steady_clock::now();
   {
-    ChildSession session("echo", python_child("sleep.py"), limit);
+    ChildSession session("echo", python_child("sleep.py"), short_limit);
     group = session.process_group();
     start = std::chrono::steady_clock::now();
   }
@@ -211,9 +230,12 @@ TEST_CASE("numlab terminated during a check takes the program's whole group with
     close(report[0]);
     std::signal(SIGTERM, SIG_DFL);  // not the test framework's handler
     try {
-      ChildSession session("echo", python_child("grandchild.py"), 30.0);
+      ChildSession session("echo", sh_child("grandchild.sh"), 30.0);
       const pid_t pids[2] = {session.process_group(), session.ask({}).at("grandchild").get<pid_t>()};
       if (write(report[1], pids, sizeof pids) != sizeof pids) _exit(3);
+      const std::string& folder = session.working_directory();
+      if (write(report[1], folder.data(), folder.size()) != static_cast<ssize_t>(folder.size())) _exit(3);
+      close(report[1]);
       session.ask({{"hang", true}});
     } catch (...) {
     }
@@ -222,6 +244,8 @@ TEST_CASE("numlab terminated during a check takes the program's whole group with
   close(report[1]);
   pid_t pids[2] = {0, 0};
   const bool reported = read(report[0], pids, sizeof pids) == sizeof pids;
+  std::string folder(4096, '\0');
+  folder.resize(static_cast<std::size_t>(std::max<ssize_t>(0, read(report[0], folder.data(), folder.size()))));
   close(report[0]);
   kill(checker, SIGTERM);
   int status = 0;
@@ -234,4 +258,7 @@ TEST_CASE("numlab terminated during a check takes the program's whole group with
   CHECK(group_gone(pids[0]));
   CHECK(process_gone(pids[1]));
   kill_survivors(pids[0]);
+  // The program wrote nothing there, so even a signal handler can remove its folder.
+  CHECK_THAT(folder, Contains("numlab-exercise-"));
+  CHECK_FALSE(fs::exists(folder));
 }

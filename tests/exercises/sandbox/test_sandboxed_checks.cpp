@@ -30,7 +30,7 @@ Exercise tiny_exercise(std::vector<Check> checks) {
 }  // namespace
 
 TEST_CASE("a crash makes its check an error and the next check runs on a restarted program", "[checks]") {
-  ChildSession session("echo", python_child("crash.py"), 0.5);
+  ChildSession session("echo", python_child("crash.py"), generous_limit);
   const Exercise exercise = tiny_exercise(
       {asking("answers first", {}), asking("crashes", {{"crash", true}}), asking("answers after a restart", {})});
   const std::vector<CheckResult> results = run_checks(exercise, session);
@@ -66,7 +66,7 @@ TEST_CASE("a program that never replies costs at most max_failures_in_a_row time
 }
 
 TEST_CASE("an error reply fails the check with the program's own message", "[checks]") {
-  ChildSession session("echo", python_child("not_implemented.py"), 0.5);
+  ChildSession session("echo", python_child("not_implemented.py"), generous_limit);
   const std::vector<CheckResult> results = run_checks(tiny_exercise({asking("solves", {})}), session);
   REQUIRE(results.size() == 1);
   CHECK(results[0].status == CheckStatus::fail);
@@ -74,7 +74,7 @@ TEST_CASE("an error reply fails the check with the program's own message", "[che
 }
 
 TEST_CASE("a reply with NaN makes its check an error, not a fail", "[checks]") {
-  ChildSession session("echo", python_child("nan.py"), 0.5);
+  ChildSession session("echo", python_child("nan.py"), generous_limit);
   const std::vector<CheckResult> results = run_checks(tiny_exercise({asking("solves", {})}), session);
   REQUIRE(results.size() == 1);
   CHECK(results[0].status == CheckStatus::error);
