@@ -9,6 +9,7 @@
 
 #include "bench/bench_linear.hpp"
 #include "cli/cli_common.hpp"
+#include "commands/exercise_command.hpp"
 #include "commands/fit_command.hpp"
 #include "commands/labs_command.hpp"
 #include "commands/mechanism_command.hpp"
@@ -68,6 +69,7 @@ int main(int argc, char** argv) {
   const BenchCommand bench(app);
   const MechanismCommand mechanism(app);
   const FitCommand fit(app);
+  const ExerciseCommand exercise(app);
 
   try {
     app.parse(argc, argv);
@@ -88,6 +90,7 @@ int main(int argc, char** argv) {
     if (bench.selected()) return bench.run();
     if (mechanism.selected()) return mechanism.run();
     if (fit.selected()) return fit.run();
+    if (exercise.selected()) return exercise.run();
     return run_main_job();
   } catch (const StoppedByUser& stopped) {
     std::cerr << "numlab: " << stopped.what() << '\n';

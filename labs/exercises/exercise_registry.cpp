@@ -11,6 +11,10 @@ const std::vector<Exercise>& all_exercises() {
       gepp_exercise(),
       gauss_seidel_exercise(),
       inverse2x2_exercise(),
+      polyfit_exercise(),
+      jansen_jacobian_exercise(),
+      jansen_newton_exercise(),
+      mustang_newton_exercise(),
   };
   return exercises;
 }

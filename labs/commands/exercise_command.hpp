@@ -1,0 +1,38 @@
+#pragma once
+// `numlab exercise list|show|init|check` (docs/exercises.md): a student's own solver, run as a
+// sandboxed child process, checked against GSL, Eigen, numlab's steppers and the closed forms.
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "cli/cli_common.hpp"
+
+namespace numlab::cli {
+
+class ExerciseCommand {
+ public:
+  explicit ExerciseCommand(CLI::App& app);
+  bool selected() const { return command_->parsed(); }
+  int run() const;
+
+ private:
+  int list() const;
+  int show() const;
+  int init() const;
+  int check() const;
+
+  CLI::App* command_;
+  CLI::App* list_;
+  CLI::App* show_;
+  CLI::App* init_;
+  CLI::App* check_;
+  std::string name_;
+  std::string folder_;
+  std::string language_ = "python";
+  double timeout_seconds_ = 10.0;
+  std::vector<std::string> program_;
+  CommonOptions common_;
+};
+
+}  // namespace numlab::cli

@@ -1,0 +1,209 @@
+// jansen-jacobian: the student's f and J of seed 000's 8-equation Jansen closure, against
+// numlab's JansenClosure (whose Jacobian is itself checked here by central differences).
+
+#include <cmath>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <limits>
+#include <optional>
+
+#include "exercises/exercise_list.hpp"
+#include "exercises/jansen_poses.hpp"
+#include "exercises/linkage_checks.hpp"
+#include "exercises/reply_fields.hpp"
+#include "exercises/session.hpp"
+#include "numlab/mechanisms/jansen_closure.hpp"
+
+namespace numlab::exercises {
+
+namespace {
+
+using mechanisms::JansenAngles;
+using mechanisms::JansenClosure;
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+struct Pose {
+  double crank_angle;
+  JansenAngles theta;
+};
+
+// Seed 000's start, four solved poses around the cycle, and two poses away from any root (where
+// f is large, so every term of every row counts).
+std::vector<Pose> poses() {
+  std::vector<Pose> list = {{JansenClosure::seed_crank_angle, JansenClosure::seed_estimates()}};
+  for (double deg : {0.0, 90.0, 200.0, 300.0}) list.push_back({deg * degrees, jansen_closed_form_angles(deg * degrees)});
+  JansenAngles offset;
+  offset << 0.3, -0.2, 0.5, -0.4, 0.25, -0.35, 0.45, -0.15;
+  list.push_back({1.0, jansen_closed_form_angles(1.0) + offset});
+  list.push_back({4.0, jansen_closed_form_angles(4.0) - 2.0 * offset});
+  return list;
+}
+
+nlohmann::json request_for(const Pose& pose) {
+  return {{"crank_angle", pose.crank_angle}, {"theta", to_json(Eigen::VectorXd(pose.theta))}};
+}
+
+std::string pose_text(const Pose& pose) {
+  return fmt::format("crank_angle {:.4f} rad, theta = [{:.4f}]", pose.crank_angle,
+                     fmt::join(pose.theta.data(), pose.theta.data() + 8, ", "));
+}
+
+// Rounding in f: each entry sums terms no larger than the links, so 1e3 eps of their sum is far
+// above rounding and far below any wrong term.
+double f_tolerance() { return 1e3 * eps * jansen_links_sum(); }
+
+std::vector<ReferenceTime> closure_time(const Pose& pose) {
+  const JansenClosure closure(pose.crank_angle);
+  JansenClosure::Vector f;
+  JansenClosure::Matrix J;
+  volatile double sink = 0.0;
+  const double seconds = median_seconds([&] {
+    for (int i = 0; i < 1000; ++i) {
+      closure.residual_and_jacobian(pose.theta, f, J);
+      sink = sink + J(0, 0);
+    }
+  });
+  return {{"numlab JansenClosure (f and J)", seconds / 1000.0}};
+}
+
+std::string f_hint(int row, double got, double expected) {
+  const mechanisms::JansenLengths L;
+  if (row % 2 == 1 && std::abs(std::abs(got - expected) - (L.b - L.a)) < 1e-6) {
+    return "the cosine rows use the offset a where b belongs (seed 000's printed eqs 23 and 25): X = li cos(ti) + b";
+  }
+  return "compare the row with the task's equation: even rows are y components (sines), odd rows x components (cosines)";
+}
+
+Verdict check_f(Session& session) {
+  const double tolerance = f_tolerance();
+  const auto list = poses();
+  for (const Pose& pose : list) {
+    const nlohmann::json reply = session.ask(request_for(pose));
+    const Eigen::VectorXd f = vector_field(reply, "f", 8);
+    JansenClosure::Vector expected;
+    JansenClosure(pose.crank_angle).residual(pose.theta, expected);
+    for (int i = 0; i < 8; ++i) {
+      if (std::abs(f(i) - expected(i)) <= tolerance) continue;
+      return Verdict::fail(fmt::format("f[{}] = {:.10g}, expected {:.10g} (numlab's JansenClosure, seed 000 eq {}) at {}; "
+                                       "allowed |error| {} (1e3 eps times the links' sum {})",
+                                       i, f(i), expected(i), i + 1, pose_text(pose), sci(tolerance), jansen_links_sum()),
+                           f_hint(i, f(i), expected(i)));
+    }
+  }
+  return Verdict::pass(closure_time(list.front()));
+}
+
+// Central differences of numlab's f: the independent reference for numlab's analytic J.
+Eigen::MatrixXd central_differences(const Pose& pose) {
+  const JansenClosure closure(pose.crank_angle);
+  Eigen::MatrixXd J(8, 8);
+  for (int k = 0; k < 8; ++k) {
+    const double h = std::cbrt(eps) * std::max(1.0, std::abs(pose.theta(k)));
+    JansenAngles up = pose.theta, down = pose.theta;
+    up(k) += h;
+    down(k) -= h;
+    JansenClosure::Vector f_up, f_down;
+    closure.residual(up, f_up);
+    closure.residual(down, f_down);
+    J.col(k) = (f_up - f_down) / (2.0 * h);
+  }
+  return J;
+}
+
+// The angle whose column k the student's column k is, if any: numlab's J with theta_k replaced by
+// theta_j, for each j != k.
+std::optional<int> column_from_angle(const Eigen::MatrixXd& got, const Pose& pose, int k, double tolerance) {
+  for (int j = 0; j < 8; ++j) {
+    if (j == k) continue;
+    JansenAngles swapped = pose.theta;
+    swapped(k) = pose.theta(j);
+    JansenClosure::Matrix other;
+    JansenClosure(pose.crank_angle).jacobian(swapped, other);
+    if ((got.col(k) - other.col(k)).cwiseAbs().maxCoeff() <= tolerance) return j;
+  }
+  return std::nullopt;
+}
+
+std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, const Pose& pose, int row, int col,
+                   double tolerance) {
+  if (const auto angle = column_from_angle(got, pose, col, tolerance)) {
+    return fmt::format("column {} (d/d {}) is evaluated at {}: a column from the wrong angle", col,
+                       jansen_angle_name(col), jansen_angle_name(*angle));
+  }
+  if (std::abs(got(row, col) + expected(row, col)) <= tolerance) {
+    return "a sign: d(l sin t)/dt = l cos t and d(l cos t)/dt = -l sin t";
+  }
+  return "an entry from the wrong link or a mistyped constant: J[i][k] is +-l cos or +-l sin of theta_(k+1), with the "
+         "length l of that angle's link in row i";
+}
+
+Verdict check_J(Session& session) {
+  const auto list = poses();
+  for (const Pose& pose : list) {
+    const nlohmann::json reply = session.ask(request_for(pose));
+    const Eigen::MatrixXd J = matrix_field(reply, "J", 8, 8);
+    JansenClosure::Matrix expected;
+    JansenClosure(pose.crank_angle).jacobian(pose.theta, expected);
+    const Eigen::MatrixXd differences = central_differences(pose);
+    // J's entries are at most a link long; rounding in them is a few eps of that.
+    const double tolerance = 1e3 * eps * expected.cwiseAbs().maxCoeff();
+    for (int i = 0; i < 8; ++i) {
+      for (int k = 0; k < 8; ++k) {
+        if (std::abs(J(i, k) - expected(i, k)) <= tolerance) continue;
+        return Verdict::fail(
+            fmt::format("J[{}][{}] = {:.6g}, expected {:.6g} (d f[{}] / d {} from numlab's JansenClosure; central "
+                        "differences of f give {:.6g}) at {}; allowed |error| {} (1e3 eps times max |J|)",
+                        i, k, J(i, k), expected(i, k), i, jansen_angle_name(k), differences(i, k), pose_text(pose),
+                        sci(tolerance)),
+            J_hint(J, expected, pose, i, k, tolerance));
+      }
+    }
+  }
+  return Verdict::pass(closure_time(list.front()));
+}
+
+}  // namespace
+
+Exercise jansen_jacobian_exercise() {
+  Exercise exercise;
+  exercise.name = "jansen-jacobian";
+  exercise.summary = "f and J of seed 000's 8-equation Jansen leg closure, entry by entry";
+  exercise.task = R"(# jansen-jacobian: the Jansen leg's closure equations and their Jacobian
+
+Write `solve(request)` that evaluates the loop-closure residual f and its Jacobian J of seed 000's
+Jansen leg at given angles.
+
+- **Request:** `crank_angle` (radians), `theta` (8 angles theta1 ... theta8, radians).
+- **Reply:** `f` (8 numbers, in the order below), `J` (8 rows of 8: J[i][k] = d f[i] / d theta_(k+1)).
+
+)" + jansen_equations_markdown() + R"(
+## Task 1
+f follows the equations above exactly (same rows, same signs), at seed 000's start (Table 3), at
+solved poses and at poses far from any root. Checked against numlab's `JansenClosure` to 1e3 eps
+of the links' sum.
+
+## Task 2
+J is the derivative of f, entry by entry. Checked against numlab's analytic Jacobian, which the
+check itself compares with central differences of f. The message names the first wrong entry.
+
+## Hints
+- Seed 001's Jacobian had 67.5 where the length was 65.7: type each length once, as a named
+  constant, and use the name everywhere.
+- Seed 000's printed eqs (23) and (25) use `a` where `b` belongs in the cosine rows.
+- A column from the wrong angle (cos theta4 where cos theta3 belongs) makes a whole column wrong.
+)";
+  exercise.stubs.python = "    raise NotImplementedError(\"not implemented: f and J of the Jansen closure\")\n";
+  exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: f and J of the Jansen closure\");\n";
+  exercise.stubs.octave = "  error('not implemented: f and J of the Jansen closure');\n";
+  exercise.battery = [] {
+    return std::vector<Check>{
+        {"f follows seed 000's closure equations (1)-(8) at 7 poses, to rounding (1e3 eps of the links' sum)", 1, check_f},
+        {"J is the derivative of f: every entry matches numlab's analytic Jacobian (checked by central differences) at "
+         "7 poses",
+         2, check_J},
+    };
+  };
+  return exercise;
+}
+
+}  // namespace numlab::exercises

@@ -1,0 +1,172 @@
+#pragma once
+// The checks shared by the linkage Newton exercises (jansen-newton, mustang-newton), written once
+// for any closure. A Linkage describes the exercise:
+//   using Closure = ...;                       // numlab's closure (set to the input angle)
+//   static constexpr const char* input;        // "crank_angle"
+//   static constexpr const char* start;        // "theta0" / "guess"
+//   static constexpr const char* answer;       // "theta" / "angles"
+//   static std::string angle_name(int k);      // "theta3" / "C"
+//   static double links_sum();                 // L, the scale of f
+//   static std::string where(double angle);    // "crank 130 deg"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "exercises/exercise.hpp"
+#include "exercises/linkage_checks.hpp"
+#include "exercises/newton_replies.hpp"
+#include "exercises/reply_fields.hpp"
+#include "exercises/session.hpp"
+#include "numlab/nonlinear/dynamic_adapter.hpp"
+#include "numlab/nonlinear/gsl_multiroot.hpp"
+
+namespace numlab::exercises {
+
+template <typename Closure>
+struct NewtonRequest {
+  double angle;  // the input angle, radians
+  typename Closure::Vector start;
+  double tolerance = 1e-10;
+  int max_iterations = 20;
+};
+
+template <typename Linkage>
+class NewtonBattery {
+ public:
+  using Closure = typename Linkage::Closure;
+  using Vector = typename Closure::Vector;
+  using Request = NewtonRequest<Closure>;
+  static constexpr int n = Closure::size;
+  static constexpr double eps = std::numeric_limits<double>::epsilon();
+
+  // What re-evaluating f at a pose adds by rounding: 1e3 eps times the links' sum.
+  static double rounding() { return 1e3 * eps * Linkage::links_sum(); }
+
+  static nlohmann::json to_request(const Request& request) {
+    return {{Linkage::input, request.angle},
+            {Linkage::start, to_json(Eigen::VectorXd(request.start))},
+            {"tolerance", request.tolerance},
+            {"max_iterations", request.max_iterations}};
+  }
+
+  struct Answer {
+    Vector x;
+    NewtonReply reply;
+    nlohmann::json raw;
+  };
+
+  static Answer ask(Session& session, const Request& request) {
+    Answer answer;
+    answer.raw = session.ask(to_request(request));
+    answer.x = Vector(vector_field(answer.raw, Linkage::answer, n));
+    answer.reply.status = string_field(answer.raw, "status");
+    answer.reply.iterations = integer_field(answer.raw, "iterations");
+    typename Closure::Vector f;
+    Closure(request.angle).residual(answer.x, f);
+    answer.reply.residual_inf = f.template lpNorm<Eigen::Infinity>();
+    return answer;
+  }
+
+  static nonlinear::NewtonOptions options_for(const Request& request) {
+    nonlinear::NewtonOptions options;
+    options.residual_tolerance = request.tolerance;
+    options.max_iterations = request.max_iterations;
+    options.step_tolerance = 1e-15;
+    return options;
+  }
+
+  // numlab's Newton and GSL's hybridsj on the first request, per request.
+  static std::vector<ReferenceTime> reference_times(const Request& request) {
+    const Closure closure(request.angle);
+    const auto options = options_for(request);
+    const double numlab_seconds = median_seconds([&] { nonlinear::Newton<Closure>(closure, options).solve(request.start); });
+    const nonlinear::AsDynamicSystem<Closure> dynamic(closure);
+    const double gsl_seconds =
+        median_seconds([&] { nonlinear::gsl_multiroot_solve(dynamic, Eigen::VectorXd(request.start), "hybridsj", options); });
+    return {{"numlab Newton (GEPP)", numlab_seconds}, {"GSL multiroot hybridsj", gsl_seconds}};
+  }
+
+  // Task: each request converges, to the exact pose within what its residual and conditioning allow.
+  static Verdict converges_to(Session& session, const std::vector<Request>& requests, const std::vector<Vector>& exact) {
+    for (std::size_t r = 0; r < requests.size(); ++r) {
+      const Request& request = requests[r];
+      const Answer answer = ask(session, request);
+      const std::string where = Linkage::where(request.angle);
+      const Closure closure(request.angle);
+      typename Closure::Vector f;
+      typename Closure::Matrix J;
+      closure.residual_and_jacobian(exact[r], f, J);
+      const double inverse_norm = inverse_inf_norm(J);
+      if (answer.reply.status != "converged") {
+        nonlinear::NewtonResult<n> reference;
+        newton_trace(closure, request.start, options_for(request), &reference);
+        return Verdict::fail(fmt::format("{}: status \"{}\" after {} iterations; numlab's Newton from the same start "
+                                         "converges in {} (tolerance {}, kappa_inf(J) = {} at the pose)",
+                                         where, answer.reply.status, answer.reply.iterations, reference.iterations,
+                                         sci(request.tolerance), sci(kappa_inf(J))),
+                             "check the Newton step: J dx = -f, then x <- x + dx; and J entry by entry");
+      }
+      // First order: |x - x*| <= ||J^-1|| ||f(x)||; f is at most tolerance, plus rounding.
+      const double allowed = 2.0 * inverse_norm * (request.tolerance + rounding());
+      int worst = 0;
+      const double error = worst_angle_error(Eigen::VectorXd(answer.x), Eigen::VectorXd(exact[r]), worst);
+      if (error > allowed) {
+        return Verdict::fail(
+            fmt::format("{}: {} differs from the closed form by {} rad, allowed {} (2 ||J^-1||_inf (tolerance + 1e3 eps "
+                        "L), kappa_inf(J) = {}); ||f||_inf at your angles (numlab's f) = {}",
+                        where, Linkage::angle_name(worst), sci(error), sci(allowed), sci(kappa_inf(J)),
+                        sci(answer.reply.residual_inf)),
+            error > 0.1 ? "a root of another branch (assembly mode), or a wrong f: start from the given angles and "
+                          "check f against the task's equations"
+                        : "the residual test passed on a wrong f: compare f with the task's equations (lengths, "
+                          "and which angles are measured from -x)");
+      }
+      if (auto dishonest = dishonest_reply(answer.reply, request.tolerance, request.max_iterations, rounding(), where)) {
+        return *dishonest;
+      }
+    }
+    return Verdict::pass(reference_times(requests.front()));
+  }
+
+  // Task: no reply claims more than it shows.
+  static Verdict honest(Session& session, const std::vector<Request>& requests) {
+    for (const Request& request : requests) {
+      const Answer answer = ask(session, request);
+      if (auto dishonest = dishonest_reply(answer.reply, request.tolerance, request.max_iterations, rounding(),
+                                           Linkage::where(request.angle))) {
+        return *dishonest;
+      }
+    }
+    return Verdict::pass(reference_times(requests.front()));
+  }
+
+  // Task: the trace follows numlab's Newton from the same start.
+  static Verdict trace_matches(Session& session, const std::vector<Request>& requests) {
+    for (const Request& request : requests) {
+      const Answer answer = ask(session, request);
+      const auto trace = read_trace(answer.raw);
+      const std::string where = Linkage::where(request.angle);
+      if (!trace) return Verdict::fail(fmt::format("{}: the reply has no \"trace\" (this task asks for one)", where));
+      const Closure closure(request.angle);
+      typename Closure::Vector f;
+      typename Closure::Matrix J;
+      closure.residual_and_jacobian(request.start, f, J);
+      const auto reference = newton_trace(closure, request.start, options_for(request));
+      // Two correct Newton codes from one start agree to rounding amplified by kappa at each step.
+      const double relative = std::max(1e-6, 1e3 * kappa_inf(J) * eps);
+      const double step_floor = inverse_inf_norm(J) * rounding();
+      if (auto departure = first_departure(*trace, reference, relative, rounding(), step_floor,
+                                           f.template lpNorm<Eigen::Infinity>())) {
+        return Verdict::fail(fmt::format("{} (your status \"{}\" after {} iterations), {}", where, answer.reply.status,
+                                         answer.reply.iterations, departure->message),
+                             departure->hint);
+      }
+    }
+    return Verdict::pass(reference_times(requests.front()));
+  }
+};
+
+}  // namespace numlab::exercises

@@ -1,0 +1,218 @@
+// polyfit: the student's least-squares polynomial fit, against GSL's gsl_multifit_linear and NIST's
+// certified coefficients, to the accuracy the data's conditioning allows.
+
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <set>
+
+#include "exercises/exercise_list.hpp"
+#include "exercises/linkage_checks.hpp"
+#include "exercises/nist_polynomial_sets.hpp"
+#include "exercises/reply_fields.hpp"
+#include "exercises/session.hpp"
+#include "numlab/fitting/polynomial_fit.hpp"
+#include "numlab/fitting/reference_fits.hpp"
+
+namespace numlab::exercises {
+
+namespace {
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+struct FitCase {
+  std::string name;
+  Eigen::VectorXd x, y;
+  int degree;
+  Eigen::VectorXd expected;   // NIST's certified values, or GSL's fit
+  std::string reference;      // "NIST certified values" / "GSL gsl_multifit_linear"
+};
+
+nlohmann::json request_for(const FitCase& fit) {
+  return {{"x", to_json(fit.x)}, {"y", to_json(fit.y)}, {"degree", fit.degree}};
+}
+
+// The least-squares perturbation bound (Higham, Accuracy and Stability, Thm 20.1) for a method
+// that is backward stable on V with its columns scaled to unit length (QR or SVD, numpy.polyfit):
+//   |S (b - b*)| / |S b*| <= c eps (kappa + kappa^2 tan(theta)),  tan(theta) = |r| / |V b*|,
+// kappa = kappa_2 of the column-scaled V, S the column norms, c = 10 m (m data points).
+struct Accuracy {
+  double kappa, tan_theta, allowed;
+  Eigen::VectorXd scale;
+};
+
+Accuracy accuracy_of(const FitCase& fit) {
+  const Eigen::MatrixXd V = fitting::vandermonde(fit.x, fit.degree);
+  Accuracy a;
+  a.scale = V.colwise().norm().transpose();
+  a.kappa = fitting::two_norm_condition(fitting::unit_columns(V));
+  const Eigen::VectorXd fitted = V * fit.expected;
+  a.tan_theta = (fit.y - fitted).norm() / fitted.norm();
+  a.allowed = 10.0 * static_cast<double>(fit.x.size()) * eps * (a.kappa + a.kappa * a.kappa * a.tan_theta);
+  return a;
+}
+
+double scaled_error(const Eigen::VectorXd& got, const FitCase& fit, const Accuracy& a, int& worst) {
+  const Eigen::VectorXd weighted = (a.scale.array() * (got - fit.expected).array()).abs().matrix();
+  weighted.maxCoeff(&worst);
+  return weighted.maxCoeff() / (a.scale.array() * fit.expected.array()).abs().maxCoeff();
+}
+
+std::vector<ReferenceTime> fit_times(const FitCase& fit) {
+  fitting::FitOptions options;
+  options.degree = fit.degree;
+  options.method = fitting::FitMethod::normal_scaled;
+  return {{"numlab fit (normal-scaled, GEPP)", median_seconds([&] { fitting::fit_polynomial(fit.x, fit.y, options); })},
+          {"GSL gsl_multifit_linear", median_seconds([&] { fitting::gsl_multifit_fit(fit.x, fit.y, fit.degree); })}};
+}
+
+std::string fit_hint(const Eigen::VectorXd& got, const FitCase& fit, const Accuracy& a) {
+  int unused = 0;
+  if (scaled_error(got.reverse(), fit, a, unused) <= 1e-6) {
+    return "the powers are reversed: reply lowest power first (numpy.polyfit returns the highest first)";
+  }
+  return "solve the least-squares problem min |V b - y| stably (QR or SVD of V, columns scaled to unit length); the "
+         "normal equations square kappa";
+}
+
+// The coefficients of a reply, or a failed Verdict for a wrong count (a wrong degree is the
+// student's mistake, not a broken reply).
+std::optional<Verdict> wrong_count(const nlohmann::json& reply, const FitCase& fit) {
+  const auto found = reply.find("coefficients");
+  if (found == reply.end() || !found->is_array() || found->size() == static_cast<std::size_t>(fit.degree + 1)) {
+    return std::nullopt;  // vector_field reports a missing or malformed field
+  }
+  return Verdict::fail(fmt::format("{}: coefficients has {} entries, expected degree + 1 = {} (b0 ... b{})", fit.name,
+                                   found->size(), fit.degree + 1, fit.degree),
+                       "a loop over the powers that stops one short, or starts at 1: the constant term b0 comes first");
+}
+
+Verdict check_fits(Session& session, const std::vector<FitCase>& cases) {
+  for (const FitCase& fit : cases) {
+    const nlohmann::json reply = session.ask(request_for(fit));
+    if (auto verdict = wrong_count(reply, fit)) return *verdict;
+    const Eigen::VectorXd got = vector_field(reply, "coefficients", fit.degree + 1);
+    const Accuracy a = accuracy_of(fit);
+    int worst = 0;
+    const double error = scaled_error(got, fit, a, worst);
+    if (error <= a.allowed) continue;
+    return Verdict::fail(
+        fmt::format("{} (degree {}, {} points): coefficients[{}] = {:.15g}, expected {:.15g} ({}); the coefficients "
+                    "differ by {} (relative, each weighted by its column's norm), allowed {} (10 m eps (kappa + "
+                    "kappa^2 tan theta), kappa = {}, tan theta = {})",
+                    fit.name, fit.degree, fit.x.size(), worst, got(worst), fit.expected(worst), fit.reference, sci(error),
+                    sci(a.allowed), sci(a.kappa), sci(a.tan_theta)) +
+            (scaled_error(got.reverse(), fit, a, worst) <= a.allowed ? "; in reverse order your coefficients match: "
+                                                                       "powers reversed"
+                                                                     : ""),
+        fit_hint(got, fit, a));
+  }
+  return Verdict::pass(fit_times(cases.back()));
+}
+
+FitCase gsl_case(std::string name, Eigen::VectorXd x, Eigen::VectorXd y, int degree) {
+  Eigen::VectorXd expected = fitting::gsl_multifit_fit(x, y, degree).coefficients;
+  return {std::move(name), std::move(x), std::move(y), degree, std::move(expected), "GSL gsl_multifit_linear"};
+}
+
+Verdict small_fits(Session& session) {
+  std::vector<FitCase> cases;
+  Eigen::VectorXd x(5), y(5);
+  x << 0, 1, 2, 3, 4;
+  y << 2.1, 4.9, 8.2, 10.8, 14.1;
+  cases.push_back(gsl_case("a line through 5 points", x, y, 1));
+  Eigen::VectorXd x3(3), y3(3);
+  x3 << -1, 0.5, 2;
+  y3 << 4, 1, 7;
+  cases.push_back(gsl_case("a parabola through 3 points (interpolation)", x3, y3, 2));
+  Eigen::VectorXd x12 = Eigen::VectorXd::LinSpaced(12, -1.0, 2.0), y12(12);
+  for (Eigen::Index i = 0; i < 12; ++i) y12(i) = 1.5 - 2.0 * x12(i) + 0.5 * std::pow(x12(i), 3) + 0.1 * std::sin(7.0 * x12(i));
+  cases.push_back(gsl_case("a cubic through 12 noisy points", x12, y12, 3));
+  return check_fits(session, cases);
+}
+
+Verdict nist_fits(Session& session) {
+  std::vector<FitCase> cases;
+  for (fitting::DataSet& set : nist_polynomial_sets()) {
+    const auto& certified = set.certified->parameters;
+    Eigen::VectorXd expected = Eigen::Map<const Eigen::VectorXd>(certified.data(), static_cast<Eigen::Index>(certified.size()));
+    const int degree = static_cast<int>(certified.size()) - 1;
+    cases.push_back({set.name, set.x, set.y, degree, expected, "NIST certified values"});
+  }
+  return check_fits(session, cases);
+}
+
+// Fewer distinct x than coefficients: the fit is not determined, and must say so.
+Verdict undetermined(Session& session) {
+  const std::vector<std::pair<std::vector<double>, int>> cases = {{{1, 1, 1, 1, 2, 2, 2, 2}, 2}, {{0.5, 1.5, 2.5}, 3}};
+  for (const auto& [xs, degree] : cases) {
+    Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(xs.data(), static_cast<Eigen::Index>(xs.size()));
+    Eigen::VectorXd y = x.array() * 2.0 + 1.0;
+    const std::size_t distinct = std::set<double>(xs.begin(), xs.end()).size();
+    const nlohmann::json reply = session.ask({{"x", to_json(x)}, {"y", to_json(y)}, {"degree", degree}});
+    const auto status = optional_status(reply);
+    if (!status || *status == "converged") {
+      return Verdict::fail(fmt::format("{} points with {} distinct x, degree {}: the reply gives status \"{}\"; {} "
+                                       "coefficients are not determined by {} distinct x (V has rank {}); expected a "
+                                       "status such as \"singular\"",
+                                       xs.size(), distinct, degree, status.value_or("(none)"), degree + 1, distinct,
+                                       distinct),
+                           "check the rank of V (or the count of distinct x) before solving; a least-squares solver "
+                           "returns some answer even when infinitely many fit equally well");
+    }
+  }
+  return Verdict::pass();
+}
+
+}  // namespace
+
+Exercise polyfit_exercise() {
+  Exercise exercise;
+  exercise.name = "polyfit";
+  exercise.summary = "least-squares polynomial fit, against GSL and NIST's certified values";
+  exercise.task = R"(# polyfit: a least-squares polynomial fit
+
+Write `solve(request)`: the coefficients b0 ... bD of the polynomial y ~ b0 + b1 x + ... + bD x^D
+that minimises sum_i (y_i - p(x_i))^2.
+
+- **Request:** `x`, `y` (lists of the same length m), `degree` D.
+- **Reply:** `coefficients` (D + 1 numbers, **lowest power first**: b0, b1, ..., bD); or, when the
+  fit is not determined (fewer distinct x than D + 1), `status: "singular"` and no coefficients.
+
+The least-squares problem is min |V b - y| with the Vandermonde matrix V (row i: 1, x_i, ...,
+x_i^D). Solve it stably: QR or SVD of V with each column scaled to unit length, then divide b_k by
+the scale of column k (numpy.polyfit scales, but returns the highest power first).
+
+## Task 1
+Small fits (a line, an interpolating parabola, a noisy cubic) match GSL's `gsl_multifit_linear`.
+
+## Task 2
+NIST StRD sets (Norris, Pontius, Wampler1, Wampler4, Wampler5) match NIST's certified
+coefficients to the accuracy their conditioning allows: with S the column norms of V and kappa
+the 2-norm condition number of V with unit columns, |S (b - b*)|_inf / |S b*|_inf <= 10 m eps
+(kappa + kappa^2 tan theta), tan theta = |r| / |V b*| (the least-squares perturbation bound).
+
+## Task 3
+A fit with fewer distinct x than coefficients says `status: "singular"`.
+
+## Hints
+- Powers reversed (highest first) is the classic slip with numpy.polyfit.
+- Seed 001 built the normal equations V^T V b = V^T y from power sums: that squares kappa, and on
+  Wampler's sets costs digits.
+)";
+  exercise.stubs.python = "    raise NotImplementedError(\"not implemented: the least-squares polynomial fit\")\n";
+  exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: the least-squares polynomial fit\");\n";
+  exercise.stubs.octave = "  error('not implemented: the least-squares polynomial fit');\n";
+  exercise.battery = [] {
+    return std::vector<Check>{
+        {"Small fits (a line, an interpolating parabola, a noisy cubic) match GSL's gsl_multifit_linear, lowest power "
+         "first",
+         1, small_fits},
+        {"NIST StRD polynomial sets match the certified coefficients to the accuracy kappa allows", 2, nist_fits},
+        {"A fit with fewer distinct x than coefficients reports status \"singular\"", 3, undetermined},
+    };
+  };
+  return exercise;
+}
+
+}  // namespace numlab::exercises

@@ -1,0 +1,39 @@
+#!/usr/bin/env python3
+# BUG: fits in t = x - mean(x) and returns the coefficients of t, not of x
+# EXPECT-CHECK: Small fits
+# EXPECT-MESSAGE: a line through 5 points
+"""Reference solution of `numlab exercise polyfit`: least squares by SVD (numpy.linalg.lstsq) of
+the Vandermonde matrix with unit-length columns, coefficients lowest power first."""
+import json
+import sys
+
+import numpy as np
+
+
+def solve(request):
+    x = np.array(request["x"], dtype=float)
+    y = np.array(request["y"], dtype=float)
+    degree = int(request["degree"])
+    if len(np.unique(x)) < degree + 1:
+        return {"status": "singular"}
+    V = np.vander(x - np.mean(x), degree + 1, increasing=True)
+    scale = np.linalg.norm(V, axis=0)
+    b = np.linalg.lstsq(V / scale, y, rcond=None)[0] / scale
+    return {"coefficients": b.tolist()}
+
+
+def main():
+    for line in sys.stdin:
+        if not line.strip():
+            continue
+        request = json.loads(line)
+        try:
+            reply = solve(request)
+        except Exception as error:  # the checker reports it as this request's failure
+            reply = {"error": str(error)}
+        reply["id"] = request.get("id")
+        print(json.dumps(reply), flush=True)
+
+
+if __name__ == "__main__":
+    main()
