@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "output/report_style.hpp"
@@ -139,14 +140,30 @@ std::string results_html(const Exercise& exercise, const std::vector<CheckResult
   std::string body = "<p><em>" + html_escape(exercise.summary) + "</em></p>\n<p>Checked: <code>" +
                      html_escape(command) + "</code></p>\n<p class=\"summary\">" +
                      html_escape(results_summary(results)) + "</p>\n";
-  body += "<h2>Checks</h2>\n<table>\n<tr><th>check</th><th>task</th><th>result</th><th>time per request</th></tr>\n";
+  // One column per reference, in the order they first appear.
+  std::vector<std::string> references;
+  for (const CheckResult& result : results) {
+    for (const ReferenceTime& reference : result.references) {
+      if (std::find(references.begin(), references.end(), reference.name) == references.end())
+        references.push_back(reference.name);
+    }
+  }
+  body += "<h2>Checks</h2>\n<table>\n<tr><th>check</th><th>task</th><th>result</th><th>you (ms/request)</th>";
+  for (const std::string& reference : references) body += "<th>" + html_escape(reference) + " (ms)</th>";
+  body += "</tr>\n";
   for (const CheckResult& result : results) {
     const std::string status = to_string(result.status);
-    const std::string timing = timing_line(result);
-    body += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{} {}</td><td>{}</td></tr>\n",
-                        html_escape(result.name), result.task_id, status,
-                        result.status == CheckStatus::pass ? "✓" : "✗", status,
-                        timing.empty() ? "-" : html_escape(timing));
+    body += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{} {}</td><td>{}</td>", html_escape(result.name),
+                        result.task_id, status, result.status == CheckStatus::pass ? "✓" : "✗", status,
+                        result.seconds_per_request > 0.0 ? fmt::format("{:.3g}", result.seconds_per_request * 1e3) : "-");
+    for (const std::string& name : references) {
+      const auto found = std::find_if(result.references.begin(), result.references.end(),
+                                      [&](const ReferenceTime& reference) { return reference.name == name; });
+      body += "<td>" + (found == result.references.end() ? std::string("-")
+                                                          : fmt::format("{:.3g}", found->seconds_per_request * 1e3)) +
+              "</td>";
+    }
+    body += "</tr>\n";
   }
   body += "</table>\n";
   if (count(results, CheckStatus::pass) < static_cast<int>(results.size())) {
@@ -163,7 +180,8 @@ std::string results_html(const Exercise& exercise, const std::vector<CheckResult
       ".pass { color: #1a7f37; font-weight: bold; } .fail { color: #b42318; font-weight: bold; }\n"
       ".error { color: #b54708; font-weight: bold; } .summary { font-size: 1.15em; font-weight: bold; }\n"
       ".message { white-space: pre-wrap; font-family: monospace; } .hint { background: #fff8e1; padding: 0.4em; }\n"
-      "td:nth-child(2) { text-align: center; } td:nth-child(3) { text-align: left; }\n";
+      "td:first-child { white-space: normal; min-width: 28em; } td:nth-child(2) { text-align: center; }\n"
+      "td:nth-child(3) { text-align: left; }\n";
   return cli::html_page("numlab exercise " + exercise.name, body, css);
 }
 

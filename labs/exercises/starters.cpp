@@ -145,9 +145,12 @@ std::string octave_solution(const Exercise& exercise) {
 function reply = solve(request)
 {body}end
 
+% input('', 's') reads one line as soon as it arrives (fgetl(stdin) would wait for the pipe to
+% fill or close); at the end of stdin it raises, and the loop ends.
 while true
-  line = fgetl(stdin);
-  if ~ischar(line)
+  try
+    line = input('', 's');
+  catch
     break;
   end
   if isempty(strtrim(line))

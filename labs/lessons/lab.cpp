@@ -105,6 +105,8 @@ const std::vector<Lab>& all_labs() {
        run_mustang_lab},
       {"fit", "Least squares: the normal equations against NIST's certified digits, scaling, the foot path's arcs",
        run_fit_lab},
+      {"exercises", "numlab exercise for instructors: a starter, a correct and a buggy GEPP checked, the verdicts read",
+       run_exercises_lab},
   };
   return labs;
 }

@@ -89,5 +89,6 @@ int run_jansen_sequential_lab(LabSession& session);
 int run_beest_lab(LabSession& session);
 int run_mustang_lab(LabSession& session);
 int run_fit_lab(LabSession& session);
+int run_exercises_lab(LabSession& session);
 
 }  // namespace numlab::cli

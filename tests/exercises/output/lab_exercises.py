@@ -7,7 +7,8 @@ Runs the lab into WORKDIR and reads the results.json it wrote for each program i
 (check-starter, check-correct, check-no-pivoting). Then: every check of the starter fails with
 "not implemented" (none errors); the correct GEPP passes every check; the GEPP without pivoting
 fails the pivot-trace check; and each count and each failing check the lab's text names is the
-one in those files.
+one in those files. Without a python3 that imports numpy (a stand-in python3 first on PATH), the
+lab says so and exits 1.
 """
 import json
 import os
@@ -58,6 +59,14 @@ def main():
     expect(f"{count_of(count(correct, 'pass'), len(correct))} checks pass." in text,
            "the correct solution's sentence does not match its results")
 
+    timed = sorted((t for t in correct if t["timing"]["you"] is not None and len(t["timing"]) > 1),
+                   key=lambda t: t["timing"]["you"])
+    if timed:
+        median = timed[len(timed) // 2]
+        you_ms = f"{median['timing']['you'] * 1e3:.3g}"
+        expect(f"On the check of median time, \"{median['name']}\", the Python solution took {you_ms} ms per request"
+               in text, "the speed sentence is not about the check of median time")
+
     buggy = results("check-no-pivoting")
     expect(any(t["status"] == "fail" and "trace" in t["name"] for t in buggy),
            "the GEPP without pivoting does not fail the trace check")
@@ -68,8 +77,21 @@ def main():
     for test in buggy:
         if test["status"] == "fail":
             first_line = test["message"].split("\n")[0]
-            expect(f"\"{test['name']}\" fails: {' '.join(first_line.split())}" in text,
+            expect(f"\"{test['name']}\" fails. The message: {' '.join(first_line.split())}." in text,
                    f"the lab does not name the failing check '{test['name']}' with its message")
+
+    # A python3 without numpy: the lab says what it needs and exits 1 (not 2: nothing was wrong with the command).
+    fake = os.path.join(workdir, "python-without-numpy")
+    os.makedirs(fake)
+    with open(os.path.join(fake, "python3"), "w", encoding="utf-8") as stand_in:
+        stand_in.write("#!/bin/sh\necho \"ModuleNotFoundError: No module named 'numpy'\" >&2\nexit 1\n")
+    os.chmod(os.path.join(fake, "python3"), 0o755)
+    environment = dict(os.environ, PATH=fake + os.pathsep + os.environ.get("PATH", ""))
+    without = subprocess.run([numlab, "lab", "exercises", "--out", os.path.join(workdir, "without")],
+                             capture_output=True, text=True, timeout=300, env=environment)
+    expect(without.returncode == 1, f"without numpy the lab exits {without.returncode}, not 1")
+    expect("python3 with numpy is needed" in re.sub(r"\s+", " ", without.stdout),
+           "without numpy the lab does not say that python3 with numpy is needed")
 
     if problems:
         print("\n".join(problems))

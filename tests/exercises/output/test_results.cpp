@@ -130,5 +130,8 @@ TEST_CASE("report.html names every check, the command, the failures, and escapes
   CHECK(html.find("<script>") == std::string::npos);
   CHECK_THAT(html, Contains("Hint: no pivoting: you keep the diagonal entry"));
   CHECK_THAT(html, Contains("2 of 4 checks pass; 1 fail, 1 error"));
-  CHECK_THAT(html, Contains("you 0.41 ms/request, numlab GEPP 0.012 ms, GSL LU 0.009 ms"));
+  // The times: the student's and one column per reference (ms), "-" where a check has none.
+  CHECK_THAT(html, Contains("<th>you (ms/request)</th><th>numlab GEPP (ms)</th><th>GSL LU (ms)</th></tr>"));
+  CHECK_THAT(html, Contains("<td>0.41</td><td>0.012</td><td>0.009</td></tr>"));
+  CHECK_THAT(html, Contains("<td>0.5</td><td>-</td><td>0.01</td></tr>"));
 }

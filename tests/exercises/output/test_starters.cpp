@@ -6,12 +6,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <sstream>
 
 #include "exercises/checker.hpp"
+#include "exercises/child_session.hpp"
 #include "exercises/starters.hpp"
-#include "pipe_session.hpp"
 #include "tiny_exercise.hpp"
 
 using namespace numlab::exercises;
@@ -41,15 +40,17 @@ std::string fresh_folder(const std::string& name) {
 
 bool on_path(const std::string& program) { return std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) == 0; }
 
-// Runs the tiny battery against the starter in `folder`, started as `command` there.
-std::vector<CheckResult> check_starter(const std::string& folder, const std::vector<std::string>& command) {
-  const Exercise exercise = numlab::test::tiny_exercise();
-  std::unique_ptr<Session> session = numlab::test::starter_session(exercise.name, folder, command);
-  return run_checks(exercise, *session);
+// Runs the exercise's battery through the real sandboxed child: `command`, its file arguments in `folder`.
+std::vector<CheckResult> check_starter(const std::string& folder, std::vector<std::string> command,
+                                       const Exercise& exercise = numlab::test::tiny_exercise()) {
+  for (std::string& word : command)
+    if (word.ends_with(".py") || word.ends_with(".m")) word = folder + "/" + word;
+  ChildSession session(exercise.name, command, 30.0);
+  return run_checks(exercise, session);
 }
 
-void require_all_fail_not_implemented(const std::vector<CheckResult>& results) {
-  REQUIRE(results.size() == 3);
+void require_all_fail_not_implemented(const std::vector<CheckResult>& results, std::size_t checks = 3) {
+  REQUIRE(results.size() == checks);
   for (const CheckResult& result : results) {
     INFO(result.name << ": " << to_string(result.status) << ": " << result.message);
     CHECK(result.status == CheckStatus::fail);
@@ -111,7 +112,7 @@ TEST_CASE("Each starter has TASK.md with the exact check command, and the progra
                  Contains("apt-get install octave"));
   const std::string& m = file_named(octave, "solution.m").contents;
   CHECK_THAT(m, Contains("\n1;\n") && Contains("function reply = solve(request)\n  error('not implemented") &&
-                    Contains("fgetl(stdin)") && Contains("jsondecode") && Contains("jsonencode") &&
+                    Contains("input('', 's')") && Contains("jsondecode") && Contains("jsonencode") &&
                     Contains("fflush(stdout)") && Contains("'error', err.message"));
 }
 
@@ -155,4 +156,23 @@ TEST_CASE("The Octave starter, as generated, fails every check with 'not impleme
   write_starter_files(folder, starter_files(solved, Language::octave));
   require_all_pass(check_starter(folder, octave));
   std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("Every exercise's Python and Octave starters, as generated, fail every check with 'not implemented'",
+          "[starters][python][octave]") {
+  const bool octave = on_path("octave-cli");
+  if (!octave) WARN("octave-cli is not on PATH (apt-get install octave): only the Python starters are run");
+  for (const Exercise& exercise : all_exercises()) {
+    INFO(exercise.name);
+    const std::size_t checks = exercise.battery().size();
+    const std::string folder = fresh_folder(exercise.name);
+    write_starter_files(folder, starter_files(exercise, Language::python));
+    require_all_fail_not_implemented(check_starter(folder, {NUMLAB_PYTHON3, "solution.py"}, exercise), checks);
+    if (octave) {
+      write_starter_files(folder, starter_files(exercise, Language::octave));
+      require_all_fail_not_implemented(
+          check_starter(folder, {"octave-cli", "--no-gui", "--quiet", "solution.m"}, exercise), checks);
+    }
+    std::filesystem::remove_all(folder);
+  }
 }
