@@ -73,7 +73,7 @@ TEST_CASE("exercise check --out writes report.html and results.json there, and n
   const std::string folder = temporary_folder();
   const std::string starter = folder + "/starter";
   REQUIRE(run_numlab("exercise init inverse2x2 " + starter).exit_code == 0);
-  const ProgramRun run = run_numlab("exercise check inverse2x2 --out " + folder + "/verdict -- python3 " + starter +
+  const ProgramRun run = run_numlab("exercise check inverse2x2 --out " + folder + "/verdict -- " NUMLAB_PYTHON3 " " + starter +
                                     "/solution.py");
   // The starter as generated: every check fails honestly, none errs.
   CHECK(run.exit_code == 1);
