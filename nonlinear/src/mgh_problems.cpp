@@ -1,9 +1,12 @@
 #include "numlab/nonlinear/mgh_problems.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <type_traits>
+
+#include "mgh_problems_minpack.hpp"
 
 namespace numlab::nonlinear {
 
@@ -280,15 +283,50 @@ Eigen::VectorXd powell_badly_scaled_root() {
 }  // namespace
 
 const std::vector<std::string>& test_problem_names() {
-  static const std::vector<std::string> names = {"rosenbrock",      "freudenstein-roth", "powell-badly-scaled",
-                                                 "powell-singular", "wood",              "helical-valley",
-                                                 "discrete-bvp",    "trigonometric",     "broyden-tridiagonal",
-                                                 "arctangent"};
+  static const std::vector<std::string> names = {
+      "rosenbrock",     "freudenstein-roth", "powell-badly-scaled", "powell-singular",     "wood",
+      "helical-valley", "discrete-bvp",      "trigonometric",       "broyden-tridiagonal", "arctangent",
+      "watson",         "chebyquad",         "brown-almost-linear", "discrete-integral",   "variably-dimensioned",
+      "broyden-banded"};
   return names;
 }
 
+ProblemSizes problem_sizes(const std::string& name) {
+  const auto fixed = [](int n) { return ProblemSizes{n, n, n}; };
+  constexpr int unlimited = std::numeric_limits<int>::max();
+  if (name == "rosenbrock" || name == "freudenstein-roth" || name == "powell-badly-scaled" || name == "arctangent") {
+    return fixed(2);
+  }
+  if (name == "powell-singular" || name == "wood") return fixed(4);
+  if (name == "helical-valley") return fixed(3);
+  if (name == "watson") return {6, 2, 31};  // MGH 1981: 2 <= n <= 31
+  if (name == "chebyquad") return {5, 1, unlimited};
+  if (name == "discrete-bvp" || name == "trigonometric" || name == "broyden-tridiagonal" ||
+      name == "brown-almost-linear" || name == "discrete-integral" || name == "variably-dimensioned" ||
+      name == "broyden-banded") {
+    return {variable_problem_size, 1, unlimited};
+  }
+  std::string expected;
+  for (const std::string& known : test_problem_names()) expected += (expected.empty() ? "" : ", ") + known;
+  throw std::invalid_argument("unknown problem '" + name + "' (expected one of " + expected + ")");
+}
+
+std::string describe_sizes(const ProblemSizes& sizes) {
+  const std::string smallest = std::to_string(sizes.smallest);
+  if (sizes.fixed()) return "n = " + smallest + " only";
+  if (sizes.largest == std::numeric_limits<int>::max()) return "n >= " + smallest;
+  return "n = " + smallest + ".." + std::to_string(sizes.largest);
+}
+
 TestProblem make_test_problem(const std::string& name) {
-  const int n = variable_problem_size;
+  return make_test_problem(name, problem_sizes(name).default_size);
+}
+
+TestProblem make_test_problem(const std::string& name, int n) {
+  const ProblemSizes sizes = problem_sizes(name);
+  if (n < sizes.smallest || n > sizes.largest) {
+    throw std::invalid_argument(name + " has " + describe_sizes(sizes) + ", not n = " + std::to_string(n));
+  }
   if (name == "rosenbrock") {
     return {name, "Rosenbrock (n = 2)", std::make_shared<Rosenbrock>(), vector_of({-1.2, 1.0}), vector_of({1.0, 1.0})};
   }
@@ -318,24 +356,27 @@ TestProblem make_test_problem(const std::string& name) {
       const double t = (i + 1.0) / (n + 1.0);
       start(i) = t * (t - 1.0);
     }
-    return {name, "Discrete boundary value (n = 10); no closed-form root", std::make_shared<DiscreteBoundaryValue>(n),
+    return {name, "Discrete boundary value (n = " + std::to_string(n) + "); no closed-form root", std::make_shared<DiscreteBoundaryValue>(n),
             start, std::nullopt};
   }
   if (name == "trigonometric") {
-    return {name, "Trigonometric (n = 10); x = 0 is a root, not the only one", std::make_shared<Trigonometric>(n),
+    return {name, "Trigonometric (n = " + std::to_string(n) + "); x = 0 is a root, not the only one", std::make_shared<Trigonometric>(n),
             Eigen::VectorXd::Constant(n, 1.0 / n), Eigen::VectorXd::Zero(n)};
   }
   if (name == "broyden-tridiagonal") {
-    return {name, "Broyden tridiagonal (n = 10); no closed-form root", std::make_shared<BroydenTridiagonal>(n),
+    return {name, "Broyden tridiagonal (n = " + std::to_string(n) + "); no closed-form root", std::make_shared<BroydenTridiagonal>(n),
             Eigen::VectorXd::Constant(n, -1.0), std::nullopt};
   }
   if (name == "arctangent") {
     return {name, "Arctangent (n = 2, not MGH); plain Newton overshoots from |x| > 1.39, damping cures it",
             std::make_shared<Arctangent>(), vector_of({2.0, 2.0}), Eigen::VectorXd::Zero(2)};
   }
-  throw std::invalid_argument("unknown problem '" + name +
-                              "' (expected rosenbrock, freudenstein-roth, powell-badly-scaled, powell-singular, wood, "
-                              "helical-valley, discrete-bvp, trigonometric, broyden-tridiagonal or arctangent)");
+  if (name == "watson") return detail::make_watson(n);
+  if (name == "chebyquad") return detail::make_chebyquad(n);
+  if (name == "brown-almost-linear") return detail::make_brown_almost_linear(n);
+  if (name == "discrete-integral") return detail::make_discrete_integral(n);
+  if (name == "variably-dimensioned") return detail::make_variably_dimensioned(n);
+  return detail::make_broyden_banded(n);  // the last name problem_sizes() accepted
 }
 
 }  // namespace numlab::nonlinear
