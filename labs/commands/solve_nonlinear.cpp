@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "numlab/linalg/matrix_file.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/mgh_problems.hpp"
+#include "numlab/nonlinear/minpack_cases.hpp"
 #include "output/trace_printers.hpp"
 
 namespace numlab::cli {
@@ -28,6 +30,28 @@ Eigen::VectorXd parse_point(const std::string& text, int expected, const std::st
   return Eigen::Map<const Eigen::VectorXd>(values.data(), expected);
 }
 
+ChosenProblem choose_problem(const std::string& name, std::optional<int> size, std::optional<int> start_factor,
+                             const std::optional<std::string>& x0) {
+  const nonlinear::ProblemSizes sizes = nonlinear::problem_sizes(name);
+  const int largest = std::min(sizes.largest, largest_cli_problem_size);
+  if (size && (*size < sizes.smallest || *size > largest)) {
+    const std::string allowed = sizes.fixed() ? nonlinear::describe_sizes(sizes)
+                                              : fmt::format("n = {}..{}", sizes.smallest, largest);
+    throw std::invalid_argument(fmt::format("--size {}: {} has {}", *size, name, allowed));
+  }
+  if (start_factor && x0) throw std::invalid_argument("--start and --x0 both give the start: use one");
+  nonlinear::TestProblem problem = nonlinear::make_test_problem(name, size.value_or(sizes.default_size));
+  const int n = problem.system->dimension();
+  if (x0) {
+    if (x0->empty()) throw std::invalid_argument("--x0 needs numbers a,b,... (or leave it out for the standard start)");
+    Eigen::VectorXd point = parse_point(*x0, n, "--x0");
+    return {std::move(problem), std::move(point), "given"};
+  }
+  const int factor = start_factor.value_or(1);
+  Eigen::VectorXd point = nonlinear::minpack_start(name, problem.standard_start, factor);
+  return {std::move(problem), std::move(point), fmt::format("{}x0", factor)};
+}
+
 SolveNonlinearCommand::SolveNonlinearCommand(CLI::App& solve) {
   command_ = solve.add_subcommand("nonlinear", "Solve one nonlinear test system f(x) = 0");
   command_->add_option("--problem", problem_, "Moré-Garbow-Hillstrom problem")
@@ -37,6 +61,9 @@ SolveNonlinearCommand::SolveNonlinearCommand(CLI::App& solve) {
       ->required()
       ->check(CLI::IsMember(nonlinear_method_names()));
   command_->add_option("--x0", x0_, "Starting point a,b,... (default: the problem's standard start)");
+  command_->add_option("--start", start_factor_, "MINPACK's start: 1, 10 or 100 times x0 (default 1; not with --x0)")
+      ->check(CLI::IsMember({1, 10, 100}));
+  command_->add_option("--size", size_, "Size n of a variable-size problem (default: docs/cli.md)");
   command_->add_option("--linear", linear_, "Newton's inner linear solver (newton only)")
       ->check(CLI::IsMember(nonlinear::newton_linear_methods()));
   command_->add_flag("--damped", damped_, "Backtracking on ||f||^2 (newton only; off by default)");
@@ -51,10 +78,11 @@ int SolveNonlinearCommand::run() const {
   const bool is_newton = method_ == "newton";
   require_applies(damped_, is_newton, "--damped", "--method newton (GSL's types take no damping)");
   require_applies(given(*command_, "--linear"), is_newton, "--linear", "--method newton");
-  const nonlinear::TestProblem problem = nonlinear::make_test_problem(problem_);
+  const ChosenProblem chosen = choose_problem(problem_, size_, start_factor_,
+                                              given(*command_, "--x0") ? std::optional(x0_) : std::nullopt);
+  const nonlinear::TestProblem& problem = chosen.problem;
+  const Eigen::VectorXd& x0 = chosen.x0;
   const int n = problem.system->dimension();
-  if (given(*command_, "--x0") && x0_.empty()) throw std::invalid_argument("--x0 needs numbers a,b,... (or leave it out for the standard start)");
-  const Eigen::VectorXd x0 = x0_.empty() ? problem.standard_start : parse_point(x0_, n, "--x0");
 
   NonlinearSettings settings;
   settings.linear = nonlinear::linear_method_named(linear_);
@@ -83,6 +111,8 @@ int SolveNonlinearCommand::run() const {
   if (common.format == Format::json) {
     nlohmann::ordered_json out = {{"problem", problem_},
                                   {"method", method_},
+                                  {"size", n},
+                                  {"start", chosen.start},
                                   {"x", nlohmann::ordered_json::array()},
                                   {"status", std::string(to_string(run.status))},
                                   {"iterations", run.iterations},
@@ -101,18 +131,21 @@ int SolveNonlinearCommand::run() const {
     if (common.trace) out["trace"] = tracer.records();
     std::cout << out.dump(2) << '\n';
   } else if (common.format == Format::csv) {
-    std::cout << "problem,method,status,iterations,residual_inf,function_evaluations,jacobian_evaluations,time_s";
+    std::cout << "problem,method,status,iterations,residual_inf,function_evaluations,jacobian_evaluations,time_s,size,"
+                 "start";
     for (int i = 0; i < n; ++i) std::cout << ",x" << i + 1;
     std::cout << '\n'
               << fmt::format("{},{},{},{},{:.6g},{},{},{:.6g}", problem_, method_, to_string(run.status),
                              run.iterations, run.residual_norm, run.function_evaluations, run.jacobian_evaluations,
-                             time_s);
+                             time_s)
+              << fmt::format(",{},{}", n, chosen.start);
     for (double value : run.x) std::cout << fmt::format(",{:.17g}", value);
     std::cout << '\n';
   } else {
     std::string x_text;
     for (double value : run.x) x_text += fmt::format("{:.12g} ", value);
     std::cout << fmt::format("problem            {} - {}\n", problem_, problem.description)
+              << fmt::format("size, start        n = {}, {}\n", n, chosen.start)
               << fmt::format("method             {}{}\n", method_,
                              is_newton ? fmt::format(" (linear solver {}{})", linear_, damped_ ? ", damped" : "") : "")
               << fmt::format("status             {}\n", to_string(run.status))

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/cli_common.hpp"
+#include "numlab/nonlinear/mgh_problems.hpp"
 
 namespace numlab::cli {
 
@@ -23,9 +24,24 @@ class SolveNonlinearCommand {
   std::string method_;
   std::string linear_ = "gepp";
   std::string x0_;
+  std::optional<int> start_factor_;  // --start 1|10|100: MINPACK's initpt factor
+  std::optional<int> size_;          // --size N: the size of a variable-size problem
   bool damped_ = false;
   std::optional<double> step_tolerance_;
 };
+
+// Largest --size accepted: the Jacobian is dense (n^2 doubles, 8 MB at n = 1000).
+inline constexpr int largest_cli_problem_size = 1000;
+
+// --size and --start checked against the problem (bad input throws std::invalid_argument naming the
+// flag), then the problem at that size and its start: MINPACK's initpt factor, --x0, or x0.
+struct ChosenProblem {
+  nonlinear::TestProblem problem;
+  Eigen::VectorXd x0;
+  std::string start;  // "1x0", "10x0", "100x0" or "given" (--x0)
+};
+ChosenProblem choose_problem(const std::string& name, std::optional<int> size, std::optional<int> start_factor,
+                             const std::optional<std::string>& x0);
 
 // "1,-2.5,3e-4" as a vector of `expected` numbers; throws std::invalid_argument naming the problem.
 Eigen::VectorXd parse_point(const std::string& text, int expected, const std::string& flag);
