@@ -100,3 +100,31 @@ TEST_CASE("solve nonlinear: bad input gets one error line and exit 2", "[cli][no
   require_bad_input("--problem wood --method gsl-hybridsj --damped --format json",
                     "--damped applies only to --method newton");
 }
+
+TEST_CASE("solve nonlinear: --start and --size pick MINPACK's case, and say so", "[cli][nonlinear][minpack]") {
+  // Wood from 10 x0 = (-30, -10, -30, -10): the first trace row's x is not printed, so check the
+  // reported start and that the run is the scaled one (its ||f|| at x0 is 1000 times larger).
+  const json scaled = solve_json("--problem wood --method newton --damped --start 10 --max-iter 200", 0);
+  CHECK(scaled["start"] == "10x0");
+  CHECK(scaled["size"] == 4);
+  const json chebyquad = solve_json("--problem chebyquad --size 7 --method gsl-hybridsj --max-iter 200", 0);
+  CHECK(chebyquad["size"] == 7);
+  CHECK(chebyquad["x"].size() == 7);
+  CHECK(chebyquad["start"] == "1x0");
+  const json given = solve_json("--problem rosenbrock --method newton --x0 2,3", 0);
+  CHECK(given["start"] == "given");
+  const auto csv = run_numlab("solve nonlinear --problem watson --method newton --start 10 --format csv");
+  CHECK_THAT(csv.out, Contains(",size,start,x1,"));
+  CHECK_THAT(csv.out, Contains(",6,10x0,"));
+  const auto text = run_numlab("solve nonlinear --problem discrete-integral --size 1 --method newton");
+  CHECK_THAT(text.out, Contains("n = 1, 1x0"));
+}
+
+TEST_CASE("solve nonlinear: a size or start the problem does not have is bad input", "[cli][nonlinear][minpack][failure]") {
+  require_bad_input("--problem rosenbrock --method newton --size 3", "--size");
+  require_bad_input("--problem watson --method newton --size 32", "--size");
+  require_bad_input("--problem chebyquad --method newton --size 0", "--size");
+  require_bad_input("--problem broyden-banded --method newton --size 1001", "--size");
+  require_bad_input("--problem wood --method newton --start 5", "--start");
+  require_bad_input("--problem wood --method newton --start 10 --x0 1,2,3,4", "--start");
+}
