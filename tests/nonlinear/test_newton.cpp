@@ -198,7 +198,11 @@ TEST_CASE("Damping cures Newton's overshoot on atan", "[newton][damped]") {
 
 TEST_CASE("Hand-written Newton and GSL's newton take the same steps on every problem", "[newton][gsl][reference]") {
   // Both are undamped Newton with an LU solve: same iterates up to rounding, same iteration counts.
-  for (const std::string& name : test_problem_names()) {
+  // The ten problems from before the MINPACK set, where undamped Newton converges from the standard
+  // start; on brown-almost-linear ours stops as diverged after 1 iteration (||f|| past 1e12 times its
+  // start) while GSL's newton, without that test, wanders on to converge: test_minpack_gsl.cpp.
+  for (const std::string name : {"rosenbrock", "freudenstein-roth", "powell-badly-scaled", "powell-singular", "wood",
+                                 "helical-valley", "discrete-bvp", "trigonometric", "broyden-tridiagonal", "arctangent"}) {
     const TestProblem problem = make_test_problem(name);
     const auto ours = newton_on(problem);
     const auto gsl = gsl_multiroot_solve(*problem.system, problem.standard_start, "newton", strict_options());
