@@ -41,7 +41,8 @@ TEST_CASE("Fractal modes are the cube roots of unity, e^{2 pi i k/3}", "[basins]
     const Vector<2> root(std::cos(angle), std::sin(angle));
     Vector<2> f;
     system.residual(root, f);
-    CHECK(f.lpNorm<Eigen::Infinity>() <= 4 * std::numeric_limits<double>::epsilon());
+    // cos and sin are rounded (half an ulp each); |f'| = 3 magnifies that, plus the rounding of z^3.
+    CHECK(f.lpNorm<Eigen::Infinity>() <= 16 * std::numeric_limits<double>::epsilon());
     CHECK(CubeRoots::mode_of(root) == k);
     // Newton from a start near the root ends on it, and it is labelled k.
     const auto result = nonlinear::newton_solve(system, Vector<2>(root * 1.1));
