@@ -7,6 +7,7 @@
 namespace numlab::basins {
 
 namespace {
+std::string starts_fail(int count) { return count == 1 ? "1 start fails" : fmt::format("{} starts fail", count); }
 std::string radians(double value) { return std::isfinite(value) ? fmt::format("{:.3g} rad", value) : "none"; }
 }  // namespace
 
@@ -46,15 +47,15 @@ std::string damping_sentence(int plain_home, int damped_home, int total, int pla
 }
 
 std::string fractal_sentence(int root1, int root2, int root3, int failed, int total) {
-  return fmt::format("Of {} starts, {} reach z = 1, {} reach e^(2 pi i/3) and {} reach e^(-2 pi i/3); {} fail. "
+  return fmt::format("Of {} starts, {} reach z = 1, {} reach e^(2 pi i/3) and {} reach e^(-2 pi i/3); {}. "
                      "The three basins meet in the fractal boundary, where a small change of start changes the root.",
-                     total, percent(root1, total), percent(root2, total), percent(root3, total), failed);
+                     total, percent(root1, total), percent(root2, total), percent(root3, total), starts_fail(failed));
 }
 
 std::string four_bar_sentence(int mode_plus, int mode_minus, int singular, int failed, int total) {
-  return fmt::format("Of {} starts, {} reach mode B+ and {} reach mode B-; {} fail, {} of them on a singular "
+  return fmt::format("Of {} starts, {} reach mode B+ and {} reach mode B-; {}, {} of them on a singular "
                      "Jacobian (a start on a toggle line, coupler and rocker in line).",
-                     total, percent(mode_plus, total), percent(mode_minus, total), failed, singular);
+                     total, percent(mode_plus, total), percent(mode_minus, total), starts_fail(failed), singular);
 }
 
 }  // namespace numlab::basins
