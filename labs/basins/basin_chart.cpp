@@ -80,6 +80,12 @@ Rgb pixel(const nonlinear::BasinPoint& p, const std::vector<Rgb>& modes, const S
   return shading.apply(modes[static_cast<std::size_t>(p.mode)], p.iterations);
 }
 
+// A legend's share: the percentage, or the count when it would round to 0.0%.
+std::string share_of(int count, int total) {
+  if (1000LL * count >= total) return percent(count, total);
+  return count == 1 ? "1 start" : fmt::format("{} starts", count);
+}
+
 // Text inside a gnuplot single-quoted string: a quote is written twice.
 std::string quoted(const std::string& text) {
   std::string out;
@@ -134,12 +140,12 @@ void draw_basin_chart(const cli::ChartFiles& files, const BasinRun& run, const s
   for (std::size_t mode = 0; mode < counts.per_mode.size(); ++mode) {
     if (counts.per_mode[mode] == 0) continue;
     plots.push_back(fmt::format("keyentry with boxes fs solid 1.0 noborder lc rgb '{}' title '{} ({})'", hex_of(colours[mode]),
-                                quoted(run.mode_labels[mode]), percent(counts.per_mode[mode], counts.total)));
+                                quoted(run.mode_labels[mode]), share_of(counts.per_mode[mode], counts.total)));
   }
   const auto add_flat = [&](int count, unsigned colour, const std::string& name) {
     if (count > 0) {
       plots.push_back(fmt::format("keyentry with boxes fs solid 1.0 noborder lc rgb '{}' title '{} ({})'",
-                                  hex_of(from_hex(colour)), name, percent(count, counts.total)));
+                                  hex_of(from_hex(colour)), name, share_of(count, counts.total)));
     }
   };
   add_flat(counts.unknown, unknown_colour, "root of no known mode");
