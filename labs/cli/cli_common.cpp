@@ -114,6 +114,7 @@ const std::vector<CommonFlagUse>& common_flag_table() {
       {"bench fit", true, false, false, false, false, false, true},
       {"exercise check", true, false, false, false, false, false, true},
       {"basins", true, true, false, false, false, true, true},
+      {"bench basins", true, false, false, false, false, false, false},
   };
   return table;
 }
