@@ -1,7 +1,6 @@
 #include "basins/basin_systems.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "numlab/mechanisms/circle_intersection.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
@@ -12,10 +11,6 @@ namespace {
 Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
 double direction(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
   return std::atan2(to.y() - from.y(), to.x() - from.x());
-}
-double nearest_turn(double angle, double near) {
-  constexpr double turn = 2.0 * std::numbers::pi;
-  return angle + turn * std::round((near - angle) / turn);
 }
 }  // namespace
 
@@ -118,10 +113,17 @@ bool JansenModes::closed_form(int mode, std::array<Eigen::Vector2d, 4>& joints) 
 bool JansenModes::closed_form_angles(int mode, const Vector<8>& near, Vector<8>& theta) const {
   std::array<Eigen::Vector2d, 4> j;
   if (!closed_form(mode, j)) return false;
-  const auto& [B, C, D, E] = j;
-  const double raw[8] = {direction(A_, B), direction(P1_, B), direction(B, C), direction(P1_, C),
-                         direction(C, E),  direction(A_, D),  direction(P1_, D), direction(D, E)};
-  for (int k = 0; k < 8; ++k) theta(k) = nearest_turn(raw[k], near(k));
+  // JansenLeg::angles_of reads the angles off the joints (F is not among them).
+  using Joint = mechanisms::JansenJoint;
+  mechanisms::JansenJoints joints;
+  joints.fill(Eigen::Vector2d::Zero());
+  joints[static_cast<std::size_t>(Joint::P1)] = P1_;
+  joints[static_cast<std::size_t>(Joint::A)] = A_;
+  joints[static_cast<std::size_t>(Joint::B)] = j[0];
+  joints[static_cast<std::size_t>(Joint::C)] = j[1];
+  joints[static_cast<std::size_t>(Joint::D)] = j[2];
+  joints[static_cast<std::size_t>(Joint::E)] = j[3];
+  theta = mechanisms::JansenLeg::angles_of(joints, near);
   return true;
 }
 

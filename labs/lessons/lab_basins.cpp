@@ -69,6 +69,15 @@ const nonlinear::BasinPoint& nearest_point(const nonlinear::BasinMap& map, doubl
   return map.at(index(u, s.u_min, s.u_max, s.columns), index(v, s.v_min, s.v_max, s.rows));
 }
 
+// The map of a two-unknown system, its outcome table shown and saved as NAME.csv, and its tally.
+BasinTally map_and_table(LabSession& session, const std::string& system, const std::string& name, BasinRun& run) {
+  run = map_of(system, basins_lab_grid + 1, false);
+  Table table({"outcome", "starts", "share"});
+  add_outcome_rows(table, run);
+  session.show(table, name);
+  return basins::tally(run.map, static_cast<int>(run.mode_labels.size()));
+}
+
 void fractal_step(LabSession& session) {
   const int side = basins_lab_grid + 1;
   session.begin_step("The z^3 - 1 Newton fractal",
@@ -76,11 +85,8 @@ void fractal_step(LabSession& session) {
                                  "starts on [-2, 2] x [-2, 2]. Each start is coloured by the cube root of unity it "
                                  "reaches (checked against e^(2 pi i k/3)), lighter the more iterations it took.",
                                  side, side));
-  const BasinRun run = map_of("fractal", side, false);
-  Table table({"outcome", "starts", "share"});
-  add_outcome_rows(table, run);
-  session.show(table, "fractal");
-  const BasinTally t = basins::tally(run.map, 3);
+  BasinRun run;
+  const BasinTally t = map_and_table(session, "fractal", "fractal", run);
   session.say(basins::fractal_sentence(t.per_mode[0], t.per_mode[1], t.per_mode[2], failed(t), t.total));
   const auto& origin = run.map.at(side / 2, side / 2);
   session.say(fmt::format("The start at the origin ends {}: there J = 3 z^2 is the zero matrix.",
@@ -99,11 +105,8 @@ void four_bar_step(LabSession& session) {
                                  "checked against the circle-circle intersection. The dashed lines are where J is "
                                  "singular, theta3 - theta4 = k pi: a start there has no Newton step.",
                                  side, side));
-  const BasinRun run = map_of("four-bar", side, false);
-  Table table({"outcome", "starts", "share"});
-  add_outcome_rows(table, run);
-  session.show(table, "four-bar");
-  const BasinTally t = basins::tally(run.map, 2);
+  BasinRun run;
+  const BasinTally t = map_and_table(session, "four-bar", "four-bar", run);
   session.say(basins::four_bar_sentence(t.per_mode[0], t.per_mode[1], t.singular, failed(t), t.total));
   chart(session, "step2-four-bar", run, fmt::format("Grashof four-bar at 60 deg: plain Newton from {} x {} starts", side, side),
         "The four-bar's two modes, and the toggle lines where J is singular");
