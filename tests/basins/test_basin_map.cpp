@@ -151,6 +151,11 @@ TEST_CASE("Jansen: the solution's grid point converges at once to the seed's mod
   CHECK(center.status == Status::converged);
   CHECK(center.mode == JansenModes::seed_mode());
   CHECK(center.iterations <= 2);
+  // Plain Newton from theta1 = 0.5 (the other angles at the solution) falls into a 2-cycle on the
+  // (theta1, theta2) dyad, ||f|| staying near 80 (seen independently with numpy's solve and a
+  // finite-difference J): the start ends max_iterations, not converged and not mislabelled.
+  const auto& cycling = point_near(run.map, 0.5, run.marks[0].v);
+  CHECK(cycling.status == Status::max_iterations);
   // Every reached mode is one whose closed form closes, and verified (mode_of checks each point).
   const auto counts = tally(run.map, JansenModes::count);
   std::array<Eigen::Vector2d, 4> unused;
