@@ -42,7 +42,7 @@ const std::vector<std::string>& basin_system_names();
 const std::vector<std::string>& jansen_axis_names();
 
 // Largest grid side and thread count `numlab basins` accepts.
-inline constexpr int max_grid_side = 2000;
+inline constexpr int max_grid_side = 1000;
 inline constexpr int max_threads = 256;
 
 // Throws std::invalid_argument naming the problem (unknown system or axis, grid or threads out of range).

@@ -78,7 +78,7 @@ std::pair<double, double> parse_slice_range(const std::string& text, const std::
 BasinsCommand::BasinsCommand(CLI::App& app) {
   command_ = app.add_subcommand("basins", "Basin map: Newton from a grid of starts, coloured by the mode reached");
   command_->add_option("system", system_, "fractal (z^3 - 1), four-bar or jansen")->required();
-  command_->add_option("--grid", grid_, "Grid of starts: N or NxM (columns x rows), each 2 to 2000 (default 400)");
+  command_->add_option("--grid", grid_, "Grid of starts: N or NxM (columns x rows), each 2 to 1000 (default 400)");
   command_->add_option("--u-range", u_range_, "MIN:MAX of the first unknown (default: the system's own)");
   command_->add_option("--v-range", v_range_, "MIN:MAX of the second unknown (default: the system's own)");
   command_->add_option("--axes", axes_, "jansen: the two angles of the slice, e.g. theta1,theta7 (the default)");
