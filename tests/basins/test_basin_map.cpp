@@ -189,6 +189,9 @@ TEST_CASE("Bad slices and requests are refused, naming the problem", "[basins][i
   r = request("jansen", 10);
   r.axis_u = "theta9";
   CHECK_THROWS_WITH(run_basins(r), Catch::Contains("theta9"));
+  r = request("fractal", 10, 2);
+  r.max_iterations = 0;  // refused by Newton before any worker starts
+  CHECK_THROWS_WITH(run_basins(r), Catch::Contains("iteration limit"));
   r = request("fractal", 10);
   r.u_min = 1.0;
   r.u_max = -1.0;

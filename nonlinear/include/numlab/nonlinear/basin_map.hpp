@@ -90,6 +90,7 @@ BasinMap basin_map(const S& system, const Vector<S::size>& base, const BasinSlic
   linalg::require_finite(base, "basin slice's base point");
   if (threads < 1) throw std::invalid_argument("a basin map needs at least 1 thread");
   if (options.max_iterations > 32767) throw std::invalid_argument("a basin map counts at most 32767 iterations");
+  Newton<S> checked(system, options);  // bad options throw here, not inside a worker thread
   BasinMap map{slice, std::vector<BasinPoint>(static_cast<std::size_t>(slice.columns) * slice.rows)};
   std::atomic<int> next_row{0};
   const auto work = [&] {
