@@ -9,6 +9,7 @@
 
 #include "bench/bench_linear.hpp"
 #include "cli/cli_common.hpp"
+#include "commands/basins_command.hpp"
 #include "commands/exercise_command.hpp"
 #include "commands/fit_command.hpp"
 #include "commands/labs_command.hpp"
@@ -70,6 +71,7 @@ int main(int argc, char** argv) {
   const MechanismCommand mechanism(app);
   const FitCommand fit(app);
   const ExerciseCommand exercise(app);
+  const BasinsCommand basins(app);
 
   try {
     app.parse(argc, argv);
@@ -91,6 +93,7 @@ int main(int argc, char** argv) {
     if (mechanism.selected()) return mechanism.run();
     if (fit.selected()) return fit.run();
     if (exercise.selected()) return exercise.run();
+    if (basins.selected()) return basins.run();
     return run_main_job();
   } catch (const StoppedByUser& stopped) {
     std::cerr << "numlab: " << stopped.what() << '\n';

@@ -6,6 +6,7 @@
 
 #include "cli/cli_common.hpp"
 #include "commands/linear_methods.hpp"
+#include "lessons/lab_basins.hpp"
 #include "numlab/linalg/measures.hpp"
 #include "bench/timing.hpp"
 
@@ -107,6 +108,8 @@ const std::vector<Lab>& all_labs() {
        run_fit_lab},
       {"exercises", "numlab exercise for instructors: a starter, a correct and a buggy GEPP checked, the verdicts read",
        run_exercises_lab},
+      {"basins", "Basin maps: the z^3 - 1 fractal, a four-bar's two modes, the Jansen leg's branches, plain vs damped",
+       run_basins_lab},
   };
   return labs;
 }
