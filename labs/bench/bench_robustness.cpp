@@ -87,8 +87,8 @@ std::string runs_csv(const RobustnessResults& results) {
 
 std::string solved_definition() {
   return fmt::format("solved: ||f(x)||_inf <= {:g} at the returned x (not the solver's own status); "
-                     "budget {} iterations for every solver",
-                     solved_tolerance, robustness_iteration_limit);
+                     "budget 100 (n+1) iterations for every solver (MINPACK's default)",
+                     solved_tolerance);
 }
 
 std::vector<std::string> profiled_solvers(const RobustnessResults& results) {

@@ -42,10 +42,10 @@ class CountingSystem final : public nonlinear::DynamicSystem {
   const nonlinear::DynamicSystem& system_;
 };
 
-nonlinear::NewtonOptions budget(bool damped) {
+nonlinear::NewtonOptions budget(bool damped, int n) {
   nonlinear::NewtonOptions options;
   options.residual_tolerance = solved_tolerance;
-  options.max_iterations = robustness_iteration_limit;
+  options.max_iterations = robustness_iteration_limit(n);
   options.damped = damped;
   return options;
 }
@@ -60,19 +60,19 @@ struct Outcome {
 Outcome solve_once(const std::string& solver, const nonlinear::DynamicSystem& system, const Eigen::VectorXd& x0,
                    const std::vector<nonlinear::Block>& blocks) {
   if (solver.starts_with("gsl-")) {
-    const NonlinearRun run = run_nonlinear_method(solver, system, x0, {budget(false), nonlinear::LinearMethod::gepp});
+    const NonlinearRun run = run_nonlinear_method(solver, system, x0, {budget(false, system.dimension()), nonlinear::LinearMethod::gepp});
     return {run.x, run.status, run.iterations};
   }
   if (solver.starts_with("sequential")) {
     nonlinear::SequentialNewtonOptions options;
-    options.newton = budget(solver == "sequential-damped");
+    options.newton = budget(solver == "sequential-damped", system.dimension());
     const auto result = nonlinear::sequential_newton(system, blocks, x0, options);
     return {result.x, result.status, result.iterations};
   }
   const bool damped = solver.starts_with("damped-");
   const std::string linear = solver.substr(solver.find('-') + 1);
   const NonlinearRun run =
-      run_nonlinear_method("newton", system, x0, {budget(damped), nonlinear::linear_method_named(linear)});
+      run_nonlinear_method("newton", system, x0, {budget(damped, system.dimension()), nonlinear::linear_method_named(linear)});
   return {run.x, run.status, run.iterations};
 }
 

@@ -28,7 +28,10 @@
 namespace numlab::cli {
 
 inline constexpr double solved_tolerance = 1e-10;  // ||f(x)||_inf at the end
-inline constexpr int robustness_iteration_limit = 100;  // every solver's budget
+// Every solver's budget on a case with n unknowns: 100 (n + 1) iterations, the default limit of
+// MINPACK's hybrj (maxfev). Generous for Newton, whose iteration costs n + 1 evaluations; exactly
+// MINPACK's for the hybrid types, whose iteration costs about one.
+constexpr int robustness_iteration_limit(int n) { return 100 * (n + 1); }
 
 struct RobustnessRun {
   int case_index;       // into the cases run
