@@ -55,25 +55,30 @@ struct Outcome {
   Eigen::VectorXd x;
   Status status;
   int iterations;
+  std::string termination;
 };
 
 Outcome solve_once(const std::string& solver, const nonlinear::DynamicSystem& system, const Eigen::VectorXd& x0,
                    const std::vector<nonlinear::Block>& blocks) {
   if (solver.starts_with("gsl-")) {
-    const NonlinearRun run = run_nonlinear_method(solver, system, x0, {budget(false, system.dimension()), nonlinear::LinearMethod::gepp});
-    return {run.x, run.status, run.iterations};
+    const NonlinearRun run =
+        run_nonlinear_method(solver, system, x0, {budget(false, system.dimension()), nonlinear::LinearMethod::gepp});
+    return {run.x, run.status, run.iterations, run.termination};
   }
   if (solver.starts_with("sequential")) {
     nonlinear::SequentialNewtonOptions options;
     options.newton = budget(solver == "sequential-damped", system.dimension());
     const auto result = nonlinear::sequential_newton(system, blocks, x0, options);
-    return {result.x, result.status, result.iterations};
+    const std::string where = result.failed_block < 0 ? "" : fmt::format(" in block {}", result.failed_block + 1);
+    return {result.x, result.status, result.iterations,
+            fmt::format("Termination: {}{} (||f||_inf = {:.3g} after {} iterations)", to_string(result.status), where,
+                        result.residual_norm, result.iterations)};
   }
   const bool damped = solver.starts_with("damped-");
   const std::string linear = solver.substr(solver.find('-') + 1);
   const NonlinearRun run =
       run_nonlinear_method("newton", system, x0, {budget(damped, system.dimension()), nonlinear::linear_method_named(linear)});
-  return {run.x, run.status, run.iterations};
+  return {run.x, run.status, run.iterations, run.termination};
 }
 
 RobustnessRun run_case(int case_index, const nonlinear::MinpackInstance& instance, const std::string& solver,
@@ -99,6 +104,7 @@ RobustnessRun run_case(int case_index, const nonlinear::MinpackInstance& instanc
   if (outcome.x.allFinite()) system.residual(outcome.x, f);
   run.status = outcome.status;
   run.iterations = outcome.iterations;
+  run.termination = outcome.termination;
   run.residual_norm = outcome.x.allFinite() && f.allFinite() ? f.lpNorm<Eigen::Infinity>()
                                                              : std::numeric_limits<double>::quiet_NaN();
   run.solved = run.residual_norm <= solved_tolerance;  // false for NaN

@@ -107,6 +107,8 @@ const std::vector<Lab>& all_labs() {
        run_fit_lab},
       {"exercises", "numlab exercise for instructors: a starter, a correct and a buggy GEPP checked, the verdicts read",
        run_exercises_lab},
+      {"robustness", "MINPACK's test set from three starts: success table, performance and data profiles, damping, dogleg",
+       run_robustness_lab},
   };
   return labs;
 }
