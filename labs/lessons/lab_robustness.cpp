@@ -173,9 +173,9 @@ void show_goal(LabSession& session, const RobustnessResults& results) {
   const int total = static_cast<int>(results.cases.size());
   const int mine = solved_count(results, best_damped);
   const int theirs = solved_count(results, best_gsl);
-  session.show(difference_table(results, best_damped, best_gsl), "goal");
+  session.show(difference_table(results, best_damped, best_gsl), "best-gsl");
   const auto missing = solved_only_by(results, best_gsl, best_damped);
-  if (!missing.empty()) session.show(failure_table(results, missing), "goal-why");
+  if (!missing.empty()) session.show(failure_table(results, missing), "best-gsl-why");
   if (mine >= theirs) {
     session.say(fmt::format("Yes: {} solves {} cases, GSL's best type {} solves {}.", best_damped, count_of(mine, total),
                             best_gsl, count_of(theirs, total)));
