@@ -9,6 +9,7 @@
 #include "bench/timing.hpp"
 #include "commands/nonlinear_methods.hpp"
 #include "numlab/nonlinear/block_order.hpp"
+#include "numlab/nonlinear/dogleg.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/sequential_newton.hpp"
@@ -64,6 +65,11 @@ Outcome solve_once(const std::string& solver, const nonlinear::DynamicSystem& sy
     const NonlinearRun run =
         run_nonlinear_method(solver, system, x0, {budget(false, system.dimension()), nonlinear::LinearMethod::gepp});
     return {run.x, run.status, run.iterations, run.termination};
+  }
+  if (solver == "dogleg") {
+    const nonlinear::NewtonOptions options = budget(false, system.dimension());
+    const auto result = nonlinear::dogleg_solve(system, x0, options);
+    return {result.x, result.status, result.iterations, nonlinear::termination_line(result, options)};
   }
   if (solver.starts_with("sequential")) {
     nonlinear::SequentialNewtonOptions options;
@@ -130,6 +136,7 @@ std::vector<std::string> robustness_solvers() {
   for (const char* kind : {"newton-", "damped-"}) {
     for (const std::string& linear : nonlinear::newton_linear_methods()) solvers.push_back(kind + linear);
   }
+  solvers.push_back("dogleg");
   solvers.push_back("sequential");
   solvers.push_back("sequential-damped");
   for (const std::string& type : nonlinear::gsl_multiroot_types()) solvers.push_back("gsl-" + type);

@@ -7,6 +7,7 @@
 //   newton-L        hand-written full Newton, inner linear solver L (gepp, gauss-seidel, gsl-lu,
 //                   eigen-lu; inverse2x2 where n = 2);
 //   damped-L        the same with backtracking (Armijo on ||f||_2^2);
+//   dogleg          hand-written trust-region dogleg Newton (numlab/nonlinear/dogleg.hpp);
 //   sequential, sequential-damped
 //                   block-by-block Newton (GEPP inside each block) where the Jacobian's sparsity
 //                   splits the system into more than one block;
