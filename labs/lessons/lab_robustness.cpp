@@ -185,6 +185,11 @@ void show_goal(LabSession& session, const RobustnessResults& results) {
                             best_damped, count_of(mine, total), best_gsl, count_of(theirs, total), best_gsl,
                             best_damped, failure_list(results, missing)));
   }
+  const int dogleg = solved_count(results, "dogleg");
+  session.say(fmt::format("The hand-written trust-region dogleg Newton (dogleg, numlab/nonlinear/dogleg.hpp) solves {} "
+                          "cases, {} {}. It fails on {}.",
+                          count_of(dogleg, total), dogleg >= theirs ? "at least as many as" : "fewer than", best_gsl,
+                          failure_list(results, failures_of(results, "dogleg"))));
 }
 
 void show_profiles(LabSession& session, const RobustnessResults& results) {

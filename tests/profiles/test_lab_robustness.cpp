@@ -113,4 +113,7 @@ TEST_CASE("robustness lab: every count and every failure named comes from its ta
     CHECK_THAT(lab.text, Catch::Contains(fmt::format("cases, GSL's best type")));
     CHECK_THAT(lab.text, Catch::Contains("with the status damped Newton stopped with: " + failure_list(why) + "."));
   }
+  CHECK_THAT(lab.text, Catch::Contains(fmt::format("(dogleg, numlab/nonlinear/dogleg.hpp) solves {} cases, {}",
+                                                   count_of(solved.at("dogleg"), cases),
+                                                   solved.at("dogleg") >= best_gsl ? "at least as many as" : "fewer than")));
 }
