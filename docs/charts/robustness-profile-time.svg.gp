@@ -6,7 +6,7 @@ set datafile separator ','
 set grid
 set key outside right box opaque
 set logscale x 2
-set xrange [1:77.3676]
+set xrange [1:68.8527]
 set yrange [0:1.08]
 set title "Performance profile on time (23 cases)\n{/*0.8 solved: ||f(x)||_{inf} <= 1e-10 at the returned x (not the solver's own status); budget 100 (n+1) iterations for every solver (MINPACK's default)}"
 set xlabel 'tau: within tau times the least time of any solver'

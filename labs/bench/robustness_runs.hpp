@@ -46,7 +46,7 @@ struct RobustnessRun {
   int function_evaluations = 0;
   int jacobian_evaluations = 0;
   double evaluations = 0.0;  // function_evaluations + n * jacobian_evaluations
-  double time_s = 0.0;       // median over the repeats
+  double time_s = 0.0;       // solved: median over the repeats; failed: the one counted run
   std::string termination;   // the solver's closing line: why it stopped, with its numbers
 };
 
