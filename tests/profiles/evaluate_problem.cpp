@@ -11,6 +11,7 @@
 // A bad request gets {"error": "..."} and the evaluator goes on.
 
 #include <Eigen/Core>
+#include <cstdlib>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -48,7 +49,12 @@ nlohmann::json evaluate(std::istringstream& words) {
   const int n = instance.problem.system->dimension();
   Eigen::VectorXd x(n);
   for (int i = 0; i < n; ++i) {
-    if (!(words >> x(i))) throw std::invalid_argument("eval needs " + std::to_string(n) + " numbers");
+    // strtod, not >>: a solver may try a point with nan or inf in it, and f there is an answer too.
+    std::string word;
+    char* end = nullptr;
+    if (!(words >> word) || (x(i) = std::strtod(word.c_str(), &end), *end != '\0')) {
+      throw std::invalid_argument("eval needs " + std::to_string(n) + " numbers");
+    }
   }
   Eigen::VectorXd f(n);
   Eigen::MatrixXd J(n, n);
