@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "../labs/lab_output.hpp"
 #include "lessons/lab_sentences.hpp"
@@ -98,6 +99,22 @@ TEST_CASE("robustness lab: every count and every failure named comes from its ta
                                                    solved_by_column(dogleg, 2))));
   CHECK_THAT(lab.text, Catch::Contains(fmt::format("damped-gepp solves {} case(s) {} fails.", solved_by_column(dogleg, 1),
                                                    best["dogleg"].first)));
+
+  const CsvRows cost = lab.table("step4-dogleg-cost.csv");
+  if (cost.size() > 1) {
+    std::vector<double> damped, hybrid;
+    for (std::size_t r = 1; r < cost.size(); ++r) {
+      damped.push_back(number(cost[r][1]));
+      hybrid.push_back(number(cost[r][2]));
+    }
+    // The upper median, computed here by sorting.
+    std::sort(damped.begin(), damped.end());
+    std::sort(hybrid.begin(), hybrid.end());
+    CHECK_THAT(lab.text, Catch::Contains(fmt::format("On the {} cases both solve, {} needs a median of {:g} function "
+                                                     "evaluations (a Jacobian counted as n) and damped-gepp {:g}.",
+                                                     cost.size() - 1, best["dogleg"].first, hybrid[hybrid.size() / 2],
+                                                     damped[damped.size() / 2])));
+  }
 
   // Step 5: yes or no from the counts; a no lists every case of the table of why.
   int best_damped = 0, best_gsl = 0;
