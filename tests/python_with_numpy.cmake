@@ -40,3 +40,12 @@ if(NOT has_numpy)
   message(FATAL_ERROR "${Python3_EXECUTABLE} cannot import numpy: the tests need python3-numpy")
 endif()
 message(STATUS "Tests run Python with ${Python3_EXECUTABLE} (imports numpy)")
+
+# A test that needs one more module of that Python (scipy, say) calls this: configuration stops
+# with one line naming the Debian package when the module is missing.
+function(numlab_require_python_module module package)
+  execute_process(COMMAND ${Python3_EXECUTABLE} -c "import ${module}" RESULT_VARIABLE failed OUTPUT_QUIET ERROR_QUIET)
+  if(failed)
+    message(FATAL_ERROR "${Python3_EXECUTABLE} cannot import ${module}: the tests need ${package} (bash .ci/setup installs it)")
+  endif()
+endfunction()

@@ -13,6 +13,7 @@
 #include "bench/bench_fit.hpp"
 #include "bench/bench_jansen.hpp"
 #include "bench/bench_mustang.hpp"
+#include "bench/bench_robustness.hpp"
 #include "output/chart.hpp"
 #include "numlab/linalg/eigen_reference.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
@@ -155,8 +156,8 @@ std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick) {
 
 BenchCommand::BenchCommand(CLI::App& app) {
   command_ = app.add_subcommand("bench", "Measure speed: median of repeated in-process runs, as ratios");
-  command_->add_option("what", what_, "What to measure: all (default), linear, jansen, mustang or fit")
-      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang", "fit", "basins"}));
+  command_->add_option("what", what_, "What to measure: all (default), linear, jansen, mustang, fit, basins or robustness")
+      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang", "fit", "basins", "robustness"}));
   command_->add_option("--chart", chart_,
                        "Main chart (.svg or .png); default OUT/work-precision.svg (all) or OUT/bench-linear.svg");
   command_->add_option("--sizes", sizes_, "Sizes n, comma-separated")->delimiter(',')->check(CLI::Range(1, 4096));
@@ -176,6 +177,7 @@ int BenchCommand::run() const {
   if (what_ == "mustang") return run_mustang_bench(common, quick_);
   if (what_ == "fit") return run_bench_fit(common, chart, quick_);
   if (what_ == "basins") return run_basins_bench(common, quick_);
+  if (what_ == "robustness") return run_bench_robustness(common, quick_);
   const ChartFiles files = chart_files(chart.empty() ? common.out_dir + "/bench-linear.svg" : chart);
   check_outputs(planned_files(files, chart.empty() ? "bench linear's chart" : "--chart"), {});
   const std::vector<BenchRow> rows = bench_linear(sizes_, quick_);

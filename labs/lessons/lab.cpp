@@ -110,6 +110,8 @@ const std::vector<Lab>& all_labs() {
        run_exercises_lab},
       {"basins", "Basin maps: the z^3 - 1 fractal, a four-bar's two modes, the Jansen leg's branches, plain vs damped",
        run_basins_lab},
+      {"robustness", "MINPACK's test set from three starts: success table, performance and data profiles, damping, dogleg",
+       run_robustness_lab},
   };
   return labs;
 }
