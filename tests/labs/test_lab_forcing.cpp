@@ -62,4 +62,11 @@ TEST_CASE("Newton lab, inexact Newton: each table's sentence is the one its prin
     CHECK(runs.back().status == "converged");
     CHECK(runs.back().residual <= 1e-10);
   }
+  // Step 5's sentence on Gauss-Seidel inside Newton: its counts are the table's.
+  const auto solvers = lab.table("step5-linear-solvers.csv");
+  auto cell = [&](std::size_t row, const std::string& header) { return solvers.at(row).at(column(solvers, header)); };
+  REQUIRE(cell(1, "--linear") == "gepp");
+  REQUIRE(cell(2, "--linear") == "gauss-seidel");
+  CHECK_THAT(lab.text, Contains(fmt::format("{} iterations and {} sweeps in all against {} iterations with GEPP's",
+                                            cell(2, "iterations"), cell(2, "inner sweeps"), cell(1, "iterations"))));
 }

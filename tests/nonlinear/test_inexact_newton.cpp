@@ -10,11 +10,13 @@
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
+#include "numlab/nonlinear/block_order.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/forcing_term.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/mgh_problems.hpp"
 #include "numlab/nonlinear/newton.hpp"
+#include "numlab/nonlinear/sequential_newton.hpp"
 
 using namespace numlab;
 using namespace numlab::nonlinear;
@@ -259,4 +261,30 @@ TEST_CASE("The Jansen sweep's inner Gauss-Seidel goes through the forcing term a
     CHECK(inexact.worst_closed_form_distance <= 1e-8);
     CHECK(exact.worst_closed_form_distance <= 1e-8);
   }
+}
+
+TEST_CASE("Sequential Newton's blocks with Gauss-Seidel inside take the forcing term too", "[nonlinear][inexact]") {
+  using mechanisms::JansenClosure;
+  const JansenClosure closure(JansenClosure::seed_crank_angle);
+  const AsDynamicSystem dynamic(closure);
+  const Eigen::VectorXd start = JansenClosure::seed_estimates();
+  const auto blocks = block_triangular_order(jacobian_pattern(dynamic, start));
+  struct Etas final : SequentialNewton::Observer {
+    std::vector<double> etas;
+    void on_step(const SequentialNewton&, const SequentialRecord& record) override {
+      etas.push_back(record.newton.forcing_term);
+    }
+  };
+  NewtonOptions options;
+  options.residual_tolerance = 1e-10;
+  Etas seen;
+  const auto result = sequential_newton(dynamic, blocks, start, {options, LinearMethod::gauss_seidel}, &seen);
+  REQUIRE(result.status == Status::converged);
+  CHECK(result.residual_norm <= 1e-10);
+  REQUIRE_FALSE(seen.etas.empty());
+  for (const double eta : seen.etas) CHECK((eta > 0.0 && eta < 1.0));  // every inner solve was told an eta_k
+  // With GEPP inside, none.
+  Etas exact;
+  sequential_newton(dynamic, blocks, start, {options, LinearMethod::gepp}, &exact);
+  for (const double eta : exact.etas) CHECK(std::isnan(eta));
 }
