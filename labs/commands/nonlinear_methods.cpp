@@ -51,10 +51,11 @@ nonlinear::ForcingOptions forcing_named(const std::string& text) {
     try {
       forcing.eta = parse_finite_number(eta);
     } catch (const std::invalid_argument& error) {
-      throw std::invalid_argument(fmt::format("--forcing constant: ETA {}", error.what()));
+      throw std::invalid_argument(fmt::format("--forcing constant:ETA: {}", error.what()));
     }
     if (!(forcing.eta > 0.0 && forcing.eta < 1.0)) {
-      throw std::invalid_argument(fmt::format("--forcing constant: ETA must be in (0, 1), got {}", linalg::quoted_token(eta)));
+      throw std::invalid_argument(
+          fmt::format("--forcing constant:ETA: ETA must be in (0, 1), got {}", linalg::quoted_token(eta)));
     }
   } else {
     throw std::invalid_argument(fmt::format("--forcing {}: expected {}", linalg::quoted_token(text), forcing_choices));
