@@ -8,6 +8,9 @@
 
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
+#include "cli/argument_parsing.hpp"
+#include "cli/cli_common.hpp"
+#include "numlab/linalg/matrix_file.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 
 namespace numlab::cli {
@@ -35,6 +38,39 @@ const std::vector<std::string>& nonlinear_method_names() {
   return names;
 }
 
+nonlinear::ForcingOptions forcing_named(const std::string& text) {
+  using Kind = nonlinear::ForcingOptions::Kind;
+  nonlinear::ForcingOptions forcing;
+  if (text == "none") {
+    forcing.kind = Kind::none;
+  } else if (text == "eisenstat-walker") {
+    forcing.kind = Kind::eisenstat_walker;
+  } else if (text.starts_with("constant:")) {
+    forcing.kind = Kind::constant;
+    const std::string eta = text.substr(9);
+    try {
+      forcing.eta = parse_finite_number(eta);
+    } catch (const std::invalid_argument& error) {
+      throw std::invalid_argument(fmt::format("--forcing constant:ETA: {}", error.what()));
+    }
+    if (!(forcing.eta > 0.0 && forcing.eta < 1.0)) {
+      throw std::invalid_argument(
+          fmt::format("--forcing constant:ETA: ETA must be in (0, 1), got {}", linalg::quoted_token(eta)));
+    }
+  } else {
+    throw std::invalid_argument(fmt::format("--forcing {}: expected {}", linalg::quoted_token(text), forcing_choices));
+  }
+  return forcing;
+}
+
+nonlinear::ForcingOptions forcing_option(const std::optional<std::string>& text, bool is_newton,
+                                         nonlinear::LinearMethod linear) {
+  const bool iterative = linear == nonlinear::LinearMethod::gauss_seidel;
+  require_applies(text.has_value(), is_newton && iterative, "--forcing",
+                  "--method newton with an iterative --linear (gauss-seidel); direct solvers solve exactly");
+  return text ? forcing_named(*text) : nonlinear::ForcingOptions{};
+}
+
 NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::DynamicSystem& system,
                                   const Eigen::VectorXd& x0, const NonlinearSettings& settings,
                                   NewtonTraceObserver* observer) {
@@ -47,7 +83,9 @@ NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::Dy
   };
   if (method == "newton") {
     const nonlinear::DynamicReference reference{system};
-    DynamicNewton newton(reference, settings.options, nonlinear::RuntimeLinearStep(settings.linear, system.dimension()));
+    DynamicNewton newton(reference, settings.options,
+                         nonlinear::RuntimeLinearStep(settings.linear, system.dimension(),
+                                                      nonlinear::inner_gauss_seidel_options(settings.options.forcing)));
     newton.set_observer(observer);
     const auto result = newton.solve(x0);
     return run_of(result, nonlinear::termination_line(result, settings.options));

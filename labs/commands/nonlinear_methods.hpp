@@ -4,6 +4,7 @@
 // multiroot types.
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,9 +19,19 @@ namespace numlab::cli {
 const std::vector<std::string>& nonlinear_method_names();
 
 struct NonlinearSettings {
-  nonlinear::NewtonOptions options;
+  nonlinear::NewtonOptions options;  // options.forcing: eta_k of an iterative inner solve (--forcing)
   nonlinear::LinearMethod linear = nonlinear::LinearMethod::gepp;  // newton's inner solver
 };
+
+// --forcing's names, for its help: none, constant:ETA, eisenstat-walker.
+inline constexpr const char* forcing_choices = "none, constant:ETA (0 < ETA < 1) or eisenstat-walker";
+// The forcing term named by --forcing. Throws std::invalid_argument naming what is wrong.
+nonlinear::ForcingOptions forcing_named(const std::string& text);
+// settings.options.forcing from --forcing: the default (Eisenstat-Walker) when not given. Given, it
+// must apply (require_applies: --method newton with an iterative --linear, gauss-seidel).
+nonlinear::ForcingOptions forcing_option(const std::optional<std::string>& text, bool is_newton,
+                                         nonlinear::LinearMethod linear);
+
 
 struct NonlinearRun {
   Eigen::VectorXd x;

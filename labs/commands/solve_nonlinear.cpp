@@ -69,6 +69,8 @@ SolveNonlinearCommand::SolveNonlinearCommand(CLI::App& solve) {
   command_->add_flag("--damped", damped_, "Backtracking on ||f||^2 (newton only; off by default)");
   command_->add_option("--step-tol", step_tolerance_, "Relative step tolerance (default 1e-12)")
       ->check(finite_non_negative());
+  command_->add_option("--forcing", forcing_, std::string("Inexact Newton's forcing term eta_k: ") + forcing_choices +
+                                                   " (default eisenstat-walker; newton with gauss-seidel only)");
   add_common_options(*command_, common_);
 }
 
@@ -90,6 +92,7 @@ int SolveNonlinearCommand::run() const {
   if (common.tolerance) settings.options.residual_tolerance = *common.tolerance;
   if (common.max_iterations) settings.options.max_iterations = *common.max_iterations;
   if (step_tolerance_) settings.options.step_tolerance = *step_tolerance_;
+  settings.options.forcing = forcing_option(forcing_, is_newton, settings.linear);
 
   // 2. Solve, traced: text and CSV traces go to stderr (JSON's too with --step, so that each pause
   // follows a shown step); the time leaves out the pauses.

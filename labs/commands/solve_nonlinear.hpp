@@ -20,6 +20,7 @@ class SolveNonlinearCommand {
  private:
   CLI::App* command_;
   CommonOptions common_;
+  std::optional<std::string> forcing_;  // --forcing
   std::string problem_;
   std::string method_;
   std::string linear_ = "gepp";

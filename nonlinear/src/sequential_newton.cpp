@@ -122,7 +122,9 @@ void SequentialNewton::begin_block(std::size_t first) {
     block_system_.select(block);
     Eigen::VectorXd block_start(block.unknowns.size());
     for (std::size_t j = 0; j < block.unknowns.size(); ++j) block_start(j) = result_.x(block.unknowns[j]);
-    newton_.emplace(block_system_, options_.newton, RuntimeLinearStep(options_.linear, block_system_.dimension()));
+    newton_.emplace(block_system_, options_.newton,
+                    RuntimeLinearStep(options_.linear, block_system_.dimension(),
+                                      inner_gauss_seidel_options(options_.newton.forcing)));
     if (observer_ != nullptr) newton_->set_observer(&relay_);
     newton_->start(block_start);
     if (newton_->running()) return;

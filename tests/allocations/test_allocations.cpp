@@ -181,6 +181,30 @@ TEST_CASE("Fixed-size Newton allocates nothing, in solve() or per iteration", "[
   if (counts_operator_new) CHECK(counted.other == 0);
 }
 
+TEST_CASE("Fixed-size inexact Newton (Gauss-Seidel inside, forcing terms) allocates nothing", "[allocations][newton]") {
+  using numlab::mechanisms::JansenClosure;
+  const JansenClosure closure(JansenClosure::seed_crank_angle);
+  const JansenClosure::Vector start = JansenClosure::seed_estimates();
+  nonlinear::NewtonOptions walker, constant;  // Eisenstat-Walker (the default) and a constant eta
+  walker.residual_tolerance = constant.residual_tolerance = 1e-10;
+  constant.forcing.kind = nonlinear::ForcingOptions::Kind::constant;
+  GaussSeidelOptions inner;
+  inner.max_iterations = 100000;
+  nonlinear::Newton<JansenClosure, GaussSeidel<8>> by_walker(closure, walker, GaussSeidel<8>(inner));
+  nonlinear::Newton<JansenClosure, GaussSeidel<8>> by_constant(closure, constant, GaussSeidel<8>(inner));
+  nonlinear::NewtonResult<8> a, b;
+  const AllocationCount counted = allocations_during([&] {
+    for (int repeat = 0; repeat < 5; ++repeat) {
+      a = by_walker.solve(start);
+      b = by_constant.solve(start);
+    }
+  });
+  REQUIRE(a.status == Status::converged);
+  REQUIRE(b.status == Status::converged);
+  CHECK(counted.eigen == 0);
+  if (counts_operator_new) CHECK(counted.other == 0);
+}
+
 TEST_CASE("The Jansen dyad's Newton (sequential Newton's block) allocates nothing, fast and textbook",
           "[allocations][newton]") {
   numlab::nonlinear::NewtonOptions options;

@@ -12,6 +12,10 @@
 // Stop test, after each sweep:
 //   ||x_k - x_{k-1}||_inf <= tolerance * max(1, ||x_k||_inf)
 // (the seed compared the signed update, so any decreasing component "passed").
+// Or, when Options::relative_residual_tolerance (rtol) is set, on the residual of the original system:
+//   ||b - A x_k||_inf <= rtol * ||b||_inf
+// Inexact Newton sets rtol per solve to its forcing term eta_k (nonlinear/forcing_term.hpp): a small
+// update does not mean a small residual, and a small absolute update says nothing about a small dx.
 // The residual reported is that of the ORIGINAL system, ||b - A x||_inf, never only of M x = c.
 //
 // Other endings: Status::diverged when the update has grown by divergence_factor over the first
@@ -44,6 +48,7 @@ struct GaussSeidelOptions {
   double tolerance = 1e-9;         // seed 001's default
   int max_iterations = 100;        // seed 001's default
   double divergence_factor = 1e8;  // diverged when ||dx|| exceeds this times the first sweep's ||dx||
+  double relative_residual_tolerance = 0.0;  // > 0: stop on ||b - A x|| <= this ||b|| instead of the update
 };
 
 template <int N = Eigen::Dynamic>
@@ -57,12 +62,19 @@ class GaussSeidel {
 
   explicit GaussSeidel(GaussSeidelOptions options = {}) : options_(options) {
     require_non_negative(options_.tolerance, "tolerance");
+    require_non_negative(options_.relative_residual_tolerance, "relative residual tolerance");
     if (options_.max_iterations < 1) {
       throw std::invalid_argument("iteration limit must be at least 1, got " + std::to_string(options_.max_iterations));
     }
     if (!(options_.divergence_factor > 1.0)) {
       throw std::invalid_argument("divergence factor must exceed 1, got " + std::to_string(options_.divergence_factor));
     }
+  }
+
+  // From the next solve on, stop on ||b - A x||_inf <= rtol ||b||_inf (rtol = 0: on the update again).
+  void set_relative_residual_tolerance(double rtol) {
+    require_non_negative(rtol, "relative residual tolerance");
+    options_.relative_residual_tolerance = rtol;
   }
 
   // Receives a record after every sweep; null: none.
@@ -81,6 +93,7 @@ class GaussSeidel {
     n_ = static_cast<int>(A.rows());
     original_matrix_ = A;
     original_rhs_ = b;
+    rhs_norm_ = b.template lpNorm<Eigen::Infinity>();
     if (options_.system == GaussSeidelOptions::System::normal_equations) {
       swept_matrix_.noalias() = A.transpose() * A;
       swept_rhs_.noalias() = A.transpose() * b;
@@ -119,7 +132,7 @@ class GaussSeidel {
     // Stop tests, in order of precedence.
     if (!x_.allFinite() || !std::isfinite(step_norm_)) {
       finish(Status::non_finite);
-    } else if (step_norm_ <= options_.tolerance * std::max(1.0, x_.template lpNorm<Eigen::Infinity>())) {
+    } else if (small_enough()) {
       finish(Status::converged);
     } else if (step_norm_ > options_.divergence_factor * std::max(first_step_norm_, options_.tolerance)) {
       finish(Status::diverged);
@@ -168,6 +181,14 @@ class GaussSeidel {
     return result();
   }
 
+  // The stop test: the update, or (with a relative residual tolerance) the original system's residual.
+  bool small_enough() const {
+    if (options_.relative_residual_tolerance > 0.0) {
+      return residual_norm() <= options_.relative_residual_tolerance * rhs_norm_;
+    }
+    return step_norm_ <= options_.tolerance * std::max(1.0, x_.template lpNorm<Eigen::Infinity>());
+  }
+
   void finish(Status status) {
     status_ = status;
     running_ = false;
@@ -178,6 +199,7 @@ class GaussSeidel {
   int n_ = 0;
   MatrixType original_matrix_ = zero_or_empty<MatrixType>();
   VectorType original_rhs_ = zero_or_empty<VectorType>();
+  double rhs_norm_ = 0.0;  // ||b||_inf
   WorkMatrix swept_matrix_ = zero_or_empty<WorkMatrix>();  // M: A^T A or A
   VectorType swept_rhs_ = zero_or_empty<VectorType>();     // c: A^T b or b
   VectorType x_ = zero_or_empty<VectorType>();

@@ -2,7 +2,6 @@
 // The `full` pose solver of both linkages: Newton on the whole closure, with the linear step
 // chosen by name (--linear: gepp, gauss-seidel, gsl-lu, eigen-lu) and fixed at compile time.
 
-#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -44,13 +43,10 @@ std::unique_ptr<PoseSolver<Angles>> make_full_newton(const std::string& linear, 
   constexpr int N = Closure::size;
   if (linear == "gepp") return std::make_unique<FullNewtonPoseSolver<Closure, linalg::GaussElimination<N>, Angles>>(options);
   if (linear == "gauss-seidel") {
-    // An inexact inner solve slows Newton down, a very inexact one stops it: sweep the normal
-    // equations until the update is far below Newton's own tolerance.
-    linalg::GaussSeidelOptions inner;
-    inner.tolerance = std::min(1e-9, 1e-3 * options.residual_tolerance);
-    inner.max_iterations = 100000;
-    return std::make_unique<FullNewtonPoseSolver<Closure, linalg::GaussSeidel<N>, Angles>>(options,
-                                                                                            linalg::GaussSeidel<N>(inner));
+    // Each inner solve sweeps the normal equations until ||J dx + f|| <= eta_k ||f||, eta_k being
+    // Newton's forcing term (options.forcing, nonlinear/forcing_term.hpp).
+    return std::make_unique<FullNewtonPoseSolver<Closure, linalg::GaussSeidel<N>, Angles>>(
+        options, linalg::GaussSeidel<N>(nonlinear::inner_gauss_seidel_options(options.forcing)));
   }
   if (linear == "gsl-lu") return std::make_unique<FullNewtonPoseSolver<Closure, nonlinear::GslLuStep<N>, Angles>>(options);
   if (linear == "eigen-lu") return std::make_unique<FullNewtonPoseSolver<Closure, linalg::EigenLu<N>, Angles>>(options);

@@ -17,6 +17,7 @@
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/gsl_reference.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/nonlinear/forcing_term.hpp"
 #include "numlab/nonlinear/system.hpp"
 
 namespace numlab::nonlinear {
@@ -44,6 +45,17 @@ class GslLuStep {
   std::unique_ptr<linalg::GslLu> lu_;
 };
 
+// Gauss-Seidel's options as Newton's inner solver. With a forcing term each solve sweeps until
+// ||J dx + f|| <= eta_k ||f||, and the sweep limit (inner_sweep_limit) is only a guard: the normal
+// equations of an ill-conditioned J need many sweeps (their rate is set by kappa(J)^2). Without one
+// (Kind::none): seed 001's defaults, an update of 1e-9 and 100 sweeps, the old fixed inner stop.
+inline constexpr int inner_sweep_limit = 100000;
+inline linalg::GaussSeidelOptions inner_gauss_seidel_options(const ForcingOptions& forcing) {
+  linalg::GaussSeidelOptions options;
+  if (forcing.kind != ForcingOptions::Kind::none) options.max_iterations = inner_sweep_limit;
+  return options;
+}
+
 // The linear methods Newton can use at run time (inverse2x2: the closed form, for n = 2 only).
 enum class LinearMethod { gepp, gauss_seidel, gsl_lu, eigen_lu, inverse2x2 };
 
@@ -56,12 +68,19 @@ std::string_view to_string(LinearMethod method);
 // One of the linear methods, chosen at run time (dynamic sizes only).
 class RuntimeLinearStep {
  public:
-  // Throws std::invalid_argument for inverse2x2 when n != 2.
-  RuntimeLinearStep(LinearMethod method, int n, linalg::GaussSeidelOptions gauss_seidel = {});
+  // Throws std::invalid_argument for inverse2x2 when n != 2. Gauss-Seidel's options default to
+  // those for Newton's default forcing term (inner_gauss_seidel_options).
+  RuntimeLinearStep(LinearMethod method, int n,
+                    linalg::GaussSeidelOptions gauss_seidel = inner_gauss_seidel_options(ForcingOptions{}));
   // By command-line name; also throws std::invalid_argument for an unknown name.
-  RuntimeLinearStep(const std::string& method, int n, linalg::GaussSeidelOptions gauss_seidel = {});
+  RuntimeLinearStep(const std::string& method, int n,
+                    linalg::GaussSeidelOptions gauss_seidel = inner_gauss_seidel_options(ForcingOptions{}));
   linalg::LinearResult<Eigen::Dynamic> solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& rhs);
   LinearMethod method() const { return method_; }
+  // Gauss-Seidel is iterative and takes Newton's forcing term as its relative residual target;
+  // the direct methods solve exactly and ignore it.
+  bool iterative() const { return method_ == LinearMethod::gauss_seidel; }
+  void set_relative_residual_tolerance(double eta) { gauss_seidel_.set_relative_residual_tolerance(eta); }
 
  private:
   LinearMethod method_;

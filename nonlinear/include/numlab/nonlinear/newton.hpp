@@ -1,7 +1,9 @@
 #pragma once
 // Full Newton-Raphson (seed 000 Listing 1, seed 001 jansen_estimate), with any linear solver:
 //
-//   repeat:  solve J(x) dx = -f(x)      (GEPP, Gauss-Seidel, GSL LU, Eigen LU, 2x2 closed form)
+//   repeat:  solve J(x) dx = -f(x)      (GEPP, Gauss-Seidel, GSL LU, Eigen LU, 2x2 closed form;
+//                                        an iterative solver only to ||J dx + f|| <= eta_k ||f||,
+//                                        eta_k the forcing term of forcing_term.hpp: inexact Newton)
 //            x <- x + lambda dx         (lambda = 1; with damping, the first of 1, 1/2, 1/4, ...
 //                                        that passes Armijo's sufficient decrease on ||f||_2^2)
 //   until    ||f(x)||_inf <= residual_tolerance            -> converged (residual_small)
@@ -27,6 +29,7 @@
 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/input_checks.hpp"
+#include "numlab/nonlinear/forcing_term.hpp"
 #include "numlab/nonlinear/stopping_tests.hpp"
 #include "numlab/nonlinear/system.hpp"
 #include "numlab/solver.hpp"
@@ -40,7 +43,14 @@ struct NewtonOptions {
   bool damped = false;               // backtracking (Armijo on ||f||_2^2), off by default
   int max_halvings = 30;             // damping gives up (no_progress) after this many
   double divergence_factor = 1e12;   // diverged when ||f|| > factor * max(||f(x0)||, 1)
+  ForcingOptions forcing;            // an iterative inner solve's eta_k (Eisenstat-Walker by default);
+                                     // direct solvers ignore it
 };
+
+// A linear step that can be told a relative residual target (an iterative one: Gauss-Seidel, or
+// RuntimeLinearStep, which says whether its method is iterative).
+template <typename Step>
+concept TakesForcingTerm = requires(Step& step, double eta) { step.set_relative_residual_tolerance(eta); };
 
 // Why the iteration stopped. residual_small is the only reason with status converged; step_small
 // ends with status no_progress.
@@ -78,6 +88,7 @@ struct NewtonRecord {
   int linear_iterations;   // sweeps, for Gauss-Seidel
   double damping;          // lambda (1 unless damped)
   double elapsed_s;        // since start()
+  double forcing_term = std::numeric_limits<double>::quiet_NaN();  // eta_k; NaN: exact inner solve
 };
 
 // "Termination: CONVERGED (||f||_inf = 3e-13 <= 1e-09 after 5 iterations)" and the like.
@@ -91,11 +102,12 @@ class Newton {
   using Observer = StepObserver<Newton, NewtonRecord>;
 
   // The linear step is built in place (its default); or passed in, for one that needs arguments.
-  explicit Newton(const S& system, NewtonOptions options = {}) : system_(system), options_(options) {
+  explicit Newton(const S& system, NewtonOptions options = {})
+      : system_(system), options_(options), forcing_(options.forcing) {
     check_options();
   }
   Newton(const S& system, NewtonOptions options, LinearStep linear_step)
-      : system_(system), options_(options), linear_step_(std::move(linear_step)) {
+      : system_(system), options_(options), linear_step_(std::move(linear_step)), forcing_(options.forcing) {
     check_options();
   }
 
@@ -126,6 +138,7 @@ class Newton {
     trial_x_.resize(n);
     trial_f_.resize(n);
     result_ = NewtonCounts{};  // status: running
+    forcing_.start();
     jacobian_fresh_ = false;
     if (observer_ != nullptr) started_at_ = std::chrono::steady_clock::now();  // only traces need the time
     evaluate_at(x_, f_);
@@ -150,7 +163,9 @@ class Newton {
     }
     if (!linalg::all_finite(J_)) return finish(Status::non_finite, StopReason::non_finite);
 
-    // 2. The Newton step: solve J dx = -f.
+    // 2. The Newton step: solve J dx = -f to relative residual eta_k, ||J dx + f|| <= eta_k ||f||
+    //    (exactly, for a direct solver, which takes no eta_k).
+    const double eta = forcing_for_step();
     const auto linear = solve_for_step();
     if (linear.status == Status::singular) return finish(Status::singular, StopReason::singular_jacobian);
     if (linear.status == Status::non_finite || linear.status == Status::diverged || !linalg::all_finite(linear.x)) {
@@ -193,7 +208,7 @@ class Newton {
     } else if (result_.iterations >= options_.max_iterations) {
       finish(Status::max_iterations, StopReason::iteration_limit);
     }
-    notify(linear.status, linear.iterations, lambda);  // after the tests: the observer sees the verdict
+    notify(linear.status, linear.iterations, lambda, eta);  // after the tests: the observer sees the verdict
     return running_;
   }
 
@@ -236,6 +251,20 @@ class Newton {
     }
   }
 
+  // eta_k, told to an iterative linear step; NaN when the step is exact (direct) or forcing is none.
+  double forcing_for_step() {
+    if constexpr (TakesForcingTerm<LinearStep>) {
+      bool iterative = true;
+      if constexpr (requires { linear_step_.iterative(); }) iterative = linear_step_.iterative();
+      if (iterative && options_.forcing.kind != ForcingOptions::Kind::none) {
+        const double eta = forcing_.next(f_.template lpNorm<Eigen::Infinity>(), options_.residual_tolerance);
+        linear_step_.set_relative_residual_tolerance(eta);
+        return eta;
+      }
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+
   // J dx = -f by the linear step. J and f are finite here (checked above and after every
   // evaluation), so a step that offers a path without its own input screens takes it.
   linalg::LinearResult<N> solve_for_step() {
@@ -253,16 +282,17 @@ class Newton {
     return false;
   }
 
-  void notify(Status linear_status, int linear_iterations, double lambda) {
+  void notify(Status linear_status, int linear_iterations, double lambda, double eta) {
     if (observer_ == nullptr) return;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_at_).count();
     observer_->on_step(*this, {result_.iterations, result_.residual_norm, f_.norm(), result_.step_norm,
-                               linear_status, linear_iterations, lambda, elapsed});
+                               linear_status, linear_iterations, lambda, elapsed, eta});
   }
 
   const S& system_;
   NewtonOptions options_;
   LinearStep linear_step_;
+  ForcingTerm forcing_;
   Observer* observer_ = nullptr;
   Vector<N> x_ = linalg::zero_or_empty<Vector<N>>(), f_ = linalg::zero_or_empty<Vector<N>>();
   Vector<N> dx_ = linalg::zero_or_empty<Vector<N>>(), trial_x_ = linalg::zero_or_empty<Vector<N>>();
