@@ -56,7 +56,8 @@ concept TakesForcingTerm = requires(Step& step, double eta) { step.set_relative_
 // ends with status no_progress.
 // no_progress: GSL's adapter only, when GSL reports that its iteration is not making progress.
 enum class StopReason {
-  running, residual_small, step_small, iteration_limit, singular_jacobian, non_finite, diverged, no_descent, no_progress
+  running, residual_small, step_small, iteration_limit, singular_jacobian, non_finite, diverged, no_descent, no_progress,
+  inner_limit  // the iterative inner solve reached its sweep limit before ||J dx + f|| <= eta_k ||f||
 };
 
 // The bookkeeping of a Newton run: everything in its result but x. Shared by numlab's Newton and
@@ -171,7 +172,12 @@ class Newton {
     if (linear.status == Status::non_finite || linear.status == Status::diverged || !linalg::all_finite(linear.x)) {
       return finish(Status::non_finite, StopReason::non_finite);
     }
-    dx_ = linear.x;  // an iterative inner solve that hit its limit still gives a usable (inexact) step
+    //    An iterative solve told eta_k that ran out of sweeps first did not give the step asked for:
+    //    stop (max_iterations, inner_limit) rather than spend its whole sweep limit again each iteration.
+    if (!std::isnan(eta) && linear.status == Status::max_iterations) {
+      return finish(Status::max_iterations, StopReason::inner_limit);
+    }
+    dx_ = linear.x;  // without a forcing term, a capped inner solve still gives a usable (inexact) step
 
     // 3. Move: the full step; or, damped, x + lambda dx with the first lambda = 1, 1/2, 1/4, ... whose
     //    f is finite and passes Armijo's sufficient decrease on the merit ||f||_2^2 (c = armijo_constant):
