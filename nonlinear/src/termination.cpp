@@ -17,7 +17,7 @@ std::string_view to_string(StopReason reason) {
     case StopReason::diverged: return "the residual grew without bound";
     case StopReason::no_descent: return "damping found no step that decreases ||f||";
     case StopReason::no_progress: return "the iteration is making no progress";
-    case StopReason::inner_limit: return "the inner solve reached its sweep limit before ||J dx + f|| <= eta_k ||f||";
+    case StopReason::inner_limit: return "three inner solves in a row reached their sweep limit short of eta_k, each step cutting ||f|| by under 10%";
   }
   return "unknown";
 }

@@ -57,7 +57,7 @@ concept TakesForcingTerm = requires(Step& step, double eta) { step.set_relative_
 // no_progress: GSL's adapter only, when GSL reports that its iteration is not making progress.
 enum class StopReason {
   running, residual_small, step_small, iteration_limit, singular_jacobian, non_finite, diverged, no_descent, no_progress,
-  inner_limit  // the iterative inner solve reached its sweep limit before ||J dx + f|| <= eta_k ||f||
+  inner_limit  // three inner solves in a row reached their sweep limit short of eta_k, and ||f|| barely fell
 };
 
 // The bookkeeping of a Newton run: everything in its result but x. Shared by numlab's Newton and
@@ -141,6 +141,7 @@ class Newton {
     result_ = NewtonCounts{};  // status: running
     forcing_.start();
     jacobian_fresh_ = false;
+    stalled_inner_solves_ = 0;
     if (observer_ != nullptr) started_at_ = std::chrono::steady_clock::now();  // only traces need the time
     evaluate_at(x_, f_);
     residual_at_start_ = f_.template lpNorm<Eigen::Infinity>();
@@ -172,12 +173,8 @@ class Newton {
     if (linear.status == Status::non_finite || linear.status == Status::diverged || !linalg::all_finite(linear.x)) {
       return finish(Status::non_finite, StopReason::non_finite);
     }
-    //    An iterative solve told eta_k that ran out of sweeps first did not give the step asked for:
-    //    stop (max_iterations, inner_limit) rather than spend its whole sweep limit again each iteration.
-    if (!std::isnan(eta) && linear.status == Status::max_iterations) {
-      return finish(Status::max_iterations, StopReason::inner_limit);
-    }
-    dx_ = linear.x;  // without a forcing term, a capped inner solve still gives a usable (inexact) step
+    dx_ = linear.x;  // an iterative inner solve that hit its limit still gives a usable (inexact) step
+    const bool capped = !std::isnan(eta) && linear.status == Status::max_iterations;  // short of eta_k
 
     // 3. Move: the full step; or, damped, x + lambda dx with the first lambda = 1, 1/2, 1/4, ... whose
     //    f is finite and passes Armijo's sufficient decrease on the merit ||f||_2^2 (c = armijo_constant):
@@ -200,9 +197,13 @@ class Newton {
       evaluate_at(x_, f_);
     }
     result_.step_norm = lambda * dx_.template lpNorm<Eigen::Infinity>();
+    const double residual_before = result_.iterations == 1 ? residual_at_start_ : result_.residual_norm;
     result_.residual_norm = f_.template lpNorm<Eigen::Infinity>();
+    // A capped inner solve whose step cut ||f|| by less than 10% is a stalled one.
+    stalled_inner_solves_ = capped && result_.residual_norm > 0.9 * residual_before ? stalled_inner_solves_ + 1 : 0;
 
-    // 4. Stop tests, in order: finite, residual small, step small, diverged, iteration limit.
+    // 4. Stop tests, in order: finite, residual small, step small, diverged, iteration limit, stalled
+    //    inner solves.
     if (!linalg::all_finite(x_) || !linalg::all_finite(f_)) {
       finish(Status::non_finite, StopReason::non_finite);
     } else if (residual_small(result_.residual_norm, options_.residual_tolerance)) {
@@ -213,6 +214,10 @@ class Newton {
       finish(Status::diverged, StopReason::diverged);
     } else if (result_.iterations >= options_.max_iterations) {
       finish(Status::max_iterations, StopReason::iteration_limit);
+    } else if (stalled_inner_solves_ >= max_stalled_inner_solves) {
+      // three capped inner solves in a row that barely moved ||f||: stop rather than spend the whole
+      // sweep limit again at every iteration
+      finish(Status::max_iterations, StopReason::inner_limit);
     }
     notify(linear.status, linear.iterations, lambda, eta);  // after the tests: the observer sees the verdict
     return running_;
@@ -306,6 +311,8 @@ class Newton {
   Matrix<N> J_ = linalg::zero_or_empty<Matrix<N>>();
   NewtonCounts result_;
   double residual_at_start_ = 0.0;
+  static constexpr int max_stalled_inner_solves = 3;
+  int stalled_inner_solves_ = 0;  // capped inner solves in a row whose step cut ||f|| by less than 10%
   bool jacobian_fresh_ = false;
   bool running_ = false;
   std::chrono::steady_clock::time_point started_at_;
