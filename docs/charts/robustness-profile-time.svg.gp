@@ -1,14 +1,14 @@
-# Performance profile on time (23 cases) (numlab bench robustness). Redraw: gnuplot docs/charts/robustness-profile-time.svg.gp
+# Performance profile on time (55 cases) (numlab bench robustness). Redraw: gnuplot docs/charts/robustness-profile-time.svg.gp
 # Lines thin out from the first solver to the last, so that equal profiles stay visible.
 set terminal svg size 1100,650 dynamic enhanced font 'Helvetica,13' background rgb 'white'
-set output '/work/wt-profiles/docs/charts/robustness-profile-time.svg'
+set output '/work/main/docs/charts/robustness-profile-time.svg'
 set datafile separator ','
 set grid
 set key outside right box opaque
 set logscale x 2
-set xrange [1:68.8527]
+set xrange [1:89320.4]
 set yrange [0:1.08]
-set title "Performance profile on time (23 cases)\n{/*0.8 solved: ||f(x)||_{inf} <= 1e-10 at the returned x (not the solver's own status); budget 100 (n+1) iterations for every solver (MINPACK's default)}"
+set title "Performance profile on time (55 cases)\n{/*0.8 solved: ||f(x)||_{inf} <= 1e-10 at the returned x (not the solver's own status); budget 100 (n+1) iterations for every solver (MINPACK's default)}"
 set xlabel 'tau: within tau times the least time of any solver'
 set ylabel 'fraction of cases'
 plot 'docs/charts/robustness-profile-time.svg.data.csv' using 1:2 skip 1 with steps lw 5.00 dt 1 lc rgb '#6a3d9a' title 'newton-gepp', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:3 skip 1 with steps lw 4.78 dt 1 lc rgb '#1b9e77' title 'newton-gauss-seidel', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:4 skip 1 with steps lw 4.56 dt 1 lc rgb '#377eb8' title 'newton-gsl-lu', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:5 skip 1 with steps lw 4.34 dt 1 lc rgb '#e6ab02' title 'newton-eigen-lu', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:6 skip 1 with steps lw 4.12 dt 1 lc rgb '#a6761d' title 'damped-gepp', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:7 skip 1 with steps lw 3.91 dt 1 lc rgb '#e7298a' title 'damped-gauss-seidel', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:8 skip 1 with steps lw 3.69 dt 1 lc rgb '#66a61e' title 'damped-gsl-lu', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:9 skip 1 with steps lw 3.47 dt 1 lc rgb '#000000' title 'damped-eigen-lu', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:10 skip 1 with steps lw 3.25 dt 1 lc rgb '#d95f02' title 'dogleg', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:11 skip 1 with steps lw 3.03 dt 2 lc rgb '#7570b3' title 'gsl-hybrids', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:12 skip 1 with steps lw 2.81 dt 2 lc rgb '#e41a1c' title 'gsl-hybrid', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:13 skip 1 with steps lw 2.59 dt 2 lc rgb '#4daf4a' title 'gsl-dnewton', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:14 skip 1 with steps lw 2.38 dt 2 lc rgb '#984ea3' title 'gsl-broyden', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:15 skip 1 with steps lw 2.16 dt 2 lc rgb '#ff7f00' title 'gsl-hybridsj', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:16 skip 1 with steps lw 1.94 dt 2 lc rgb '#a65628' title 'gsl-hybridj', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:17 skip 1 with steps lw 1.72 dt 2 lc rgb '#f781bf' title 'gsl-newton', 'docs/charts/robustness-profile-time.svg.data.csv' using 1:18 skip 1 with steps lw 1.50 dt 2 lc rgb '#999999' title 'gsl-gnewton'
