@@ -149,7 +149,7 @@ The trace follows numlab's Newton (GEPP inner solve) from the same start, iterat
 
 ## Hints
 - Seed 003's stop test |f_i + f_j| < 0.001 lets the two components of a loop cancel.
-- Seed 003's loop-3 Jacobian had its second row's signs flipped, and d f[6]/dH read D for H.
+- Seed 003's loop-3 Jacobian had its second row's signs flipped, and d f[7]/dH (loop 4, y) read D for H.
 - Use the guess you are given: seed 003 restarted every loop from [pi/18, pi/2].
 )";
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: Newton-Raphson on the Mustang linkage\")\n";

@@ -1,5 +1,7 @@
 #include "numlab/linalg/measures.hpp"
 
+#include <cmath>
+
 #include <Eigen/LU>
 #include <limits>
 
@@ -24,8 +26,14 @@ double forward_error(const Eigen::VectorXd& x, const Eigen::VectorXd& x_exact) {
 }
 
 double condition_estimate(const Eigen::MatrixXd& A) {
-  // Eigen's rcond() is the LAPACK-style Hager-Higham estimate of 1 / kappa_1.
-  const double reciprocal = Eigen::PartialPivLU<Eigen::MatrixXd>(A).rcond();
+  // kappa does not change with scale, so A is first scaled by a power of two (exactly) to have its
+  // largest entry in [1, 2): a matrix of tiny (even subnormal) or huge entries does not over- or
+  // underflow in the estimate. Eigen's rcond() is the LAPACK-style Hager-Higham estimate of 1 / kappa_1.
+  const double largest = A.size() == 0 ? 0.0 : A.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0) || !std::isfinite(largest)) return std::numeric_limits<double>::infinity();
+  const int exponent = -std::ilogb(largest);  // up to 1074 for a subnormal: 2^1074 overflows, so in two halves
+  const Eigen::MatrixXd scaled = (A * std::ldexp(1.0, exponent / 2)) * std::ldexp(1.0, exponent - exponent / 2);
+  const double reciprocal = Eigen::PartialPivLU<Eigen::MatrixXd>(scaled).rcond();
   if (!(reciprocal > 0.0)) return std::numeric_limits<double>::infinity();
   return 1.0 / reciprocal;
 }

@@ -29,6 +29,16 @@ TEST_CASE("The condition estimate is a close lower bound of kappa_1", "[measures
   CHECK(std::isinf(condition_estimate(Eigen::MatrixXd::Zero(3, 3))));
 }
 
+TEST_CASE("The condition estimate does not depend on scale: 1e-320 I and 1e300 I have kappa 1", "[measures]") {
+  // Issue 14: 1e-320 I (subnormal) read 'condition estimate inf' and a singularity warning.
+  for (double scale : {1e-320, 1e-300, 1e300}) {
+    INFO("scale " << scale);
+    CHECK(condition_estimate(scale * Eigen::MatrixXd::Identity(2, 2)) == Approx(1.0));
+  }
+  const Eigen::MatrixXd A = (Eigen::MatrixXd(2, 2) << 4, 1, 2, 3).finished();
+  CHECK(condition_estimate(1e-310 * A) == Approx(condition_estimate(A)).epsilon(1e-6));
+}
+
 TEST_CASE("Relative residual and forward error", "[measures]") {
   const Eigen::MatrixXd A = Eigen::MatrixXd::Identity(3, 3) * 2.0;
   const Eigen::VectorXd x = Eigen::VectorXd::Ones(3);
