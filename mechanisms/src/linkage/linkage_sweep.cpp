@@ -1,0 +1,225 @@
+#include "numlab/mechanisms/linkage/linkage_sweep.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/LU>
+#include <Eigen/SVD>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <limits>
+#include <stdexcept>
+
+namespace numlab::mechanisms {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr int max_halvings = 8;          // a continuation step is halved at most this often
+constexpr double crank_walk_deg = 2.0;   // the walk from the reference pose to the sweep's start
+constexpr int slider_walk_steps = 50;
+constexpr double crank_limit_deg = 0.01; // assembly limits to this bracket
+constexpr int max_bisections = 60;
+
+bool converged(const LinkageSolution& s) { return s.outcome.status == Status::converged; }
+
+// From q at driver `from` to driver `to` (model units) in steps no longer than `longest`,
+// halving a step that fails. The last solution (failed or not).
+LinkageSolution continue_to(const LinkageSolver& solver, double from, double to, const Eigen::VectorXd& q, double longest,
+                            int* halvings = nullptr) {
+  LinkageSolution last{q, {}, -1};
+  last.outcome.status = Status::converged;
+  double at = from;
+  double step = std::abs(to - at) <= longest ? to - at : std::copysign(longest, to - at);
+  int halved = 0;
+  while (at != to) {
+    const double next = std::abs(to - at) <= std::abs(step) ? to : at + step;
+    LinkageSolution trial = solver.solve(next, last.q);
+    if (converged(trial)) {
+      last = std::move(trial);
+      at = next;
+      continue;
+    }
+    if (halved == max_halvings) return trial;
+    step /= 2.0;
+    ++halved;
+  }
+  if (halvings != nullptr) *halvings = halved;
+  return last;
+}
+
+}  // namespace
+
+void linkage_kinematics(const LinkageModel& model, double t, const Eigen::VectorXd& q, Eigen::VectorXd& velocity,
+                        Eigen::VectorXd& acceleration) {
+  Eigen::MatrixXd J;
+  Eigen::VectorXd phi_t, gamma;
+  model.jacobian(q, t, J);
+  model.driver_derivative(q, t, phi_t);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(J);
+  velocity = lu.solve(-phi_t);                 // 1. J qdot = -Phi_t
+  model.acceleration_rhs(q, velocity, t, gamma);
+  acceleration = lu.solve(gamma);              // 2. J qddot = gamma
+}
+
+double linkage_condition(const LinkageModel& model, double t, const Eigen::VectorXd& q) {
+  Eigen::MatrixXd J;
+  model.jacobian(q, t, J);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J);
+  const auto& s = svd.singularValues();
+  return s.size() == 0 ? 1.0 : (s(s.size() - 1) == 0.0 ? std::numeric_limits<double>::infinity() : s(0) / s(s.size() - 1));
+}
+
+namespace {
+
+LinkagePose make_pose(const LinkageSolver& solver, double t, LinkageSolution solution) {
+  const LinkageModel& model = solver.model();
+  LinkagePose pose;
+  pose.driver = model.driver_to_user(t);
+  pose.q = std::move(solution.q);
+  pose.outcome = solution.outcome;
+  pose.failed_block = solution.failed_block;
+  pose.condition = nan;
+  if (converged(solution)) {
+    linkage_kinematics(model, t, pose.q, pose.velocity, pose.acceleration);
+    pose.condition = linkage_condition(model, t, pose.q);
+    pose.signature = solver.signature(pose.q, t);
+    pose.transmission_deg = solver.transmission_angles(pose.q);
+  }
+  return pose;
+}
+
+// The block that cannot close at t, starting from q: the closed form's, or sequential Newton's.
+int failing_block(const LinkageSolver& solver, double t, const Eigen::VectorXd& q) {
+  const LinkageSolution closed = solver.closed_form(t, q);
+  if (closed.failed_block >= 0 && solver.blocks()[static_cast<std::size_t>(closed.failed_block)].closed_form()) {
+    return closed.failed_block;
+  }
+  LinkageSolverOptions options = solver.options();
+  options.solver = "sequential";
+  // The reference pose is solved again here; cheap next to a bisection.
+  const LinkageSolver sequential(solver.model(), options);
+  return sequential.solve(t, q).failed_block;
+}
+
+// Bisection between a driver value that assembles (good, with its q) and one that does not.
+LinkageLimit bisect_limit(const LinkageSolver& solver, double good, Eigen::VectorXd q, double bad, bool upper) {
+  const LinkageModel& model = solver.model();
+  const double target = model.crank_driven() ? crank_limit_deg * std::acos(-1.0) / 180.0 : 1e-4 * std::abs(bad - good);
+  for (int i = 0; i < max_bisections && std::abs(bad - good) > target; ++i) {
+    const double middle = 0.5 * (good + bad);
+    LinkageSolution trial = continue_to(solver, good, middle, q, std::abs(middle - good));
+    if (converged(trial)) {
+      good = middle;
+      q = std::move(trial.q);
+    } else {
+      bad = middle;
+    }
+  }
+  LinkageLimit limit;
+  limit.driver = model.driver_to_user(good);
+  limit.bracket = std::abs(model.driver_to_user(bad) - model.driver_to_user(good));
+  limit.upper = upper;
+  limit.block = failing_block(solver, bad, q);
+  const auto angles = solver.transmission_angles(q);
+  limit.transmission_deg = limit.block >= 0 ? angles[static_cast<std::size_t>(limit.block)] : nan;
+  return limit;
+}
+
+}  // namespace
+
+LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step) {
+  if (!std::isfinite(start) || !std::isfinite(stop) || !std::isfinite(step) || step == 0.0 ||
+      (stop - start) * step < 0.0) {
+    throw std::invalid_argument("the sweep's step must be finite, nonzero and point from start to stop");
+  }
+  const LinkageModel& model = solver.model();
+  const std::size_t count = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
+  LinkageSweep sweep;
+  // 1. Walk from the reference pose to the start: the shorter way round for a crank.
+  const double reference = solver.reference_driver();
+  double t_start = model.driver_from_user(start);
+  double walk_to = t_start;
+  if (model.crank_driven()) walk_to = reference + std::remainder(t_start - reference, 2.0 * std::acos(-1.0));
+  const double longest = model.crank_driven() ? model.driver_from_user(crank_walk_deg)
+                                              : std::max(std::abs(walk_to - reference) / slider_walk_steps, 1e-12);
+  LinkageSolution at = continue_to(solver, reference, walk_to, solver.reference(), longest);
+  Eigen::VectorXd last_good = converged(at) ? at.q : solver.reference();
+  double last_good_t = converged(at) ? t_start : reference;
+  bool have_good = converged(at);
+  // 2. Each pose from the one before; a failed pose is retried from the last good one by halving.
+  for (std::size_t k = 0; k < count; ++k) {
+    const double user = start + static_cast<double>(k) * step;
+    const double t = model.driver_from_user(user);
+    int halvings = 0;
+    LinkageSolution solution = k == 0 && have_good ? at : continue_to(solver, last_good_t, t, last_good, std::abs(t - last_good_t), &halvings);
+    LinkagePose pose = make_pose(solver, t, std::move(solution));
+    pose.step_halvings = halvings;
+    const bool ok = pose.outcome.status == Status::converged;
+    // 3. A change between assembling and not is a limit, bracketed and named.
+    if (k > 0) {
+      const LinkagePose& before = sweep.poses.back();
+      const bool was_ok = before.outcome.status == Status::converged;
+      if (was_ok && !ok) sweep.limits.push_back(bisect_limit(solver, last_good_t, last_good, t, true));
+      if (!was_ok && ok) {
+        LinkageLimit limit = bisect_limit(solver, t, pose.q, model.driver_from_user(before.driver), false);
+        sweep.limits.push_back(limit);
+      }
+    }
+    if (ok) {
+      // 4. The branch: each block's signature against the reference pose's.
+      for (std::size_t b = 0; b < pose.signature.size(); ++b) {
+        if (pose.signature[b] == solver.reference_signature()[b]) continue;
+        sweep.branch_kept = false;
+        if (sweep.flips.size() < 20) {
+          sweep.flips.push_back(fmt::format("block {} ({}) is on the other branch at {:g}", b + 1,
+                                            describe_block(model, solver.blocks()[b]), user));
+        }
+      }
+      last_good = pose.q;
+      last_good_t = t;
+      have_good = true;
+    } else if (sweep.status == Status::converged) {
+      sweep.status = pose.outcome.status;
+    }
+    sweep.poses.push_back(std::move(pose));
+  }
+  return sweep;
+}
+
+DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q) {
+  const LinkageModel& model = solver.model();
+  DerivativeCheck check;
+  Eigen::VectorXd velocity, acceleration;
+  linkage_kinematics(model, t, q, velocity, acceleration);
+  check.velocity_scale = velocity.size() == 0 ? 0.0 : velocity.lpNorm<Eigen::Infinity>();
+  check.acceleration_scale = acceleration.size() == 0 ? 0.0 : acceleration.lpNorm<Eigen::Infinity>();
+  // Positions at t + k h, solved to rounding level by full Newton from q.
+  LinkageSolverOptions options = solver.options();
+  const double scale = std::max(1.0, q.size() == 0 ? 0.0 : q.lpNorm<Eigen::Infinity>());
+  options.newton.residual_tolerance = 64.0 * std::numeric_limits<double>::epsilon() * scale;
+  options.newton.max_iterations = 50;
+  const auto solve_at = [&](double s) -> std::optional<Eigen::VectorXd> {
+    LinkageSystem system(model, s);
+    nonlinear::Newton<LinkageSystem> newton(system, options.newton);
+    auto result = newton.solve(q);
+    if (result.status != Status::converged) return std::nullopt;
+    return result.x;
+  };
+  // Central difference for the velocity, h ~ cbrt(eps); the 7-point stencil for the acceleration.
+  const double h1 = 1e-5, h2 = 5e-2;
+  const auto p1 = solve_at(t + h1), m1 = solve_at(t - h1);
+  std::array<std::optional<Eigen::VectorXd>, 7> s;
+  for (int k = -3; k <= 3; ++k) s[static_cast<std::size_t>(k + 3)] = k == 0 ? std::optional<Eigen::VectorXd>(q) : solve_at(t + k * h2);
+  for (const auto& p : s) check.solved = check.solved && p.has_value();
+  check.solved = check.solved && p1 && m1;
+  if (!check.solved) return check;
+  const Eigen::VectorXd fd_velocity = (*p1 - *m1) / (2.0 * h1);
+  const Eigen::VectorXd fd_acceleration =
+      (2.0 * (*s[0] + *s[6]) - 27.0 * (*s[1] + *s[5]) + 270.0 * (*s[2] + *s[4]) - 490.0 * *s[3]) / (180.0 * h2 * h2);
+  check.velocity_difference = (fd_velocity - velocity).lpNorm<Eigen::Infinity>();
+  check.acceleration_difference = (fd_acceleration - acceleration).lpNorm<Eigen::Infinity>();
+  return check;
+}
+
+}  // namespace numlab::mechanisms
