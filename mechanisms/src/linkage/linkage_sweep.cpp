@@ -128,7 +128,8 @@ LinkageLimit bisect_limit(const LinkageSolver& solver, double good, Eigen::Vecto
 
 }  // namespace
 
-LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step) {
+LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
+                           const LinkagePoseObserver& observer) {
   if (!std::isfinite(start) || !std::isfinite(stop) || !std::isfinite(step) || step == 0.0 ||
       (stop - start) * step < 0.0) {
     throw std::invalid_argument("the sweep's step must be finite, nonzero and point from start to stop");
@@ -183,6 +184,7 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
       sweep.status = pose.outcome.status;
     }
     sweep.poses.push_back(std::move(pose));
+    if (observer) observer(sweep.poses.back());
   }
   return sweep;
 }

@@ -11,6 +11,7 @@
 // check_derivatives() compares them with finite differences of solved positions.
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,9 +49,13 @@ struct LinkageSweep {
   std::vector<LinkageLimit> limits;
 };
 
+// Called with each pose as soon as it is made (for --trace and --step); may throw to stop the sweep.
+using LinkagePoseObserver = std::function<void(const LinkagePose&)>;
+
 // Solves the poses start, start+step, ..., stop (user units). Throws std::invalid_argument for a
 // step that is zero or not finite or points away from stop.
-LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step);
+LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
+                           const LinkagePoseObserver& observer = {});
 
 // Velocity and acceleration at a solved pose (model units for t).
 void linkage_kinematics(const LinkageModel& model, double t, const Eigen::VectorXd& q, Eigen::VectorXd& velocity,
