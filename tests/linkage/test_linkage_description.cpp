@@ -172,6 +172,14 @@ TEST_CASE("Linkage files: TOML syntax errors give toml++'s place", "[linkage-fil
   const LinkageFileError twice = error_of(lines({"[linkage]", "name = \"t\"", "[ground]", "O = [0, 0]", "O = [1, 1]"}));
   CHECK(twice.place().line == 5);
   CHECK_THAT(twice.problem(), StartsWith("TOML syntax error in key-value pair: cannot redefine existing array 'O'"));
+  // toml++ 3.3 asserted on these (fuzz_linkage_description found "[%"); now they are syntax errors.
+  check_refused(lines({"[linkage]", "name = \"t\"", "[%"}), 3, 2,
+                "TOML syntax error in key: expected bare key starting character or string delimiter, saw '%'");
+  check_refused(lines({"[linkage]", "name = \"t\"", "[[[1]]]"}), 3, 3,
+                "TOML syntax error in key: expected bare key starting character or string delimiter, saw '['");
+  // A byte-order mark before [linkage] still makes it a linkage with a syntax error.
+  check_refused("\xEF\xBB\xBF[linkage]\nname = \"t\"\nO = [0, 0\n", 3, 11,
+                "TOML syntax error in array: encountered end-of-file");
   // So is a second [driver].
   const LinkageFileError drivers = error_of(head + crank + lines({"[driver]"}));
   CHECK(drivers.place().line == 19);

@@ -4,20 +4,30 @@
 
 #include "numlab/mechanisms/linkage/linkage_description.hpp"
 
-#define TOML_HEADER_ONLY 1
-#include <toml++/toml.h>
-
 #include <algorithm>
 #include <charconv>
 #include <climits>
 #include <cmath>
 #include <map>
 #include <optional>
-#include <set>
 #include <utility>
 
 #include "numlab/linalg/matrix_file.hpp"
 #include "numlab/printable_text.hpp"
+
+// toml++ 3.3 states a precondition of its key parser as an assertion that malformed input breaks
+// ("[%", "[[[1]]]": marzer/tomlplusplus issue 294, fixed upstream by pull request 301; found here by
+// fuzz_linkage_description). With assertions on it aborts; with NDEBUG under clang it becomes
+// __builtin_assume, undefined behaviour. With the check skipped, as in a GCC release build, the
+// parser goes on to report the input as a syntax error at the right place. So its internal checks
+// are skipped in every build, and NDEBUG is hidden while it is included so that none of them can
+// turn into an assumption. Everything else is included first, untouched by this.
+#pragma push_macro("NDEBUG")
+#undef NDEBUG
+#define TOML_ASSERT(expr) static_cast<void>(0)
+#define TOML_HEADER_ONLY 1
+#include <toml++/toml.h>
+#pragma pop_macro("NDEBUG")
 
 namespace numlab::mechanisms {
 
@@ -72,19 +82,23 @@ std::vector<std::pair<const toml::key*, const toml::node*>> in_file_order(const 
   return entries;
 }
 
-// Does the text have a line that opens a [linkage] table? Decides whether a file TOML cannot parse
-// is reported as a linkage with a syntax error or as something that is not a linkage at all.
+// Does a line of the text start the linkage table ("[linkage]", "linkage = {", "linkage.name = ")?
+// Decides whether a file TOML cannot parse is reported as a linkage with a syntax error or as
+// something that is not a linkage at all.
 bool mentions_linkage_table(std::string_view text) {
+  text = linalg::without_byte_order_mark(text);
   for (std::size_t begin = 0; begin < text.size();) {
     const std::size_t end = std::min(text.find('\n', begin), text.size());
     std::string_view line = text.substr(begin, end - begin);
     begin = end + 1;
-    const auto skip_blanks = [&] { line.remove_prefix(std::min(line.find_first_not_of(" \t"), line.size())); };
-    skip_blanks();
-    if (!line.starts_with('[')) continue;
-    line.remove_prefix(1);
-    skip_blanks();
-    if (line.starts_with("linkage")) return true;
+    const auto skip = [&](std::string_view characters) {
+      line.remove_prefix(std::min(line.find_first_not_of(characters), line.size()));
+    };
+    skip(" \t");
+    if (line.starts_with('[')) line.remove_prefix(1);
+    skip(" \t\"'");
+    constexpr std::string_view key = "linkage";
+    if (line.starts_with(key) && (line.size() == key.size() || !is_name_char(line[key.size()], true))) return true;
   }
   return false;
 }
@@ -182,7 +196,9 @@ class Reader {
     static constexpr Section sections[] = {{"linkage", false}, {"ground", false}, {"joints", false},
                                            {"link", true},     {"body", true},    {"slider", true},
                                            {"driver", false}};
-    for (const auto& [key, node] : in_file_order(root_)) {
+    for (const auto& entry : in_file_order(root_)) {
+      const toml::key* key = entry.first;
+      const toml::node* node = entry.second;
       const auto* section = std::find_if(std::begin(sections), std::end(sections),
                                          [&](const Section& s) { return s.key == key->str(); });
       const std::string name = printable(key->str().substr(0, 40));
