@@ -177,6 +177,15 @@ TEST_CASE("Linkage files: TOML syntax errors give toml++'s place", "[linkage-fil
                 "TOML syntax error in key: expected bare key starting character or string delimiter, saw '%'");
   check_refused(lines({"[linkage]", "name = \"t\"", "[[[1]]]"}), 3, 3,
                 "TOML syntax error in key: expected bare key starting character or string delimiter, saw '['");
+  // toml++ 3.3 reached undefined behaviour on some non-ASCII characters (fuzz_linkage_description):
+  // they are refused before it sees them, in a string too; escaped they are read.
+  check_refused(lines({"[linkage]", "name = \"t\" \xC3\xA9"}), 2, 12,
+                "the character U+00E9 is one toml++ 3.3 cannot read safely; in a string write it as \\u00E9");
+  check_refused(lines({"# \xE3\x80\x81", "[linkage]"}), 1, 3,
+                "the character U+3001 is one toml++ 3.3 cannot read safely; in a string write it as \\u3001");
+  const std::string escaped = lines({"[linkage]", "name = \"t\"", "title = \"M\\u00E9canisme \xE2\x80\x94 \xE6\x9C\xBA\""});
+  CHECK(parse_linkage_description(escaped + head.substr(head.find("[ground]")) + crank, "t.toml").title ==
+        "M\xC3\xA9" "canisme \xE2\x80\x94 \xE6\x9C\xBA");
   // A byte-order mark before [linkage] still makes it a linkage with a syntax error.
   check_refused("\xEF\xBB\xBF[linkage]\nname = \"t\"\nO = [0, 0\n", 3, 11,
                 "TOML syntax error in array: encountered end-of-file");

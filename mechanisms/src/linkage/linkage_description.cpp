@@ -103,6 +103,46 @@ bool mentions_linkage_table(std::string_view text) {
   return false;
 }
 
+// toml++ 3.3's table of non-ASCII blanks reaches __builtin_unreachable (undefined behaviour) for the
+// code points below, wherever its parser asks whether one is a blank: upstream issues 190 and 295,
+// fixed by pull request 305; found here by fuzz_linkage_description. Checked exhaustively under UBSan:
+// every other code point is safe. The first such character in the text, with its place, or nothing.
+struct UnsafeCharacter {
+  char32_t code = 0;
+  SourcePlace place;
+};
+
+bool unsafe_for_toml(char32_t c) {
+  return (c >= 0xA1 && c <= 0x499) || (c >= 0x2C5E && c <= 0x3057 && c != 0x3000) || (c >= 0xFB26 && c <= 0xFEFE);
+}
+
+std::optional<UnsafeCharacter> first_unsafe_character(std::string_view text) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < text.size(); ++column) {
+    const auto lead = static_cast<unsigned char>(text[i++]);
+    if (lead == '\n') {
+      ++line;
+      column = 0;
+      continue;
+    }
+    // Decoded leniently (toml++ refuses ill-formed UTF-8 itself): a lead byte and its continuations.
+    const int extra = lead >= 0xF0 ? 3 : lead >= 0xE0 ? 2 : lead >= 0xC0 ? 1 : 0;
+    char32_t code = extra == 0 ? lead : lead & (0x3Fu >> extra);
+    for (int k = 0; k < extra && i < text.size() && (static_cast<unsigned char>(text[i]) & 0xC0u) == 0x80u; ++k) {
+      code = (code << 6) | (static_cast<unsigned char>(text[i++]) & 0x3Fu);
+    }
+    if (unsafe_for_toml(code)) return UnsafeCharacter{code, {line, column}};
+  }
+  return std::nullopt;
+}
+
+std::string code_point_text(char32_t code) {
+  static constexpr char hex[] = "0123456789ABCDEF";
+  std::string digits = "U+";
+  for (int shift = 12; shift >= 0; shift -= 4) digits += hex[(code >> shift) & 0xFu];
+  return digits;
+}
+
 class Reader {
  public:
   Reader(const toml::table& root, const std::string& file) : root_(root), file_(file) {}
@@ -480,6 +520,12 @@ LinkageFileError::LinkageFileError(const std::string& file, SourcePlace place, c
     : std::invalid_argument(located(file, place, problem)), problem_(problem), place_(place) {}
 
 LinkageDescription parse_linkage_description(std::string_view toml_text, const std::string& file) {
+  if (const auto unsafe = first_unsafe_character(toml_text)) {
+    const std::string code = code_point_text(unsafe->code);
+    throw LinkageFileError(file, unsafe->place,
+                           "the character " + code + " is one toml++ 3.3 cannot read safely; in a string write it as \\u" +
+                               code.substr(2));
+  }
   toml::table root;
   try {
     root = toml::parse(toml_text);
