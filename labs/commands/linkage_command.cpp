@@ -146,7 +146,7 @@ int run_linkage(const LinkageRun& run) {
                         (paused_seconds() - paused_before);
 
   // 3. The checks that read the sweep, the files, then the report.
-  LinkageReport report{model, solver, sweep, time_s};
+  LinkageReport report{model, solver, sweep, time_s, {}, std::nullopt, Status::converged};
   report.derivatives = check_poses(solver, sweep);
   if (run.check_jacobian) report.jacobian = check_jacobians(model, sweep);
   report.status = overall_status(sweep);

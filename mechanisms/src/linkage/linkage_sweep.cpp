@@ -189,30 +189,35 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   return sweep;
 }
 
-DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q) {
+DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q_near) {
   const LinkageModel& model = solver.model();
   DerivativeCheck check;
-  Eigen::VectorXd velocity, acceleration;
-  linkage_kinematics(model, t, q, velocity, acceleration);
-  check.velocity_scale = velocity.size() == 0 ? 0.0 : velocity.lpNorm<Eigen::Infinity>();
-  check.acceleration_scale = acceleration.size() == 0 ? 0.0 : acceleration.lpNorm<Eigen::Infinity>();
-  // Positions at t + k h, solved to rounding level by full Newton from q.
-  LinkageSolverOptions options = solver.options();
-  const double scale = std::max(1.0, q.size() == 0 ? 0.0 : q.lpNorm<Eigen::Infinity>());
-  options.newton.residual_tolerance = 64.0 * std::numeric_limits<double>::epsilon() * scale;
-  options.newton.max_iterations = 50;
+  // Positions at t + k h, solved to rounding level by full Newton from the pose: the pose itself too,
+  // since a sweep's pose is only as exact as its tolerance.
+  nonlinear::NewtonOptions newton = solver.options().newton;
+  const double scale = std::max(1.0, q_near.size() == 0 ? 0.0 : q_near.lpNorm<Eigen::Infinity>());
+  newton.residual_tolerance = 64.0 * std::numeric_limits<double>::epsilon() * scale;
+  newton.max_iterations = 50;
   const auto solve_at = [&](double s) -> std::optional<Eigen::VectorXd> {
-    LinkageSystem system(model, s);
-    nonlinear::Newton<LinkageSystem> newton(system, options.newton);
-    auto result = newton.solve(q);
+    const LinkageSystem system(model, s);
+    auto result = nonlinear::newton_solve(system, q_near, newton);
     if (result.status != Status::converged) return std::nullopt;
     return result.x;
   };
+  const auto q = solve_at(t);
+  if (!q) {
+    check.solved = false;
+    return check;
+  }
+  Eigen::VectorXd velocity, acceleration;
+  linkage_kinematics(model, t, *q, velocity, acceleration);
+  check.velocity_scale = velocity.size() == 0 ? 0.0 : velocity.lpNorm<Eigen::Infinity>();
+  check.acceleration_scale = acceleration.size() == 0 ? 0.0 : acceleration.lpNorm<Eigen::Infinity>();
   // Central difference for the velocity, h ~ cbrt(eps); the 7-point stencil for the acceleration.
   const double h1 = 1e-5, h2 = 5e-2;
   const auto p1 = solve_at(t + h1), m1 = solve_at(t - h1);
   std::array<std::optional<Eigen::VectorXd>, 7> s;
-  for (int k = -3; k <= 3; ++k) s[static_cast<std::size_t>(k + 3)] = k == 0 ? std::optional<Eigen::VectorXd>(q) : solve_at(t + k * h2);
+  for (int k = -3; k <= 3; ++k) s[static_cast<std::size_t>(k + 3)] = k == 0 ? q : solve_at(t + k * h2);
   for (const auto& p : s) check.solved = check.solved && p.has_value();
   check.solved = check.solved && p1 && m1;
   if (!check.solved) return check;

@@ -65,8 +65,9 @@ void linkage_kinematics(const LinkageModel& model, double t, const Eigen::Vector
 double linkage_condition(const LinkageModel& model, double t, const Eigen::VectorXd& q);
 
 // The largest differences between the velocity and acceleration from the Jacobian and those from
-// finite differences of positions solved at t +- k h (central, 2nd order for the velocity; the
-// 7-point stencil, 6th order, for the acceleration), and the h used.
+// finite differences of positions solved at t +- k h (central, 2nd order, h = 1e-5 for the velocity;
+// the 7-point stencil, 6th order, h = 0.05 for the acceleration). Every position, the pose's own
+// included, is solved again from q_near by Newton to 64 eps |q|.
 struct DerivativeCheck {
   double velocity_difference = 0.0;
   double acceleration_difference = 0.0;
@@ -74,7 +75,7 @@ struct DerivativeCheck {
   double acceleration_scale = 0.0;   // max |qddot|
   bool solved = true;                // false when a neighbouring pose did not solve
 };
-DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q);
+DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q_near);
 
 // Positions of a pose, as joints.
 inline JointPositions pose_joints(const LinkageModel& model, const LinkagePose& pose) { return model.positions(pose.q); }
