@@ -106,9 +106,11 @@ DerivativeReport check_poses(const LinkageSolver& solver, const LinkageSweep& sw
   return report;
 }
 
+// A sweep succeeds when every pose converged, on the reference branch, and (where the model has a
+// closed form) within the distance of it that its residual allows.
 Status overall_status(const LinkageSweep& sweep) {
   if (sweep.status != Status::converged) return sweep.status;
-  return sweep.branch_kept ? Status::converged : Status::no_progress;
+  return sweep.branch_kept && sweep.closed_form_verified ? Status::converged : Status::no_progress;
 }
 
 }  // namespace

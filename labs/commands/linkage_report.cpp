@@ -95,6 +95,21 @@ std::string limit_text(const LinkageReport& r, const LinkageLimit& limit) {
 
 nlohmann::ordered_json number(double value) { return number_or_null(value); }
 
+// The pose farthest from the closed form relative to its bound (NaN when there is no closed form).
+struct ClosedFormWorst {
+  double distance = std::numeric_limits<double>::quiet_NaN(), bound = std::numeric_limits<double>::quiet_NaN();
+};
+ClosedFormWorst worst_closed_form(const LinkageSweep& sweep) {
+  ClosedFormWorst worst;
+  double ratio = -1.0;
+  for (const auto& pose : sweep.poses) {
+    if (std::isnan(pose.closed_form_distance)) continue;
+    const double r = pose.closed_form_distance / pose.closed_form_bound;
+    if (r > ratio) ratio = r, worst = {pose.closed_form_distance, pose.closed_form_bound};
+  }
+  return worst;
+}
+
 }  // namespace
 
 void print_explanation(std::ostream& out, const LinkageModel& model, Format format) {
@@ -204,6 +219,8 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
                             {"acceleration", accelerations},
                             {"transmission_deg", transmission},
                             {"condition", number(pose.condition)},
+                            {"closed_form_distance", number(pose.closed_form_distance)},
+                            {"closed_form_bound", number(pose.closed_form_bound)},
                             {"signature", pose.signature},
                             {"branch_kept", kept(r.solver, pose)},
                             {"iterations", pose.outcome.iterations},
@@ -212,7 +229,11 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
   }
   out["status"] = std::string(to_string(r.status));
   out["branch_kept"] = r.sweep.branch_kept;
+  out["closed_form_verified"] = r.sweep.closed_form_verified;
+  out["worst_closed_form_distance"] = number(worst_closed_form(r.sweep).distance);
+  out["worst_closed_form_bound"] = number(worst_closed_form(r.sweep).bound);
   out["flips"] = r.sweep.flips;
+  out["change_points"] = r.sweep.change_points;
   out["limits"] = nlohmann::ordered_json::array();
   for (const auto& limit : r.sweep.limits) {
     out["limits"].push_back({{"driver", limit.driver},
@@ -266,9 +287,15 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
                    scientific(pose.outcome.residual_norm), std::string(to_string(pose.outcome.status))});
   }
   table.print(out);
-  out << fmt::format("branch             {}\n", r.sweep.branch_kept ? "kept (every block's signature as at the reference pose)"
+  out << fmt::format("branch             {}\n", r.sweep.branch_kept ? "kept (no block's signature changed but at a change point)"
                                                                       : "FLIPPED");
   for (const auto& flip : r.sweep.flips) out << "                   " << flip << '\n';
+  for (const auto& change : r.sweep.change_points) out << "change point       " << change << '\n';
+  const ClosedFormWorst worst = worst_closed_form(r.sweep);
+  if (!std::isnan(worst.distance)) {
+    out << fmt::format("closed form        worst joint distance {:.2g} (the residual allows {:.2g}): {}\n", worst.distance,
+                       worst.bound, r.sweep.closed_form_verified ? "verified" : "NOT VERIFIED");
+  }
   for (const auto& limit : r.sweep.limits) out << "limit              " << limit_text(r, limit) << '\n';
   double low = std::numeric_limits<double>::infinity(), high = 0.0, at = nan;
   for (const auto& pose : r.sweep.poses) {

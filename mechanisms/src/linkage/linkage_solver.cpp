@@ -64,6 +64,11 @@ Eigen::Vector2d foot_on_line(const Constraint& line, const Eigen::Vector2d& poin
   return line.point + (point - line.point).dot(line.direction) * line.direction;
 }
 
+// Of a dyad's two solutions, the one nearer where the joint was (or is predicted to be).
+Eigen::Vector2d nearer(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& near) {
+  return (a - near).squaredNorm() <= (b - near).squaredNorm() ? a : b;
+}
+
 double residual_norm(const LinkageModel& model, const Eigen::VectorXd& q, double t) {
   Eigen::VectorXd f;
   model.residual(q, t, f);
@@ -199,20 +204,25 @@ LinkageSolution LinkageSolver::closed_form(double t, const Eigen::VectorXd& q0) 
         set_joint(model_, q, joint, line.point + t * line.direction);
         break;
       }
-      case BlockKind::circle_circle: {  // 4. two circles meet, on the reference side
+      case BlockKind::circle_circle: {  // 4. two circles meet: the point nearer q0's (continuation)
         const auto [first, second] = dyad_parts(model_, block);
-        const auto p = circle_intersection(at(centre_of(*first, joint)), first->length, at(centre_of(*second, joint)),
-                                           second->length, reference_signature_[b]);
-        if (!p) fail();
-        else set_joint(model_, q, joint, *p);
+        const Eigen::Vector2d c1 = at(centre_of(*first, joint)), c2 = at(centre_of(*second, joint));
+        const auto left = circle_intersection(c1, first->length, c2, second->length, 1);
+        const auto right = circle_intersection(c1, first->length, c2, second->length, -1);
+        if (!left || !right) fail();
+        else set_joint(model_, q, joint, nearer(*left, *right, joint_at(model_, q0, joint)));
         break;
       }
-      case BlockKind::circle_line: {  // 5. a circle meets a line, on the reference side of its foot
+      case BlockKind::circle_line: {  // 5. a circle meets a line: the point nearer q0's
         const auto [circle, line] = dyad_parts(model_, block);
         const Eigen::Vector2d centre = at(centre_of(*circle, joint)), foot = foot_on_line(*line, centre);
         const double half_chord_squared = circle->length * circle->length - (centre - foot).squaredNorm();
-        if (!(half_chord_squared >= 0.0)) fail();
-        else set_joint(model_, q, joint, foot + reference_signature_[b] * std::sqrt(half_chord_squared) * line->direction);
+        if (!(half_chord_squared >= 0.0)) {
+          fail();
+        } else {
+          const Eigen::Vector2d along = std::sqrt(half_chord_squared) * line->direction;
+          set_joint(model_, q, joint, nearer(foot + along, foot - along, joint_at(model_, q0, joint)));
+        }
         break;
       }
       case BlockKind::newton:

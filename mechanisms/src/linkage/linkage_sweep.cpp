@@ -4,6 +4,7 @@
 
 #include <Eigen/LU>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -23,8 +24,14 @@ constexpr int max_bisections = 60;
 
 bool converged(const LinkageSolution& s) { return s.outcome.status == Status::converged; }
 
-// From q at driver `from` to driver `to` (model units) in steps no longer than `longest`,
-// halving a step that fails. The last solution (failed or not).
+// The first-order predictor of continuation: q + qdot (next - at), qdot from J qdot = -Phi_t.
+Eigen::VectorXd predicted(const LinkageModel& model, double at, const Eigen::VectorXd& q, double next) {
+  const Eigen::VectorXd velocity = linkage_velocity(model, at, q);
+  return velocity.allFinite() ? Eigen::VectorXd(q + velocity * (next - at)) : q;
+}
+
+// From q at driver `from` to driver `to` (model units) in steps no longer than `longest`, each
+// solve started from the predictor; a step that fails is halved. The last solution (failed or not).
 LinkageSolution continue_to(const LinkageSolver& solver, double from, double to, const Eigen::VectorXd& q, double longest,
                             int* halvings = nullptr) {
   LinkageSolution last{q, {}, -1};
@@ -34,7 +41,7 @@ LinkageSolution continue_to(const LinkageSolver& solver, double from, double to,
   int halved = 0;
   while (at != to) {
     const double next = std::abs(to - at) <= std::abs(step) ? to : at + step;
-    LinkageSolution trial = solver.solve(next, last.q);
+    LinkageSolution trial = solver.solve(next, predicted(solver.model(), at, last.q, next));
     if (converged(trial)) {
       last = std::move(trial);
       at = next;
@@ -50,6 +57,14 @@ LinkageSolution continue_to(const LinkageSolver& solver, double from, double to,
 
 }  // namespace
 
+Eigen::VectorXd linkage_velocity(const LinkageModel& model, double t, const Eigen::VectorXd& q) {
+  Eigen::MatrixXd J;
+  Eigen::VectorXd phi_t;
+  model.jacobian(q, t, J);
+  model.driver_derivative(q, t, phi_t);
+  return Eigen::PartialPivLU<Eigen::MatrixXd>(J).solve(-phi_t);
+}
+
 void linkage_kinematics(const LinkageModel& model, double t, const Eigen::VectorXd& q, Eigen::VectorXd& velocity,
                         Eigen::VectorXd& acceleration) {
   Eigen::MatrixXd J;
@@ -62,12 +77,15 @@ void linkage_kinematics(const LinkageModel& model, double t, const Eigen::Vector
   acceleration = lu.solve(gamma);              // 2. J qddot = gamma
 }
 
-double linkage_condition(const LinkageModel& model, double t, const Eigen::VectorXd& q) {
+LinkageConditioning linkage_conditioning(const LinkageModel& model, double t, const Eigen::VectorXd& q) {
   Eigen::MatrixXd J;
   model.jacobian(q, t, J);
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J);
   const auto& s = svd.singularValues();
-  return s.size() == 0 ? 1.0 : (s(s.size() - 1) == 0.0 ? std::numeric_limits<double>::infinity() : s(0) / s(s.size() - 1));
+  if (s.size() == 0) return {1.0, 0.0};
+  const double smallest = s(s.size() - 1);
+  if (smallest == 0.0) return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  return {s(0) / smallest, 1.0 / smallest};
 }
 
 namespace {
@@ -80,11 +98,29 @@ LinkagePose make_pose(const LinkageSolver& solver, double t, LinkageSolution sol
   pose.outcome = solution.outcome;
   pose.failed_block = solution.failed_block;
   pose.condition = nan;
+  pose.closed_form_distance = nan;
+  pose.closed_form_bound = nan;
   if (converged(solution)) {
     linkage_kinematics(model, t, pose.q, pose.velocity, pose.acceleration);
-    pose.condition = linkage_condition(model, t, pose.q);
+    const LinkageConditioning conditioning = linkage_conditioning(model, t, pose.q);
+    pose.condition = conditioning.condition;
     pose.signature = solver.signature(pose.q, t);
     pose.transmission_deg = solver.transmission_angles(pose.q);
+    // The closed form, where every block has one, as an independent check of the solved pose.
+    const bool all_closed = std::all_of(solver.blocks().begin(), solver.blocks().end(),
+                                        [](const LinkageBlock& b) { return b.closed_form(); });
+    if (all_closed) {
+      const LinkageSolution closed = solver.closed_form(t, pose.q);
+      if (closed.failed_block < 0) {
+        Eigen::VectorXd f;
+        model.residual(pose.q, t, f);
+        const double n = static_cast<double>(pose.q.size());
+        const double scale = pose.q.size() == 0 ? 0.0 : pose.q.lpNorm<Eigen::Infinity>();
+        pose.closed_form_distance = (pose.q - closed.q).lpNorm<Eigen::Infinity>();
+        pose.closed_form_bound =
+            10.0 * conditioning.inverse_norm * (f.norm() + n * std::numeric_limits<double>::epsilon() * std::max(scale, 1.0));
+      }
+    }
   }
   return pose;
 }
@@ -128,6 +164,28 @@ LinkageLimit bisect_limit(const LinkageSolver& solver, double good, Eigen::Vecto
 
 }  // namespace
 
+// Where, between t0 (pose q0) and t1, dyad block b's two solutions meet (its margin reaches zero
+// without going below: a change point), or NaN. The margin along the way comes from the closed
+// form continued from q0; its smallest value is found by golden-section search.
+double change_point(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t1) {
+  if (!solver.blocks()[b].dyad()) return std::numeric_limits<double>::quiet_NaN();
+  const auto margin_at = [&](double t) {
+    const LinkageSolution closed = solver.closed_form(t, predicted(solver.model(), t0, q0, t));
+    return closed.failed_block >= 0 ? -1.0 : solver.dyad_margins(closed.q)[b];
+  };
+  constexpr double golden = 0.6180339887498949;
+  double a = t0, c = t1;
+  for (int i = 0; i < 80 && std::abs(c - a) > 1e-12 * (1.0 + std::abs(t0)); ++i) {
+    const double x1 = c - golden * (c - a), x2 = a + golden * (c - a);
+    if (margin_at(x1) < margin_at(x2)) c = x2;
+    else a = x1;
+  }
+  const double meet = 0.5 * (a + c);
+  const double margin = margin_at(meet);
+  const double scale = std::max(1.0, q0.size() == 0 ? 0.0 : q0.lpNorm<Eigen::Infinity>());
+  return margin >= 0.0 && margin <= 1e-6 * scale ? meet : std::numeric_limits<double>::quiet_NaN();
+}
+
 LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
                            const LinkagePoseObserver& observer) {
   if (!std::isfinite(start) || !std::isfinite(stop) || !std::isfinite(step) || step == 0.0 ||
@@ -148,6 +206,8 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   Eigen::VectorXd last_good = converged(at) ? at.q : solver.reference();
   double last_good_t = converged(at) ? t_start : reference;
   bool have_good = converged(at);
+  std::vector<int> last_signature = solver.reference_signature();
+  bool have_signature = true;
   // 2. Each pose from the one before; a failed pose is retried from the last good one by halving.
   for (std::size_t k = 0; k < count; ++k) {
     const double user = start + static_cast<double>(k) * step;
@@ -167,16 +227,35 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
         sweep.limits.push_back(limit);
       }
     }
+    if (ok && !(pose.closed_form_distance <= pose.closed_form_bound) && !std::isnan(pose.closed_form_distance)) {
+      sweep.closed_form_verified = false;
+    }
     if (ok) {
-      // 4. The branch: each block's signature against the reference pose's.
-      for (std::size_t b = 0; b < pose.signature.size(); ++b) {
-        if (pose.signature[b] == solver.reference_signature()[b]) continue;
-        sweep.branch_kept = false;
-        if (sweep.flips.size() < 20) {
-          sweep.flips.push_back(fmt::format("block {} ({}) is on the other branch at {:g}", b + 1,
-                                            describe_block(model, solver.blocks()[b]), user));
+      // 4. The branch: a block whose signature changes from the last assembled pose either passes a
+      // change point (a dyad whose two solutions meet between the poses, as a kite does when it
+      // lines up: the motion goes on smoothly on the other side) or has jumped to another branch.
+      if (have_signature) {
+        for (std::size_t b = 0; b < pose.signature.size(); ++b) {
+          if (pose.signature[b] == last_signature[b]) continue;
+          const bool first = sweep.poses.empty();  // compared with the reference pose, across the walk
+          const double meet = first ? change_point(solver, b, reference, solver.reference(), t)
+                                    : change_point(solver, b, last_good_t, last_good, t);
+          const std::string what = describe_block(model, solver.blocks()[b]);
+          if (std::isfinite(meet)) {
+            sweep.change_points.push_back(fmt::format("block {} ({}) passes a change point at {:.2f}: its two solutions "
+                                                      "meet there, and it goes on smoothly on the other side",
+                                                      b + 1, what, model.driver_to_user(meet)));
+          } else {
+            sweep.branch_kept = false;
+            if (sweep.flips.size() < 20) {
+              sweep.flips.push_back(fmt::format("block {} ({}) jumps to the other branch between {:g} and {:g}", b + 1,
+                                                what, model.driver_to_user(last_good_t), user));
+            }
+          }
         }
       }
+      last_signature = pose.signature;
+      have_signature = true;
       last_good = pose.q;
       last_good_t = t;
       have_good = true;

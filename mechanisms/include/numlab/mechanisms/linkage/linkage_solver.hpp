@@ -8,9 +8,9 @@
 //               a block needs Newton
 //   gsl-<type>  GSL's multiroot solver of that type on the whole system
 //
-// The branch is the reference pose's: solve_reference() runs damped Newton from the file's rough
+// The branch is the reference pose's: the constructor runs damped Newton from the file's rough
 // positions at the reference driver value, and each dyad's side (and each Newton block's sign of
-// det J) is read from that pose. The closed form keeps those sides.
+// det J) is read from that pose: its signature. Sweeps continue from it (linkage_sweep.hpp).
 
 #include <Eigen/Core>
 #include <string>
@@ -73,8 +73,9 @@ class LinkageSolver {
 
   // Solves at driver value t (model units) from q0.
   LinkageSolution solve(double t, const Eigen::VectorXd& q0) const;
-  // The closed form of every closed-form block, in order, on the reference branch; Newton blocks
-  // (if any) are left at q0's values and make it fail with that block. Never throws.
+  // The closed form of every closed-form block, in order; of a dyad's two solutions, the one nearer
+  // the joint's place in q0 (a continuation: q0 is the previous pose, or its prediction). A Newton
+  // block makes it fail with that block. Never throws.
   LinkageSolution closed_form(double t, const Eigen::VectorXd& q0) const;
 
   // The branch signature of a pose (see reference_signature).

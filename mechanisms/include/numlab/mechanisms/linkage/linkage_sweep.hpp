@@ -27,6 +27,8 @@ struct LinkagePose {
   nonlinear::NewtonCounts outcome;
   int failed_block = -1;              // the block that failed (sequential and analytic)
   double condition = 0.0;             // kappa_2(J) (NaN when not converged)
+  double closed_form_distance = 0.0;  // max |q - closed form| when every block has one (NaN otherwise)
+  double closed_form_bound = 0.0;     // how far the residual test allows: 10 ||J^-1||_2 (||Phi||_2 + n eps |q|)
   std::vector<int> signature;         // per block (LinkageSolver::signature)
   std::vector<double> transmission_deg;  // per block, NaN for non-dyads
   int step_halvings = 0;              // continuation steps halved to reach this pose
@@ -44,8 +46,10 @@ struct LinkageLimit {
 struct LinkageSweep {
   std::vector<LinkagePose> poses;
   Status status = Status::converged;  // converged when every pose did; else the first failure's
-  bool branch_kept = true;            // every converged pose has the reference signature
-  std::vector<std::string> flips;     // "block 3 (E from (C, D)) flips between 120 and 121 deg"
+  bool branch_kept = true;            // no block's signature changed between poses but at change points
+  bool closed_form_verified = true;   // every converged pose within its closed-form bound (when there is one)
+  std::vector<std::string> flips;     // a block that jumped to another branch between two poses
+  std::vector<std::string> change_points;  // a dyad that passed a change point (reported, not a flip)
   std::vector<LinkageLimit> limits;
 };
 
@@ -57,12 +61,22 @@ using LinkagePoseObserver = std::function<void(const LinkagePose&)>;
 LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
                            const LinkagePoseObserver& observer = {});
 
+// The velocity alone: J qdot = -Phi_t.
+Eigen::VectorXd linkage_velocity(const LinkageModel& model, double t, const Eigen::VectorXd& q);
+
 // Velocity and acceleration at a solved pose (model units for t).
 void linkage_kinematics(const LinkageModel& model, double t, const Eigen::VectorXd& q, Eigen::VectorXd& velocity,
                         Eigen::VectorXd& acceleration);
 
-// kappa_2 of J at a pose.
-double linkage_condition(const LinkageModel& model, double t, const Eigen::VectorXd& q);
+// kappa_2 of J at a pose, and ||J^-1||_2 = 1 / sigma_min.
+struct LinkageConditioning {
+  double condition = 0.0;
+  double inverse_norm = 0.0;
+};
+LinkageConditioning linkage_conditioning(const LinkageModel& model, double t, const Eigen::VectorXd& q);
+inline double linkage_condition(const LinkageModel& model, double t, const Eigen::VectorXd& q) {
+  return linkage_conditioning(model, t, q).condition;
+}
 
 // The largest differences between the velocity and acceleration from the Jacobian and those from
 // finite differences of positions solved at t +- k h (central, 2nd order, h = 1e-5 for the velocity;
