@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <regex>
 #include <stdexcept>
 #include <string>
@@ -16,6 +17,7 @@
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 #include "scenes/linkage_scene.hpp"
+#include "scenes/scene_layout.hpp"
 
 using namespace numlab::mechanisms;
 using numlab::Status;
@@ -253,4 +255,36 @@ TEST_CASE("With no assembled pose there is nothing to draw", "[scene]") {
   failed.poses.resize(3);  // poses that never converged (status running)
   CHECK_THROWS_AS(linkage_animation_svg(model, failed, 1.0), std::invalid_argument);
   CHECK_THROWS_AS(linkage_pose_svg(model, failed, 0, false), std::invalid_argument);
+}
+
+TEST_CASE("A velocity that is not finite is said so, not drawn", "[scene]") {
+  const LinkageModel model(crank_rocker());
+  const LinkageSolver solver(model, {});
+  auto sweep = linkage_sweep(solver, 0.0, 355.0, 5.0);
+  sweep.poses[6].velocity[1] = std::numeric_limits<double>::quiet_NaN();
+  const std::string svg = linkage_pose_svg(model, sweep, 6, true);
+  CHECK(arrows_of(svg).empty());
+  CHECK(svg.find("the velocity at this pose is not finite") != std::string::npos);
+  CHECK_FALSE(std::regex_search(svg, std::regex("\\b(nan|inf)\\b")));  // no number printed from it
+}
+
+TEST_CASE("Layout: the hull of a body, the clearest side of a joint, a line across a frame", "[scene]") {
+  using numlab::cli::Frame;
+  // A square with one joint inside and one on an edge: the outline is the four corners.
+  const BodySpec body{"square", {10, 11, 12, 13, 14, 15}, {{0, 0}, {0.5, 0.5}, {2, 0}, {2, 2}, {1, 0}, {0, 2}}, {}};
+  std::vector<int> outline = numlab::cli::body_outline(body);
+  CHECK(outline == std::vector<int>{10, 12, 13, 15});  // counter-clockwise from the lowest-left corner
+  // Bars to the right and up: the name goes down-left.
+  const Eigen::Vector2d side = numlab::cli::clearest_direction({{1, 0}, {0, 1}});
+  CHECK(side.x() == Approx(-std::sqrt(0.5)));
+  CHECK(side.y() == Approx(-std::sqrt(0.5)));
+  Eigen::Vector2d from, to;
+  REQUIRE(numlab::cli::line_across(Frame{0, 10, 0, 5}, {3, 1}, {1, 0}, from, to));
+  CHECK(from == Eigen::Vector2d(0, 1));
+  CHECK(to == Eigen::Vector2d(10, 1));
+  CHECK_FALSE(numlab::cli::line_across(Frame{0, 10, 0, 5}, {3, 7}, {1, 0}, from, to));
+  const double r = std::sqrt(0.5);
+  REQUIRE(numlab::cli::line_across(Frame{0, 10, 0, 5}, {1, 1}, {r, r}, from, to));
+  CHECK((from - Eigen::Vector2d(0, 0)).norm() < 1e-12);
+  CHECK((to - Eigen::Vector2d(5, 5)).norm() < 1e-12);
 }
