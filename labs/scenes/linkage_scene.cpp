@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
 
 #include "output/svg_canvas.hpp"
+#include "scenes/scene_layout.hpp"
 
 namespace numlab::cli {
 
@@ -44,8 +44,6 @@ bool assembled(const LinkageModel& model, const LinkagePose& pose) {
   return pose.outcome.status == Status::converged && pose.q.size() == model.unknown_count();
 }
 
-double larger_side(const Frame& frame) { return std::max(frame.max_x - frame.min_x, frame.max_y - frame.min_y); }
-
 Scene scene_of(const LinkageModel& model, const LinkageSweep& sweep) {
   Scene scene{model, {}, {}, {}, 0, false, 1.0, 1.0};
   bool previous = true;
@@ -77,21 +75,9 @@ Scene scene_of(const LinkageModel& model, const LinkageSweep& sweep) {
   return scene;
 }
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
-
 std::string title_of(const LinkageModel& model) {
   const auto& d = model.description();
-  return escaped(d.title.empty() ? d.name : d.title);
+  return xml_escaped(d.title.empty() ? d.name : d.title);
 }
 
 std::string driver_text(const LinkageModel& model, double value) {
@@ -116,34 +102,6 @@ std::vector<std::vector<int>> neighbours(const LinkageModel& model) {
     }
   }
   return next;
-}
-
-// A body's outline: the convex hull of its local coordinates (Andrew's monotone chain), as joint
-// indices. The body is rigid and cannot flip, so the same order outlines it in every pose.
-std::vector<int> outline(const mechanisms::BodySpec& body) {
-  std::vector<std::size_t> order(body.joints.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  const auto& p = body.local;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return p[a].x() < p[b].x() || (p[a].x() == p[b].x() && p[a].y() < p[b].y());
-  });
-  auto turn = [&](std::size_t o, std::size_t a, std::size_t b) {
-    const Point u = p[a] - p[o], v = p[b] - p[o];
-    return u.x() * v.y() - u.y() * v.x();
-  };
-  std::vector<std::size_t> hull;
-  for (int pass = 0; pass < 2; ++pass) {  // lower hull left to right, then upper hull right to left
-    const std::size_t base = hull.size();
-    for (const std::size_t k : order) {
-      while (hull.size() >= base + 2 && turn(hull[hull.size() - 2], hull.back(), k) <= 0.0) hull.pop_back();
-      hull.push_back(k);
-    }
-    hull.pop_back();  // the last point starts the other pass
-    std::reverse(order.begin(), order.end());
-  }
-  std::vector<int> joints;
-  for (const std::size_t k : hull) joints.push_back(body.joints[k]);
-  return joints;
 }
 
 // The SMIL values over the frames from `first`, once round and back to `first`.
@@ -171,20 +129,8 @@ std::string slider_guides(const Scene& scene, const Frame& frame) {
   for (const auto& slider : scene.model.description().sliders) {
     const double angle = slider.angle_deg * std::numbers::pi / 180.0;
     const Point u(std::cos(angle), std::sin(angle)), through = slider.through * scene.zoom;
-    const Point low(frame.min_x, frame.min_y), high(frame.max_x, frame.max_y);
-    double from = -std::numeric_limits<double>::infinity(), to = std::numeric_limits<double>::infinity();
-    bool crosses = true;
-    for (int i = 0; i < 2; ++i) {
-      if (std::abs(u[i]) > 1e-12) {
-        const double a = (low[i] - through[i]) / u[i], b = (high[i] - through[i]) / u[i];
-        from = std::max(from, std::min(a, b));
-        to = std::min(to, std::max(a, b));
-      } else if (through[i] < low[i] || through[i] > high[i]) {
-        crosses = false;
-      }
-    }
-    if (!crosses || from > to) continue;
-    const Point a = through + from * u, b = through + to * u;
+    Point a, b;
+    if (!line_across(frame, through, u, a, b)) continue;
     svg += fmt::format("<line class=\"guide\" x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"#888\" "
                        "stroke-width=\"{:.3g}\" stroke-dasharray=\"{:.3g} {:.3g}\"/>\n",
                        a.x(), -a.y(), b.x(), -b.y(), 0.4 * scene.unit, 3 * scene.unit, 1.5 * scene.unit);
@@ -202,12 +148,19 @@ std::vector<double> path_lengths(const Scene& scene) {
   return length;
 }
 
-// Dashed, the path of every moving joint; the longest a little heavier. Returns the longest's name too.
+// Dashed, the path of every moving joint; the longest a little heavier (not counting the crank pin's
+// circle when there is another). Returns the longest's name too.
 std::string joint_paths(const Scene& scene, std::string& longest_name) {
   const std::vector<double> length = path_lengths(scene);
   const auto& moving = scene.model.moving();
-  const int longest = *std::max_element(moving.begin(), moving.end(), [&](int a, int b) { return length[at(a)] < length[at(b)]; });
-  longest_name = escaped(scene.model.description().joints[at(longest)].name);
+  const auto& driver = scene.model.description().driver;
+  std::vector<int> candidates;
+  for (const int j : moving) {
+    if (!(scene.model.crank_driven() && j == driver.joint)) candidates.push_back(j);
+  }
+  if (candidates.empty()) candidates = moving;
+  const int longest = *std::max_element(candidates.begin(), candidates.end(), [&](int a, int b) { return length[at(a)] < length[at(b)]; });
+  longest_name = xml_escaped(scene.model.description().joints[at(longest)].name);
   std::string svg;
   for (const int j : moving) {
     std::string d;
@@ -252,7 +205,7 @@ std::string linkage(const Scene& scene, std::size_t first, double seconds) {
     if (joint.ground) svg += ground_pivot(joint.position * scene.zoom, u);
   }
   for (const auto& body : d.bodies) {
-    const std::vector<int> hull = outline(body);
+    const std::vector<int> hull = body_outline(body);
     const bool driven = crank && std::count(body.joints.begin(), body.joints.end(), d.driver.pivot) > 0 &&
                         std::count(body.joints.begin(), body.joints.end(), d.driver.joint) > 0;
     auto points = [&](const JointPositions& f) {
@@ -296,51 +249,67 @@ std::string linkage(const Scene& scene, std::size_t first, double seconds) {
   for (std::size_t j = 0; j < now.size(); ++j) {
     svg += fmt::format("<circle id=\"joint-{}\" cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3g}\" fill=\"white\" stroke=\"#222\" "
                        "stroke-width=\"{:.3g}\">{}{}</circle>\n",
-                       escaped(d.joints[j].name), now[j].x(), -now[j].y(), 1.6 * u, 0.7 * u,
+                       xml_escaped(d.joints[j].name), now[j].x(), -now[j].y(), 1.6 * u, 0.7 * u,
                        animate(scene, first, seconds, "cx", x_of(static_cast<int>(j))),
                        animate(scene, first, seconds, "cy", y_of(static_cast<int>(j))));
   }
   return svg;
 }
 
-// Each joint's name, on the side away from its links and bodies.
-std::string joint_names(const Scene& scene, const JointPositions& now) {
-  const auto& joints = scene.model.description().joints;
+// Where each joint's name goes: of sixteen directions around the joint, the one farthest (in angle)
+// from everything drawn at it: its links and bodies, its path (along the velocity, both ways), its
+// slider's line, a ground pivot's triangle below it.
+std::vector<Point> label_places(const Scene& scene, const JointPositions& now, const Eigen::VectorXd& velocity) {
+  const auto& d = scene.model.description();
   const auto next = neighbours(scene.model);
-  std::string svg;
+  std::vector<std::vector<Point>> taken(now.size());
   for (std::size_t j = 0; j < now.size(); ++j) {
-    Point away = Point::Zero();
     for (const int n : next[j]) {
-      const Point towards = now[at(n)] - now[j];
-      if (towards.norm() > 0.0) away -= towards.normalized();
+      if ((now[at(n)] - now[j]).norm() > 0.0) taken[j].push_back((now[at(n)] - now[j]).normalized());
     }
-    away = away.norm() > 1e-9 ? away.normalized() : Point(1.0, 1.0).normalized();
-    if (joints[j].ground) away = Point(away.x() >= 0.0 ? 1.0 : -1.0, 0.0);  // beside the pivot's triangle
-    const Point at_label = now[j] + away * 4.5 * scene.unit;
+    if (d.joints[j].ground) taken[j].insert(taken[j].end(), {Point(0.0, -1.0), Point(0.5, -1.0).normalized(), Point(-0.5, -1.0).normalized()});
+  }
+  for (std::size_t k = 0; velocity.size() == scene.model.unknown_count() && k < scene.model.moving().size(); ++k) {
+    const Point v(velocity[static_cast<Eigen::Index>(2 * k)], velocity[static_cast<Eigen::Index>(2 * k + 1)]);
+    if (v.norm() > 0.0) taken[at(scene.model.moving()[k])].insert(taken[at(scene.model.moving()[k])].end(), {v.normalized(), -v.normalized()});
+  }
+  for (const auto& slider : d.sliders) {
+    const double angle = slider.angle_deg * std::numbers::pi / 180.0;
+    const Point u(std::cos(angle), std::sin(angle));
+    taken[at(slider.joint)].insert(taken[at(slider.joint)].end(), {u, -u});
+  }
+  std::vector<Point> places;
+  for (std::size_t j = 0; j < now.size(); ++j) {
+    const Point best = clearest_direction(taken[j]);
+    const bool slider = std::any_of(d.sliders.begin(), d.sliders.end(), [&](const auto& s) { return at(s.joint) == j; });
+    places.push_back(now[j] + best * (slider ? 6.5 : 4.5) * scene.unit);
+  }
+  return places;
+}
+
+constexpr double name_size = 4.5;  // font size of the joints' names, in units
+
+// Each joint's name, centred at its place.
+std::string joint_names(const Scene& scene, const std::vector<Point>& places) {
+  const auto& joints = scene.model.description().joints;
+  std::string svg;
+  for (std::size_t j = 0; j < places.size(); ++j) {
     svg += fmt::format("<text x=\"{:.3f}\" y=\"{:.3f}\" font-size=\"{:.3g}\" fill=\"#222\" text-anchor=\"middle\" "
                        "dominant-baseline=\"central\">{}</text>\n",
-                       at_label.x(), -at_label.y(), 4.5 * scene.unit, escaped(joints[j].name));
+                       places[j].x(), -places[j].y(), name_size * scene.unit, xml_escaped(joints[j].name));
   }
   return svg;
 }
 
-// Caption lines above the drawing, the first larger; the frame is widened to hold them.
-struct Caption {
-  std::vector<std::string> lines;
-  double width(double unit) const {  // ~0.52 em per character in Helvetica
-    double widest = 0.0;
-    for (std::size_t k = 0; k < lines.size(); ++k) {
-      widest = std::max(widest, 0.52 * (k == 0 ? 4.5 : 3.2) * unit * static_cast<double>(lines[k].size()));
-    }
-    return widest;
+// The frame grown to hold every name (about 0.6 em per character, centred).
+void include_names(Frame& frame, const Scene& scene, const std::vector<Point>& places) {
+  const double em = name_size * scene.unit;
+  const auto& joints = scene.model.description().joints;
+  for (std::size_t j = 0; j < places.size(); ++j) {
+    const Point half(0.3 * em * static_cast<double>(joints[j].name.size()), 0.5 * em);
+    include(frame, places[j] - half);
+    include(frame, places[j] + half);
   }
-};
-
-// The frame widened to the right until the caption fits above it.
-Frame widened(Frame frame, const Caption& caption, double unit) {
-  const double missing = caption.width(unit) - (frame.max_x - frame.min_x + 12.0 * unit);
-  if (missing > 0.0) frame.max_x += missing;
-  return frame;
 }
 
 // The slider guides run across the frame and its side and bottom margins (Frame::header's).
@@ -349,29 +318,60 @@ std::string guides_across(const Scene& scene, const Frame& frame) {
   return slider_guides(scene, Frame{frame.min_x - margin, frame.max_x + margin, frame.min_y - margin, frame.max_y});
 }
 
-// The header, the caption, the arrowhead and the drawing, in a frame already widened for the caption.
+// The header, the caption, the arrowhead and the drawing, in a frame fitted to the caption.
 std::string picture(const Scene& scene, const Frame& frame, const Caption& caption, const std::string& drawing) {
   const double u = scene.unit;
   const double width = frame.max_x - frame.min_x + 24.0 * u, height = frame.max_y - frame.min_y + 32.0 * u;
-  std::string svg = frame.header(std::min(900.0, 700.0 * width / height), u);
-  svg += fmt::format("<text x=\"{0:.3f}\" y=\"{1:.3f}\" font-size=\"{2:.3g}\" fill=\"#333\">{3}", frame.min_x,
-                     -frame.max_y - 14.0 * u, 4.5 * u, caption.lines[0]);
-  for (std::size_t k = 1; k < caption.lines.size(); ++k) {
-    svg += fmt::format("<tspan x=\"{:.3f}\" dy=\"{:.3g}\" font-size=\"{:.3g}\">{}</tspan>", frame.min_x, 4.2 * u, 3.2 * u,
-                       caption.lines[k]);
-  }
-  svg += "</text>\n";
+  std::string svg = frame.header(std::min(900.0, 700.0 * width / height), u) + caption.svg(frame);
   svg += fmt::format("<defs><marker id=\"velocity-head\" viewBox=\"0 0 10 10\" refX=\"8\" refY=\"5\" markerWidth=\"4\" "
                      "markerHeight=\"4\" orient=\"auto\"><path d=\"M 0 0 L 10 5 L 0 10 z\" fill=\"{}\"/></marker></defs>\n",
                      arrow_colour);
   return svg + drawing + "</svg>\n";
 }
 
+std::string skipped_line(const Scene& scene, const LinkageSweep& sweep) {
+  return fmt::format("{} of {} poses did not assemble and are skipped", scene.skipped, sweep.poses.size());
+}
+
 std::string paths_caption(const Scene& scene, const std::string& longest) {
-  std::string text = fmt::format("dashed: the joints' paths over {} assembled poses (heavier: {}, the longest)",
-                                 scene.frames.size(), longest);
-  if (scene.skipped > 0) text += fmt::format("; {} poses did not assemble", scene.skipped);
-  return text;
+  return fmt::format("dashed: the joints' paths over {} assembled poses; heavier: {}'s, the longest{}", scene.frames.size(),
+                     longest, scene.model.crank_driven() ? " but the crank pin's" : "");
+}
+
+// Each moving joint's velocity as an arrow from the joint, the longest arrow_share of the frame's
+// larger side; the frame grows to hold the tips and the caption states the scale. A velocity that is
+// missing or not finite (a singular J) is said so, not drawn.
+std::string arrows_at(const Scene& scene, const JointPositions& now, const Eigen::VectorXd& v, Frame& frame,
+                      Caption& caption) {
+  const LinkageModel& model = scene.model;
+  if (v.size() != model.unknown_count() || !v.allFinite()) {
+    caption.lines.push_back("arrows: the velocity at this pose is not finite (J is singular); none drawn");
+    return {};
+  }
+  auto velocity_of = [&](std::size_t k) {
+    return Point(v[static_cast<Eigen::Index>(2 * k)], v[static_cast<Eigen::Index>(2 * k + 1)]);
+  };
+  double fastest = 0.0;
+  for (std::size_t k = 0; k < model.moving().size(); ++k) fastest = std::max(fastest, velocity_of(k).norm());
+  if (fastest == 0.0) {
+    caption.lines.push_back("arrows: every joint is at rest at this pose");
+    return {};
+  }
+  const double scale = arrow_share * larger_side(frame) / scene.zoom / fastest;  // model length per unit of velocity
+  std::string svg;
+  for (std::size_t k = 0; k < model.moving().size(); ++k) {
+    if (velocity_of(k).norm() == 0.0) continue;
+    const Point& from = now[at(model.moving()[k])];
+    const Point to = from + velocity_of(k) * scale * scene.zoom;
+    include(frame, to);
+    svg += fmt::format("<line class=\"velocity\" x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"{}\" "
+                       "stroke-width=\"{:.3g}\" marker-end=\"url(#velocity-head)\"/>\n",
+                       from.x(), -from.y(), to.x(), -to.y(), arrow_colour, 0.7 * scene.unit);
+  }
+  caption.lines.push_back(fmt::format("arrows: velocity per {}; an arrow 1 unit long stands for {:.3g} units per {}",
+                                      model.crank_driven() ? "radian of crank" : "unit of slider travel", 1.0 / scale,
+                                      model.crank_driven() ? "radian" : "unit of travel"));
+  return svg;
 }
 
 }  // namespace
@@ -391,44 +391,19 @@ std::string linkage_pose_svg(const mechanisms::LinkageModel& model, const mechan
   Frame frame = frame_of(points);
 
   std::string longest;
-  Caption caption{{fmt::format("{} at {}", title_of(model), driver_text(model, sweep.poses[pose].driver))}};
+  Caption caption{{fmt::format("{} at {}", title_of(model), driver_text(model, sweep.poses[pose].driver))}, scene.unit};
   std::string drawing = joint_paths(scene, longest);
   caption.lines.push_back(paths_caption(scene, longest));
+  if (scene.skipped > 0) caption.lines.push_back(skipped_line(scene, sweep));
 
-  std::string arrows;
-  if (velocity_arrows) {
-    // The longest arrow is arrow_share of the frame's larger side (in model units: / zoom).
-    const Eigen::VectorXd& v = sweep.poses[pose].velocity;
-    double fastest = 0.0;
-    for (Eigen::Index k = 0; k + 1 < v.size(); k += 2) fastest = std::max(fastest, std::hypot(v[k], v[k + 1]));
-    if (fastest > 0.0 && std::isfinite(fastest)) {
-      const double scale = arrow_share * larger_side(frame) / scene.zoom / fastest;  // model length per unit of velocity
-      std::vector<Point> tips;
-      for (std::size_t k = 0; k < model.moving().size(); ++k) {
-        const Point velocity(v[static_cast<Eigen::Index>(2 * k)], v[static_cast<Eigen::Index>(2 * k + 1)]);
-        if (velocity.norm() == 0.0) continue;
-        const Point& from = now[at(model.moving()[k])];
-        const Point to = from + velocity * scale * scene.zoom;
-        tips.push_back(to);
-        arrows += fmt::format("<line class=\"velocity\" x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"{}\" "
-                              "stroke-width=\"{:.3g}\" marker-end=\"url(#velocity-head)\"/>\n",
-                              from.x(), -from.y(), to.x(), -to.y(), arrow_colour, 0.7 * scene.unit);
-      }
-      for (const Point& p : tips) {
-        frame.min_x = std::min(frame.min_x, p.x());
-        frame.max_x = std::max(frame.max_x, p.x());
-        frame.min_y = std::min(frame.min_y, p.y());
-        frame.max_y = std::max(frame.max_y, p.y());
-      }
-      caption.lines.push_back(fmt::format("arrows: velocity per {}; an arrow 1 unit long stands for {:.3g} units per {}",
-                                          model.crank_driven() ? "radian of crank" : "unit of slider travel", 1.0 / scale,
-                                          model.crank_driven() ? "radian" : "unit of travel"));
-    }
-  }
-  frame = widened(frame, caption, scene.unit);
+  const Eigen::VectorXd& velocity = sweep.poses[pose].velocity;
+  const std::string arrows = velocity_arrows ? arrows_at(scene, now, velocity, frame, caption) : std::string();
+  const std::vector<Point> places = label_places(scene, now, velocity);
+  include_names(frame, scene, places);
+  frame = caption.fitted(frame);
   drawing = guides_across(scene, frame) + drawing + linkage(scene, first, 0.0);
-  // Arrows over the bars, under the joints' circles would hide their tails: drawn last, then names.
-  drawing += arrows + joint_names(scene, now);
+  // The arrows over everything (a joint's circle would hide an arrow's tail), then the names.
+  drawing += arrows + joint_names(scene, places);
   return picture(scene, frame, caption, drawing);
 }
 
@@ -441,14 +416,13 @@ std::string linkage_animation_svg(const mechanisms::LinkageModel& model, const m
   const auto& first = sweep.poses[scene.sweep_index.front()], &last = sweep.poses[scene.sweep_index.back()];
   Caption caption{{fmt::format("{}, {} poses from {} to {}", title_of(model), scene.frames.size(),
                                driver_text(model, first.driver), model.crank_driven() ? fmt::format("{:g} deg", last.driver)
-                                                                                      : fmt::format("{:g}", last.driver))}};
+                                                                                      : fmt::format("{:g}", last.driver))},
+                  scene.unit};
   std::string longest;
   std::string drawing = joint_paths(scene, longest);
   caption.lines.push_back(paths_caption(scene, longest));
-  caption.lines.push_back(scene.skipped > 0
-                              ? fmt::format("{} of {} poses did not assemble and are skipped", scene.skipped, sweep.poses.size())
-                              : std::string("every pose of the sweep assembled"));
-  frame = widened(frame, caption, scene.unit);
+  caption.lines.push_back(scene.skipped > 0 ? skipped_line(scene, sweep) : std::string("every pose of the sweep assembled"));
+  frame = caption.fitted(frame);
   drawing = guides_across(scene, frame) + drawing + linkage(scene, 0, seconds);
   return picture(scene, frame, caption, drawing);
 }
