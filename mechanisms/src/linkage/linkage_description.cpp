@@ -213,9 +213,9 @@ class Reader {
   // The joint a string names; it must exist.
   int joint_of(const toml::node& node, const std::string& what) const {
     const std::string_view name = string_of(node, what);
-    const int index = description_.joint_index(name);
-    if (index < 0) fail(place_of(node), "unknown joint " + quoted(name));
-    return index;
+    const auto found = joint_indices_.find(name);
+    if (found == joint_indices_.end()) fail(place_of(node), "unknown joint " + quoted(name));
+    return found->second;
   }
 
   // Each table of the array of tables [[key]], if there is one.
@@ -296,12 +296,13 @@ class Reader {
         fail(place, "invalid joint name " + quoted(name) + ": use 1 to " + std::to_string(max_joint_name) +
                         " letters, digits or '_'");
       }
-      if (const int other = description_.joint_index(name); other >= 0) {
+      if (const auto other = joint_indices_.find(name); other != joint_indices_.end()) {
         fail(place, "joint " + quoted(name) + " is already defined at line " +
-                        std::to_string(description_.joints[static_cast<std::size_t>(other)].place.line));
+                        std::to_string(description_.joints[static_cast<std::size_t>(other->second)].place.line));
       }
       if (description_.joints.size() == max_joints) fail(place, "more than " + std::to_string(max_joints) + " joints");
       const Eigen::Vector2d position = point_of(*value, "the position of joint " + quoted(name));
+      joint_indices_.emplace(name, static_cast<int>(description_.joints.size()));
       description_.joints.push_back({std::string(name), ground, position, place});
     }
   }
@@ -352,12 +353,14 @@ class Reader {
       fail(place_of(joints_node), "a body needs at least 3 joints, got " + std::to_string(joints->size()) +
                                       " (two joints make a [[link]])");
     }
+    std::vector<bool> in_body(description_.joints.size(), false);
     for (const toml::node& item : *joints) {
       const int joint = joint_of(item, "a body's joint");
-      if (std::find(spec.joints.begin(), spec.joints.end(), joint) != spec.joints.end()) {
+      if (in_body[static_cast<std::size_t>(joint)]) {
         fail(place_of(item), "joint " + quoted(description_.joints[static_cast<std::size_t>(joint)].name) +
                                  " appears twice in the body");
       }
+      in_body[static_cast<std::size_t>(joint)] = true;
       spec.joints.push_back(joint);
     }
     const toml::node& local_node = required(body, "local", "[[body]]");
@@ -493,6 +496,7 @@ class Reader {
   const toml::table& root_;
   const std::string& file_;
   LinkageDescription description_;
+  std::map<std::string, int, std::less<>> joint_indices_;  // joint name -> index
   std::map<std::pair<int, int>, int> link_lines_;  // joint pair (smaller index first) -> line of its link
 };
 
