@@ -22,25 +22,6 @@ inline const std::vector<std::string>& shipped_model_names() {
   return names;
 }
 
-// GSL's derivative-free types estimate the Jacobian by forward differences with the step
-// sqrt(eps) |x_j| (sqrt(eps) only where x_j is exactly 0). A converged pose can hold a coordinate
-// like 1e-23 where the exact value is 0 (a crank tip on an axis): its step is then ~1e-31, the
-// column is noise, and GSL reports "singularity or extremely bad function behavior" (numlab:
-// singular) at the next pose. The tests run these types separately and check only that whatever
-// they call converged is right.
-inline bool finite_difference_gsl_type(const std::string& solver) {
-  return solver == "gsl-hybrids" || solver == "gsl-hybrid" || solver == "gsl-dnewton" || solver == "gsl-broyden";
-}
-
-// linkage_solver_names() with or without those four.
-inline std::vector<std::string> solver_names(bool finite_difference_types) {
-  std::vector<std::string> out;
-  for (const auto& name : linkage_solver_names()) {
-    if (finite_difference_gsl_type(name) == finite_difference_types) out.push_back(name);
-  }
-  return out;
-}
-
 inline std::string model_path(const std::string& name) { return std::string(NUMLAB_MODELS_DIR) + "/" + name + ".toml"; }
 
 inline LinkageModel model_file(const std::string& name) { return LinkageModel(read_linkage_description(model_path(name))); }

@@ -61,7 +61,7 @@ TEST_CASE("jansen.toml reproduces the hand-coded leg to 1e-9 at every degree wit
   };
   std::vector<Run> runs;
   for (const std::string linear : {"gepp", "gauss-seidel", "gsl-lu", "eigen-lu"}) runs.push_back({"full", linear});
-  for (const std::string& solver : solver_names(false)) {
+  for (const std::string& solver : linkage_solver_names()) {
     if (solver != "full") runs.push_back({solver, "gepp"});
   }
   for (const Run& run : runs) {
@@ -75,34 +75,5 @@ TEST_CASE("jansen.toml reproduces the hand-coded leg to 1e-9 at every degree wit
     CHECK(sweep.status == numlab::Status::converged);
     CHECK(sweep.branch_kept);
     if (sweep.status == numlab::Status::converged) CHECK(worst_joint_distance(model, sweep) < 1e-9);
-  }
-}
-
-TEST_CASE("jansen.toml with GSL's finite-difference types: what they call converged is the hand-coded leg",
-          "[linkage-models]") {
-  // These types stop at a pose whose crank tip has x = 1e-16-ish (model_files.hpp says why); every
-  // pose they do solve must still be right, and a stop must be a named failure.
-  const LinkageModel model = model_file("jansen");
-  const JansenLeg leg;
-  for (const std::string& solver : solver_names(true)) {
-    LinkageSolverOptions options{solver, "gepp", {}};
-    options.newton.residual_tolerance = 1e-11;
-    options.newton.max_iterations = 50;
-    const LinkageSweep sweep = linkage_sweep(LinkageSolver(model, options), 0.0, 359.0, 1.0);
-    int converged = 0;
-    for (const LinkagePose& pose : sweep.poses) {
-      if (pose.outcome.status != numlab::Status::converged) {
-        CHECK(pose.outcome.reason != numlab::nonlinear::StopReason::residual_small);
-        continue;
-      }
-      ++converged;
-      const auto reference = leg.closed_form_joints(pose.driver * deg);
-      REQUIRE(reference.has_value());
-      for (int k = 0; k < jansen_joint_count; ++k) {
-        const auto name = jansen_joint_names[static_cast<std::size_t>(k)];
-        CHECK((joint_at(model, pose.q, name) - (*reference)[static_cast<std::size_t>(k)]).norm() < 1e-9);
-      }
-    }
-    WARN(solver << ": " << converged << " of 360 poses converged, sweep status " << static_cast<int>(sweep.status));
   }
 }

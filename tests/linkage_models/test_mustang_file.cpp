@@ -11,6 +11,8 @@
 // its reference moved to 0 deg below it.
 #include <catch2/catch.hpp>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 
@@ -65,19 +67,6 @@ double kite_crossing() {
   return bisect(40.0, 45.0, 1e-9, [&](double t) { return side(t) == below; });
 }
 
-// The file with its reference pose at `theta_deg`: the driver there and the rough positions where
-// the hand-coded closed form puts the joints (on the seed's branch).
-LinkageModel file_with_reference_at(double theta_deg) {
-  LinkageDescription d = read_linkage_description(model_path("mustang"));
-  const MustangJoints p = hand_coded.closed_form(theta_deg * deg).joints;
-  for (int k = 0; k < mustang_joint_count; ++k) {
-    d.joints[static_cast<std::size_t>(d.joint_index(mustang_joint_names[static_cast<std::size_t>(k)]))].position =
-        p[static_cast<std::size_t>(k)];
-  }
-  d.driver.reference = theta_deg;
-  return LinkageModel(d);
-}
-
 LinkageSolverOptions tight(const std::string& solver, const LinkageModel& model, double worst_inverse) {
   LinkageSolverOptions options{solver, "gepp", {}};
   options.newton.residual_tolerance = residual_tolerance_for(1e-9, worst_inverse, model.unknown_count());
@@ -101,38 +90,28 @@ TEST_CASE("The hand-coded Mustang assembles on [-41.4257, 56.4540] deg: -41.42 a
   CHECK(std::abs(upper - 56.45) <= 0.01);
 }
 
-TEST_CASE("mustang.toml reproduces the hand-coded joints to 1e-9 on both sides of the kite's crossing",
+TEST_CASE("mustang.toml reproduces the hand-coded joints to 1e-9 over its range, through the kite's change point",
           "[linkage-models]") {
   const double crossing = kite_crossing();
   const double lower = bisect(0.0, -60.0, 1e-9, assembles), upper = bisect(45.0, 70.0, 1e-9, assembles);
   CHECK(std::abs(crossing - 43.15) < 0.01);  // mustang_linkage.hpp's "near theta = 43.15 deg"
-  // Above theta*: the file as shipped (reference 45 deg). Below: the reference moved to 0 deg.
-  // The closed form keeps its side up to the crossing; Newton (sequential, GSL) from the pose
-  // before can land on the other circle intersection within ~0.25 deg of it, where the two are
-  // closer than Newton's first step, so the Newton solvers start 1 deg away.
-  struct Part {
-    double reference, start, stop, margin;
-  };
-  const Part parts[] = {{45.0, crossing, std::floor(upper * 4.0) / 4.0, 1.0},
-                        {0.0, std::ceil(lower * 4.0) / 4.0, crossing, -1.0}};
-  for (const Part& part : parts) {
-    const LinkageModel model = part.reference == 45.0 ? model_file("mustang") : file_with_reference_at(part.reference);
-    for (const std::string solver : {"analytic", "sequential", "full", "gsl-hybridsj", "gsl-newton"}) {
-      // Whole quarter degrees from the crossing (or 1 deg beyond it) to the limit.
-      const double near_end = part.reference == 45.0 ? std::ceil((part.start + (solver == "analytic" ? 0.0 : part.margin)) * 4.0) / 4.0
-                                                     : std::floor((part.stop + (solver == "analytic" ? 0.0 : part.margin)) * 4.0) / 4.0;
-      const double from = part.reference == 45.0 ? near_end : part.start;
-      const double to = part.reference == 45.0 ? part.stop : near_end;
-      const LinkageSweep exact = linkage_sweep(LinkageSolver(model, {"analytic", "gepp", {}}), from, to, 0.25);
-      REQUIRE(exact.status == Status::converged);
-      const double worst_inverse = worst_inverse_norm(model, exact);
-      const LinkageSweep sweep = linkage_sweep(LinkageSolver(model, tight(solver, model, worst_inverse)), from, to, 0.25);
-      INFO(solver << " from the reference at " << part.reference << " deg, over [" << from << ", " << to
-                  << "], max ||J^-1|| = " << worst_inverse);
-      REQUIRE(sweep.status == Status::converged);
-      CHECK(sweep.branch_kept);
-      CHECK(worst_joint_distance(model, sweep) < 1e-9);
-    }
+  // The shipped file's reference is 0 deg. Whole quarter degrees over the range: every solver
+  // continues by prediction through the kite's change point (loop 4's two solutions meet there),
+  // stays on the open kite, and reports the change point where the hand-coded model finds it.
+  const LinkageModel model = model_file("mustang");
+  const double from = std::ceil(lower * 4.0) / 4.0, to = std::floor(upper * 4.0) / 4.0;
+  const LinkageSweep exact = linkage_sweep(LinkageSolver(model, {"analytic", "gepp", {}}), from, to, 0.25);
+  REQUIRE(exact.status == Status::converged);
+  const double worst_inverse = worst_inverse_norm(model, exact);
+  for (const std::string solver : {"analytic", "sequential", "full", "gsl-hybridsj", "gsl-newton"}) {
+    const LinkageSweep sweep = linkage_sweep(LinkageSolver(model, tight(solver, model, worst_inverse)), from, to, 0.25);
+    INFO(solver << " over [" << from << ", " << to << "], max ||J^-1|| = " << worst_inverse);
+    REQUIRE(sweep.status == Status::converged);
+    CHECK(sweep.branch_kept);
+    CHECK(sweep.flips.empty());
+    REQUIRE(sweep.change_points.size() == 1);
+    CHECK(sweep.change_points[0].find(fmt::format("at {:.2f}", crossing)) != std::string::npos);
+    CHECK(worst_joint_distance(model, sweep) < 1e-9);
   }
 }
 
@@ -150,9 +129,8 @@ TEST_CASE("mustang.toml's assembly limits, found by bisection, are the hand-code
   CHECK(std::abs(hand.lower.last_assembled_deg - lower) <= 0.01);
   CHECK(std::abs(hand.upper.last_assembled_deg - upper) <= 0.01);
 
-  // Each limit from a sweep that starts on its side of the kite's crossing (43.15 deg), with the
-  // reference pose there: upwards from 44 deg (the file), downwards from 42 deg (reference 0 deg).
-  const LinkageModel above = model_file("mustang"), below = file_with_reference_at(0.0);
+  // Each limit from a sweep that starts inside the range and runs past it, both from the shipped file.
+  const LinkageModel above = model_file("mustang"), below = model_file("mustang");
   const std::array<std::string, 4> loop_joint = {"P3", "P5", "P10", "P11"};  // the dyad of loop k
   for (const std::string solver : {"analytic", "sequential", "full"}) {
     struct Leg {

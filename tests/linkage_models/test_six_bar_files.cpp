@@ -82,7 +82,7 @@ void check_solvers_agree(const LinkageModel& model, const std::vector<std::strin
 // Every solver but analytic and GSL's finite-difference types (model_files.hpp).
 std::vector<std::string> every_solver_but_analytic() {
   std::vector<std::string> out;
-  for (const auto& name : solver_names(false)) {
+  for (const auto& name : linkage_solver_names()) {
     if (name != "analytic") out.push_back(name);
   }
   return out;

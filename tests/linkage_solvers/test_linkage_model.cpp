@@ -153,8 +153,8 @@ TEST_CASE("Velocities and accelerations from the Jacobian agree with finite diff
     REQUIRE(check.solved);
     // Central difference, h = 1e-5: truncation h^2 |q'''| / 6 and rounding eps |q| / h, both < 1e-9.
     CHECK(check.velocity_difference < 1e-8 * std::max(1.0, check.velocity_scale));
-    // 7-point stencil, h = 0.05: rounding 1088 dq / (180 h^2) ~ 2400 dq, with the positions solved to
-    // dq ~ kappa(J) 64 eps |q| ~ 1e-11 (kappa <= 1e2): ~3e-8; truncation h^6 |q^(8)| / 560 is smaller.
+    // 7-point stencil, h = 0.01: rounding 1088 dq / (180 h^2) ~ 6e4 dq, with every position solved
+    // again to dq ~ kappa(J) 64 eps |q| ~ 1e-12 (kappa <= 4): ~6e-8; truncation h^6 |q^(8)| / 560 ~ 1e-15.
     CHECK(check.acceleration_difference < 1e-7 * std::max(1.0, check.acceleration_scale));
   }
 }

@@ -125,10 +125,39 @@ LinkageSolution LinkageSolver::solve_full(double t, const Eigen::VectorXd& q0) c
   return {std::move(result.x), static_cast<nonlinear::NewtonCounts>(result), -1};
 }
 
+namespace {
+
+// The system in shifted unknowns z = q + shift, for GSL's types that estimate J themselves. GSL's finite-difference Jacobian steps by
+// sqrt(eps) |z_j|, which is ~1e-31 for a coordinate that is zero up to rounding (a joint on an
+// axis: 4.7e-23); with every z_j >= 1 the step is sane. The residuals, and so the stop tests, are
+// those of q.
+class ShiftedSystem final : public nonlinear::DynamicSystem {
+ public:
+  ShiftedSystem(const LinkageSystem& system, Eigen::VectorXd shift) : system_(system), shift_(std::move(shift)) {}
+  int dimension() const override { return system_.dimension(); }
+  void residual(const Eigen::VectorXd& z, Eigen::VectorXd& f) const override { system_.residual(z - shift_, f); }
+  void jacobian(const Eigen::VectorXd& z, Eigen::MatrixXd& J) const override { system_.jacobian(z - shift_, J); }
+
+ private:
+  const LinkageSystem& system_;
+  Eigen::VectorXd shift_;
+};
+
+}  // namespace
+
 LinkageSolution LinkageSolver::solve_gsl(double t, const Eigen::VectorXd& q0) const {
   const LinkageSystem system(model_, t);
-  auto result = nonlinear::gsl_multiroot_solve(system, q0, options_.solver.substr(4), options_.newton);
-  return {std::move(result.x), static_cast<nonlinear::NewtonCounts>(result), -1};
+  const std::string type = options_.solver.substr(4);
+  const bool finite_differences = type == "hybrids" || type == "hybrid" || type == "dnewton" || type == "broyden";
+  if (!finite_differences) {  // the types given J need no shift (and its size would loosen their step test)
+    auto result = nonlinear::gsl_multiroot_solve(system, q0, type, options_.newton);
+    return {std::move(result.x), static_cast<nonlinear::NewtonCounts>(result), -1};
+  }
+  const double size = q0.size() == 0 ? 0.0 : q0.lpNorm<Eigen::Infinity>();
+  const Eigen::VectorXd shift = Eigen::VectorXd::Constant(q0.size(), 2.0 * (1.0 + size));
+  const ShiftedSystem shifted(system, shift);
+  auto result = nonlinear::gsl_multiroot_solve(shifted, q0 + shift, type, options_.newton);
+  return {Eigen::VectorXd(result.x - shift), static_cast<nonlinear::NewtonCounts>(result), -1};
 }
 
 // The blocks in order, each by Newton with every other unknown held: the 2x2 closed-form inverse

@@ -170,8 +170,11 @@ LinkageLimit bisect_limit(const LinkageSolver& solver, double good, Eigen::Vecto
 double change_point(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t1) {
   if (!solver.blocks()[b].dyad()) return std::numeric_limits<double>::quiet_NaN();
   const auto margin_at = [&](double t) {
+    // The margin reads only the dyad's centres, which the blocks before it placed: it is defined even
+    // where rounding makes this dyad itself fail at the meeting point.
     const LinkageSolution closed = solver.closed_form(t, predicted(solver.model(), t0, q0, t));
-    return closed.failed_block >= 0 ? -1.0 : solver.dyad_margins(closed.q)[b];
+    const bool earlier_failed = closed.failed_block >= 0 && closed.failed_block < static_cast<int>(b);
+    return earlier_failed ? -1.0 : solver.dyad_margins(closed.q)[b];
   };
   constexpr double golden = 0.6180339887498949;
   double a = t0, c = t1;
@@ -183,7 +186,8 @@ double change_point(const LinkageSolver& solver, std::size_t b, double t0, const
   const double meet = 0.5 * (a + c);
   const double margin = margin_at(meet);
   const double scale = std::max(1.0, q0.size() == 0 ? 0.0 : q0.lpNorm<Eigen::Infinity>());
-  return margin >= 0.0 && margin <= 1e-6 * scale ? meet : std::numeric_limits<double>::quiet_NaN();
+  // Zero to rounding (a little below zero is rounding too), and no further below: below is a limit.
+  return margin >= -1e-12 * scale && margin <= 1e-6 * scale ? meet : std::numeric_limits<double>::quiet_NaN();
 }
 
 LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
@@ -293,7 +297,7 @@ DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const E
   check.velocity_scale = velocity.size() == 0 ? 0.0 : velocity.lpNorm<Eigen::Infinity>();
   check.acceleration_scale = acceleration.size() == 0 ? 0.0 : acceleration.lpNorm<Eigen::Infinity>();
   // Central difference for the velocity, h ~ cbrt(eps); the 7-point stencil for the acceleration.
-  const double h1 = 1e-5, h2 = 5e-2;
+  const double h1 = 1e-5, h2 = 1e-2;
   const auto p1 = solve_at(t + h1), m1 = solve_at(t - h1);
   std::array<std::optional<Eigen::VectorXd>, 7> s;
   for (int k = -3; k <= 3; ++k) s[static_cast<std::size_t>(k + 3)] = k == 0 ? q : solve_at(t + k * h2);

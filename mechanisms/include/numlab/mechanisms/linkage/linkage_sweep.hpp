@@ -80,7 +80,7 @@ inline double linkage_condition(const LinkageModel& model, double t, const Eigen
 
 // The largest differences between the velocity and acceleration from the Jacobian and those from
 // finite differences of positions solved at t +- k h (central, 2nd order, h = 1e-5 for the velocity;
-// the 7-point stencil, 6th order, h = 0.05 for the acceleration). Every position, the pose's own
+// the 7-point stencil, 6th order, h = 0.01 for the acceleration). Every position, the pose's own
 // included, is solved again from q_near by Newton to 64 eps |q|.
 struct DerivativeCheck {
   double velocity_difference = 0.0;
