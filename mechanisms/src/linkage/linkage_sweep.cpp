@@ -211,6 +211,10 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   double last_good_t = converged(at) ? t_start : reference;
   bool have_good = converged(at);
   std::vector<int> last_signature = solver.reference_signature();
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const Constraint& c : model.constraints()) {
+    if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) shortest = std::min(shortest, c.length);
+  }
   bool have_signature = true;
   // 2. Each pose from the one before; a failed pose is retried from the last good one by halving.
   for (std::size_t k = 0; k < count; ++k) {
@@ -231,7 +235,10 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
         sweep.limits.push_back(limit);
       }
     }
-    if (ok && !(pose.closed_form_distance <= pose.closed_form_bound) && !std::isnan(pose.closed_form_distance)) {
+    // The rule of closed_form_bound.hpp: within the bound, and the bound below half the shortest
+    // length (beyond it the residual justifies nothing: another branch is about a link away).
+    if (ok && !std::isnan(pose.closed_form_distance) &&
+        !(pose.closed_form_distance <= pose.closed_form_bound && pose.closed_form_bound < 0.5 * shortest)) {
       sweep.closed_form_verified = false;
     }
     if (ok) {

@@ -47,7 +47,8 @@ struct LinkageSweep {
   std::vector<LinkagePose> poses;
   Status status = Status::converged;  // converged when every pose did; else the first failure's
   bool branch_kept = true;            // no block's signature changed between poses but at change points
-  bool closed_form_verified = true;   // every converged pose within its closed-form bound (when there is one)
+  bool closed_form_verified = true;   // every converged pose within its closed-form bound, and that bound
+                                      // below half the shortest length (when there is a closed form)
   std::vector<std::string> flips;     // a block that jumped to another branch between two poses
   std::vector<std::string> change_points;  // a dyad that passed a change point (reported, not a flip)
   std::vector<LinkageLimit> limits;
