@@ -25,9 +25,7 @@ std::string driver_column(const LinkageModel& model) { return model.crank_driven
 
 bool converged(const LinkagePose& pose) { return pose.outcome.status == Status::converged; }
 
-bool kept(const LinkageSolver& solver, const LinkagePose& pose) {
-  return converged(pose) && pose.signature == solver.reference_signature();
-}
+bool kept(const LinkageSolver&, const LinkagePose& pose) { return pose.branch_kept; }
 
 // Every joint's position, velocity, acceleration at a pose (ground joints: fixed, zero).
 struct JointMotion {
@@ -153,7 +151,7 @@ void print_explanation(std::ostream& out, const LinkageModel& model, Format form
       << fmt::format("mobility           {} (Gruebler-Kutzbach {})\n", mobility.mobility, mobility.formula())
       << fmt::format("formulation        joint coordinates, the x and y of every moving joint; one equation per link,\n"
                      "                   for each body one plus two per further joint, one per slider, two for the driver\n")
-      << fmt::format("unknowns ({})       {}\n", unknowns.size(), fmt::join(unknowns, " "))
+      << fmt::format("{:<19}{}\n", fmt::format("unknowns ({})", unknowns.size()), fmt::join(unknowns, " "))
       << fmt::format("equations ({})\n", equations.size());
   for (std::size_t r = 0; r < equations.size(); ++r) {
     out << fmt::format("  {:>3}  {}  {}\n", r + 1, sparsity[r], equations[r]);
@@ -163,7 +161,7 @@ void print_explanation(std::ostream& out, const LinkageModel& model, Format form
   out << fmt::format("closed form        {} of {} blocks; {}\n", static_cast<long>(blocks.size()) - newton_blocks,
                      blocks.size(),
                      newton_blocks == 0 ? "every block is a dyad or explicit: --solver analytic applies"
-                                        : fmt::format("{} need Newton: --solver analytic does not apply", newton_blocks));
+                                        : fmt::format("{} need{} Newton: --solver analytic does not apply", newton_blocks, newton_blocks == 1 ? "s" : ""));
 }
 
 nlohmann::ordered_json pose_trace_json(const LinkagePose& pose) {
@@ -305,11 +303,11 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
   }
   if (std::isfinite(low)) out << fmt::format("kappa(J)           {:.3g} .. {:.3g} (largest at {:g})\n", low, high, at);
   for (std::size_t b : dyads(r.solver)) out << "transmission       " << transmission_summary(r, b) << '\n';
-  out << fmt::format("derivatives        at {} poses, against finite differences of positions: velocity {:.1e}, "
+  out << fmt::format("derivatives        at {} pose{}, against finite differences of positions: velocity {:.1e}, "
                      "acceleration {:.1e} (relative)\n",
-                     r.derivatives.poses, r.derivatives.velocity, r.derivatives.acceleration);
+                     r.derivatives.poses, r.derivatives.poses == 1 ? "" : "s", r.derivatives.velocity, r.derivatives.acceleration);
   if (r.jacobian) {
-    out << fmt::format("jacobian           exact J against finite differences at {} poses: worst relative error "
+    out << fmt::format("jacobian           exact J against finite differences at {} solved poses: worst relative error "
                        "{:.1e} at {:g}: {}\n",
                        r.jacobian->poses, r.jacobian->worst.worst_error, r.jacobian->driver,
                        r.jacobian->worst.agrees ? "agrees" : "DISAGREES " + nonlinear::describe_worst_entry(r.jacobian->worst));

@@ -186,7 +186,7 @@ int MechanismCommand::run() const {
   const CommonOptions common = checked_common_options(common_, "mechanism");
   const std::string file = built_in(name_) ? std::string() : linkage_file_for(name_);
   if (!built_in(name_) && file.empty()) {
-    throw std::invalid_argument("mechanism " + printable(std::string_view(name_).substr(0, 40)) + (name_.size() > 40 ? "..." : "") +
+    throw std::invalid_argument("mechanism name '" + printable(std::string_view(name_).substr(0, 40)) + (name_.size() > 40 ? "...'" : "'") +
                                 ": not jansen, jansen10, mustang, a shipped model (numlab models) or a file");
   }
   const bool from_file = !file.empty();

@@ -39,19 +39,26 @@ LinkageSolution continue_to(const LinkageSolver& solver, double from, double to,
   double at = from;
   double step = std::abs(to - at) <= longest ? to - at : std::copysign(longest, to - at);
   int halved = 0;
+  if (from == to) return solver.solve(to, q);  // measured, never assumed
+  int iterations = 0;  // over every sub-step
   while (at != to) {
     const double next = std::abs(to - at) <= std::abs(step) ? to : at + step;
     LinkageSolution trial = solver.solve(next, predicted(solver.model(), at, last.q, next));
+    iterations += trial.outcome.iterations;
     if (converged(trial)) {
       last = std::move(trial);
       at = next;
       continue;
     }
-    if (halved == max_halvings) return trial;
+    if (halved == max_halvings) {
+      trial.outcome.iterations = iterations;
+      return trial;
+    }
     step /= 2.0;
     ++halved;
   }
   if (halvings != nullptr) *halvings = halved;
+  last.outcome.iterations = iterations;
   return last;
 }
 
@@ -90,10 +97,10 @@ LinkageConditioning linkage_conditioning(const LinkageModel& model, double t, co
 
 namespace {
 
-LinkagePose make_pose(const LinkageSolver& solver, double t, LinkageSolution solution) {
+LinkagePose make_pose(const LinkageSolver& solver, double user, double t, LinkageSolution solution) {
   const LinkageModel& model = solver.model();
   LinkagePose pose;
-  pose.driver = model.driver_to_user(t);
+  pose.driver = user;
   pose.q = std::move(solution.q);
   pose.outcome = solution.outcome;
   pose.failed_block = solution.failed_block;
@@ -221,8 +228,10 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
     const double user = start + static_cast<double>(k) * step;
     const double t = model.driver_from_user(user);
     int halvings = 0;
-    LinkageSolution solution = k == 0 && have_good ? at : continue_to(solver, last_good_t, t, last_good, std::abs(t - last_good_t), &halvings);
-    LinkagePose pose = make_pose(solver, t, std::move(solution));
+    // Sub-steps no longer than the walk's, each from the predictor: a coarse sweep still follows
+    // its branch through a change point between two of its poses.
+    LinkageSolution solution = k == 0 && have_good ? at : continue_to(solver, last_good_t, t, last_good, longest, &halvings);
+    LinkagePose pose = make_pose(solver, user, t, std::move(solution));
     pose.step_halvings = halvings;
     const bool ok = pose.outcome.status == Status::converged;
     // 3. A change between assembling and not is a limit, bracketed and named.
@@ -267,6 +276,7 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
       }
       last_signature = pose.signature;
       have_signature = true;
+      pose.branch_kept = sweep.branch_kept;
       last_good = pose.q;
       last_good_t = t;
       have_good = true;

@@ -32,6 +32,7 @@ struct LinkagePose {
   std::vector<int> signature;         // per block (LinkageSolver::signature)
   std::vector<double> transmission_deg;  // per block, NaN for non-dyads
   int step_halvings = 0;              // continuation steps halved to reach this pose
+  bool branch_kept = false;           // converged, and no jump to another branch up to here
 };
 
 // Where the linkage stops assembling between two poses of the sweep.
