@@ -116,6 +116,7 @@ const std::vector<CommonFlagUse>& common_flag_table() {
       {"exercise check", true, false, false, false, false, false, true},
       {"basins", true, true, false, false, false, true, true},
       {"bench basins", true, false, false, false, false, false, false},
+      {"models", true, false, false, false, false, false, false},
   };
   return table;
 }

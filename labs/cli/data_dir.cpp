@@ -49,4 +49,8 @@ std::string examples_dir() {
   return find_data_dir("examples", "gepp_solution.py", NUMLAB_SOURCE_EXAMPLES_DIR, "the example solutions");
 }
 
+std::string models_dir() {
+  return find_data_dir("models", "four-bar.toml", NUMLAB_SOURCE_MODELS_DIR, "the shipped linkage models");
+}
+
 }  // namespace numlab::cli

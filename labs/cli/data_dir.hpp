@@ -18,4 +18,10 @@ std::string nist_data_dir();
 // Throws std::invalid_argument, listing the places looked in, when none holds gepp_solution.py.
 std::string examples_dir();
 
+// The folder of the linkage models shipped as description files (`numlab models`, `numlab mechanism
+// four-bar`), looked up the same way: $NUMLAB_DATA_DIR/models, PREFIX/share/numlab/models, the
+// source tree's mechanisms/models. Throws std::invalid_argument, listing the places looked in, when
+// none holds four-bar.toml.
+std::string models_dir();
+
 }  // namespace numlab::cli

@@ -14,6 +14,7 @@
 #include "commands/fit_command.hpp"
 #include "commands/labs_command.hpp"
 #include "commands/mechanism_command.hpp"
+#include "commands/models_command.hpp"
 #include "commands/solve_linear.hpp"
 #include "commands/solve_nonlinear.hpp"
 #include "numlab/printable_text.hpp"
@@ -72,6 +73,7 @@ int main(int argc, char** argv) {
   const FitCommand fit(app);
   const ExerciseCommand exercise(app);
   const BasinsCommand basins(app);
+  const ModelsCommand models(app);
 
   try {
     app.parse(argc, argv);
@@ -94,6 +96,7 @@ int main(int argc, char** argv) {
     if (fit.selected()) return fit.run();
     if (exercise.selected()) return exercise.run();
     if (basins.selected()) return basins.run();
+    if (models.selected()) return models.run();
     return run_main_job();
   } catch (const StoppedByUser& stopped) {
     std::cerr << "numlab: " << stopped.what() << '\n';

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -17,7 +18,10 @@
 #include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "scenes/jansen_scene.hpp"
+#include "commands/linkage_command.hpp"
 #include "commands/mustang_command.hpp"
+#include "numlab/mechanisms/linkage/linkage_solver.hpp"
+#include "numlab/printable_text.hpp"
 #include "commands/sweep_tracer.hpp"
 #include "output/table.hpp"
 
@@ -147,27 +151,50 @@ SweepRange parse_sweep(const std::string& text) {
 
 MechanismCommand::MechanismCommand(CLI::App& app) {
   command_ = app.add_subcommand("mechanism", "Solve a linkage at one crank angle or over a sweep");
-  command_->add_option("name", name_, "jansen (seed 000, 8 equations), jansen10 (seed 001, 10 equations), mustang (seed 003)")
-      ->required()
-      ->check(CLI::IsMember({"jansen", "jansen10", "mustang"}));
+  command_->add_option("name", name_,
+                       "jansen (seed 000, 8 equations), jansen10 (seed 001, 10 equations), mustang (seed 003), "
+                       "a shipped model (numlab models) or a linkage description file")
+      ->required();
   auto* crank = command_->add_option("--crank", crank_, "One crank angle (degrees)")
                     ->check(CLI::Validator([](std::string& text) { return finite_number_problem(text); }, "DEG"));
   auto* sweep = command_->add_option("--sweep", sweep_, "START:STOP:STEP in degrees");
   crank->excludes(sweep);
   command_->add_option("--solver", solver_, "full, sequential, analytic or gsl-<type>")
-      ->check(CLI::IsMember(mechanisms::jansen_solver_names()));
+      ->check(CLI::IsMember(mechanisms::linkage_solver_names()));
   command_->add_option("--linear", linear_, "Inner solver of full Newton")
       ->check(CLI::IsMember({"gepp", "gauss-seidel", "gsl-lu", "eigen-lu"}));
   command_->add_option("--svg", svg_, "Draw the first pose and the foot path to this SVG file");
   command_->add_option("--animate", animate_, "Write an animated SVG of the sweep to this file");
   command_->add_option("--beest", beest_, "Draw seed 000's four-legged beest from the sweep (a full turn)");
   command_->add_flag("--beest-animated{4.0}", beest_seconds_, "Animate the beest");
+  command_->add_flag("--explain", explain_, "A description file: print the derived model (unknowns, equations, "
+                                            "sparsity, blocks) and stop");
+  command_->add_flag("--check-jacobian", check_jacobian_, "A description file: compare the exact Jacobian with "
+                                                          "finite differences at every solved pose");
+  command_->add_flag("--arrows", arrows_, "A description file: --svg draws each joint's velocity as an arrow");
   add_common_options(*command_, common_);
 }
+
+namespace {
+
+bool built_in(const std::string& name) { return name == "jansen" || name == "jansen10" || name == "mustang"; }
+
+}  // namespace
 
 int MechanismCommand::run() const {
   // 1. Every flag and every output file checked before any work (docs/cli.md, "Which flags apply where").
   const CommonOptions common = checked_common_options(common_, "mechanism");
+  const std::string file = built_in(name_) ? std::string() : linkage_file_for(name_);
+  if (!built_in(name_) && file.empty()) {
+    throw std::invalid_argument("mechanism name '" + printable(std::string_view(name_).substr(0, 40)) + (name_.size() > 40 ? "...'" : "'") +
+                                ": not jansen, jansen10, mustang, a shipped model (numlab models) or a file");
+  }
+  const bool from_file = !file.empty();
+  for (const auto* flag : {"--explain", "--check-jacobian", "--arrows"}) {
+    require_applies(given(*command_, flag), from_file, flag, "a linkage description file or shipped model");
+  }
+  require_applies(given(*command_, "--arrows"), svg_.empty() == false, "--arrows", "--svg FILE");
+  require_applies(given(*command_, "--beest"), !from_file, "--beest", "numlab mechanism jansen and jansen10");
   require_applies(given(*command_, "--linear"), solver_ == "full", "--linear", "--solver full");
   require_applies(given(common, "--tol"), solver_ != "analytic", "--tol", "the iterative solvers (not analytic)");
   require_applies(given(common, "--max-iter"), solver_ != "analytic", "--max-iter", "the iterative solvers (not analytic)");
@@ -180,6 +207,20 @@ int MechanismCommand::run() const {
   if (given(*command_, "--beest-animated") && !(beest_seconds_ > 0.0 && std::isfinite(beest_seconds_))) {
     throw std::invalid_argument("--beest-animated: the stride time must be a positive number of seconds");
   }
+  if (explain_) {
+    for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian"}) {
+      require_applies(given(*command_, flag), false, flag, "a solve, not --explain");
+    }
+    for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
+      require_applies(given(common, flag), false, flag, "a solve, not --explain");
+    }
+    if (common.format == Format::csv) throw std::invalid_argument("--explain prints text or JSON, not CSV");
+    LinkageRun run;
+    run.file = file;
+    run.explain = true;
+    run.common = common;
+    return run_linkage(run);
+  }
   if (!crank_ && sweep_.empty()) throw std::invalid_argument("give --crank DEG or --sweep START:STOP:STEP");
   if (crank_ && !std::isfinite(*crank_)) throw std::invalid_argument("--crank must be a finite number of degrees");
   const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : parse_sweep(sweep_);
@@ -190,7 +231,22 @@ int MechanismCommand::run() const {
   for (const auto& [path, flag] : {std::pair{svg, "--svg"}, std::pair{animate, "--animate"}, std::pair{beest, "--beest"}}) {
     if (!path.empty()) outputs.push_back({path, flag});
   }
-  check_outputs(outputs, {});
+  check_outputs(outputs, from_file ? std::vector<std::string>{file} : std::vector<std::string>{});
+  if (from_file) {
+    LinkageRun run;
+    run.file = file;
+    run.driver = crank_;
+    run.sweep = sweep_;
+    run.solver = solver_;
+    run.linear = linear_;
+    run.linear_given = given(*command_, "--linear");
+    run.check_jacobian = check_jacobian_;
+    run.arrows = arrows_;
+    run.common = common;
+    run.svg = svg;
+    run.animate = animate;
+    return run_linkage(run);
+  }
   if (name_ == "mustang") {
     if (!beest_.empty()) throw std::invalid_argument("--beest draws the Jansen leg's beest, not the mustang");
     return run_mustang({range.start, range.stop, range.step, solver_, linear_, common, svg, animate});

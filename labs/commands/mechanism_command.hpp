@@ -27,6 +27,9 @@ class MechanismCommand {
   std::string animate_;
   std::string beest_;
   double beest_seconds_ = 0.0;
+  bool explain_ = false;
+  bool check_jacobian_ = false;
+  bool arrows_ = false;
 };
 
 struct SweepRange {

@@ -19,8 +19,53 @@ const std::string bom = "\xEF\xBB\xBF";
 const std::string csv_rows = "0,1\n1,3\n2,5\n3,7.1\n4,8.9\n";
 
 // Files every case finds in its folder, by name and contents.
-std::vector<std::pair<std::string, std::string>> text_inputs() {
+// A four-bar description (docs/linkage-files.md) with `change` applied: each pair replaces the
+// first occurrence of its first string by its second. Line numbers: [ground] 4, O 5, Q 6,
+// [joints] 8, A 9, B 10, links at 12-14, 16-18, 20-22, [driver] 24.
+std::string four_bar(const std::vector<std::pair<std::string, std::string>>& change = {}) {
+  std::string text =
+      "[linkage]\nname = \"four-bar\"\n\n"
+      "[ground]\nO = [0.0, 0.0]\nQ = [4.0, 0.0]\n\n"
+      "[joints]\nA = [0.87, 0.5]\nB = [4.9, 2.8]\n\n"
+      "[[link]]\njoints = [\"O\", \"A\"]\nlength = 1.0\n\n"
+      "[[link]]\njoints = [\"A\", \"B\"]\nlength = 3.5\n\n"
+      "[[link]]\njoints = [\"Q\", \"B\"]\nlength = 3.0\n\n"
+      "[driver]\ntype = \"crank\"\npivot = \"O\"\njoint = \"A\"\nangle = 30.0\n";
+  for (const auto& [from, to] : change) {
+    const std::size_t at = text.find(from);
+    if (at == std::string::npos) throw std::logic_error("four_bar: no '" + from + "'");
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+// Linkage description files (issue 17's bad-input list), each named for what is wrong with it.
+std::vector<std::pair<std::string, std::string>> linkage_inputs() {
+  const std::string body = "\n[[body]]\nname = \"plate\"\njoints = [\"A\", \"B\", \"C\"]\n";
   return {
+      {"lk-four-bar.toml", four_bar()},
+      {"lk-syntax.toml", four_bar({{"length = 3.5", "length = = 3.5"}})},
+      {"lk-unknown-joint.toml", four_bar({{"[\"Q\", \"B\"]", "[\"Q\", \"X\"]"}})},
+      {"lk-duplicate-joint.toml", four_bar({{"B = [4.9, 2.8]", "B = [4.9, 2.8]\nO = [1.0, 1.0]"}})},
+      {"lk-self-link.toml", four_bar({{"[\"A\", \"B\"]", "[\"A\", \"A\"]"}})},
+      {"lk-zero-length.toml", four_bar({{"length = 3.5", "length = 0.0"}})},
+      {"lk-negative-length.toml", four_bar({{"length = 3.5", "length = -3.5"}})},
+      {"lk-nan-length.toml", four_bar({{"length = 3.5", "length = nan"}})},
+      {"lk-inf-length.toml", four_bar({{"length = 3.5", "length = inf"}})},
+      {"lk-body-two-joints.toml", four_bar() + "\n[[body]]\njoints = [\"A\", \"B\"]\nlocal = [[0.0, 0.0], [3.5, 0.0]]\n"},
+      {"lk-body-collinear.toml",
+       four_bar({{"B = [4.9, 2.8]", "B = [4.9, 2.8]\nC = [2.0, 2.0]"}}) + body + "local = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]]\n"},
+      {"lk-driver-not-ground.toml", four_bar({{"pivot = \"O\"", "pivot = \"B\""}})},
+      {"lk-not-assembling.toml", four_bar({{"length = 3.5", "length = 0.05"}})},  // A-B + B-Q < |AQ| at 30 deg
+      {"lk-mobility-2.toml", four_bar({{"[[link]]\njoints = [\"Q\", \"B\"]\nlength = 3.0\n", ""}})},
+      {"lk-over-constrained.toml", four_bar() + "\n[[link]]\njoints = [\"O\", \"B\"]\nlength = 3.6\n"},
+      {"lk-not-a-linkage.toml", "[table]\nkey = 1\n"},
+      {"lk-empty.toml", ""},
+  };
+}
+
+std::vector<std::pair<std::string, std::string>> text_inputs() {
+  std::vector<std::pair<std::string, std::string>> files = {
       // Matrix files (docs/cli.md, solve linear --matrix).
       {"a2.txt", "4 1\n1 3\n"},
       {"aug3.txt", "4 1 0 5\n1 4 1 6\n0 1 4 5\n"},
@@ -61,6 +106,8 @@ std::vector<std::pair<std::string, std::string>> text_inputs() {
       // Not a NIST file, though named like one.
       {"noheader.dat", "hello\n"},
   };
+  for (auto& file : linkage_inputs()) files.push_back(std::move(file));
+  return files;
 }
 
 std::string read_bytes(const fs::path& path) {

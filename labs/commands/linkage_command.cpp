@@ -1,0 +1,176 @@
+#include "commands/linkage_command.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "cli/argument_parsing.hpp"
+#include "cli/data_dir.hpp"
+#include "commands/linkage_report.hpp"
+#include "numlab/mechanisms/linkage/linkage_structure.hpp"
+#include "numlab/nonlinear/jacobian_check.hpp"
+#include "output/table.hpp"
+#include "scenes/linkage_scene.hpp"
+
+namespace numlab::cli {
+
+namespace fs = std::filesystem;
+using namespace mechanisms;
+
+std::string linkage_file_for(const std::string& name) {
+  std::error_code error;
+  if (fs::is_regular_file(name, error)) return name;
+  const bool plain_name = !name.empty() && name.size() <= 64 &&
+                          std::all_of(name.begin(), name.end(), [](char c) {
+                            return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '_' || c == '.';
+                          });
+  if (!plain_name) return {};
+  std::string dir;
+  try {
+    dir = models_dir();
+  } catch (const std::invalid_argument&) {
+    return {};
+  }
+  const fs::path shipped = fs::path(dir) / (name.ends_with(".toml") ? name : name + ".toml");
+  return fs::is_regular_file(shipped, error) ? shipped.string() : std::string();
+}
+
+namespace {
+
+// --trace and --step: one row per pose on stderr as it is solved, then a pause.
+class PoseTracer {
+ public:
+  PoseTracer(const LinkageModel& model, bool print, bool step) : model_(model), print_(print), step_(step) {}
+  void operator()(const LinkagePose& pose) {
+    rows_.push_back(pose_trace_json(pose));
+    if (print_) {
+      if (rows_.size() == 1) {
+        std::cerr << fmt::format("{:>12}  {:>10}  {:>10}  {:>10}  {:<15}\n", model_.crank_driven() ? "crank (deg)" : "travel",
+                                 "iterations", "||Phi||_inf", "kappa(J)", "status");
+      }
+      std::cerr << fmt::format("{:>12.6g}  {:>10}  {:>10}  {:>10}  {:<15}\n", pose.driver, pose.outcome.iterations,
+                               scientific(pose.outcome.residual_norm), scientific(pose.condition),
+                               to_string(pose.outcome.status));
+    }
+    pause_if_stepping(step_);
+  }
+  const nlohmann::ordered_json& rows() const { return rows_; }
+
+ private:
+  const LinkageModel& model_;
+  bool print_, step_;
+  nlohmann::ordered_json rows_ = nlohmann::ordered_json::array();
+};
+
+// --check-jacobian: the exact J against finite differences at every solved pose; the worst.
+JacobianReport check_jacobians(const LinkageModel& model, const LinkageSweep& sweep) {
+  JacobianReport report;
+  for (const LinkagePose& pose : sweep.poses) {
+    if (pose.outcome.status != Status::converged) continue;
+    const LinkageSystem system(model, model.driver_from_user(pose.driver));
+    const auto check = nonlinear::check_jacobian(system, pose.q);
+    ++report.poses;
+    if (report.poses == 1 || check.worst_error > report.worst.worst_error) {
+      report.worst = check;
+      report.driver = pose.driver;
+    }
+  }
+  return report;
+}
+
+// The velocity and acceleration checks at up to eight converged poses spread over the sweep.
+DerivativeReport check_poses(const LinkageSolver& solver, const LinkageSweep& sweep) {
+  DerivativeReport report;
+  std::vector<const LinkagePose*> converged;
+  for (const auto& pose : sweep.poses) {
+    if (pose.outcome.status == Status::converged) converged.push_back(&pose);
+  }
+  const std::size_t wanted = std::min<std::size_t>(8, converged.size());
+  for (std::size_t k = 0; k < wanted; ++k) {
+    const LinkagePose& pose = *converged[k * converged.size() / wanted];
+    const auto check = check_derivatives(solver, solver.model().driver_from_user(pose.driver), pose.q);
+    if (!check.solved) {
+      ++report.unsolved;
+      continue;
+    }
+    ++report.poses;
+    report.velocity = std::max(report.velocity, check.velocity_difference / std::max(1.0, check.velocity_scale));
+    report.acceleration = std::max(report.acceleration, check.acceleration_difference / std::max(1.0, check.acceleration_scale));
+  }
+  return report;
+}
+
+// A sweep succeeds when every pose converged, on the reference branch, and (where the model has a
+// closed form) within the distance of it that its residual allows.
+Status overall_status(const LinkageSweep& sweep) {
+  if (sweep.status != Status::converged) return sweep.status;
+  return sweep.branch_kept && sweep.closed_form_verified ? Status::converged : Status::no_progress;
+}
+
+}  // namespace
+
+int run_linkage(const LinkageRun& run) {
+  // 1. The description, the derived model (mobility and structure checked), and the solver with
+  // its reference pose: each is bad input when it fails.
+  const LinkageModel model(read_linkage_description(run.file));
+  if (run.explain) {
+    print_explanation(std::cout, model, run.common.format);
+    return exit_success;
+  }
+  LinkageSolverOptions options;
+  options.solver = run.solver;
+  options.linear = run.linear;
+  if (run.common.tolerance) options.newton.residual_tolerance = *run.common.tolerance;
+  if (run.common.max_iterations) options.newton.max_iterations = *run.common.max_iterations;
+  const LinkageSolver solver(model, options);
+  const DegreeRange range = run.driver ? DegreeRange{*run.driver, *run.driver, 1.0}
+                                       : parse_degree_range(run.sweep, "--sweep");
+
+  // 2. The sweep, traced and paused as asked; the time leaves out the pauses.
+  PoseTracer tracer(model, run.common.trace && (run.common.step || run.common.format != Format::json), run.common.step);
+  const double paused_before = paused_seconds();
+  const auto begin = std::chrono::steady_clock::now();
+  std::optional<LinkageSweep> swept;
+  try {
+    swept = linkage_sweep(solver, range.start, range.stop, range.step,
+                          run.common.trace ? LinkagePoseObserver(std::ref(tracer)) : LinkagePoseObserver());
+  } catch (const StoppedByUser&) {
+    return report_stopped(run.common, {{"mechanism", model.description().name}, {"solver", run.solver}}, tracer.rows());
+  }
+  const LinkageSweep& sweep = *swept;
+  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
+                        (paused_seconds() - paused_before);
+
+  // 3. The checks that read the sweep, the files, then the report.
+  LinkageReport report{model, solver, sweep, time_s, {}, std::nullopt, Status::converged};
+  report.derivatives = check_poses(solver, sweep);
+  if (run.check_jacobian) report.jacobian = check_jacobians(model, sweep);
+  report.status = overall_status(sweep);
+  const bool drawable = std::any_of(sweep.poses.begin(), sweep.poses.end(),
+                                    [](const LinkagePose& p) { return p.outcome.status == Status::converged; });
+  if (drawable) {
+    std::size_t first = 0;
+    while (sweep.poses[first].outcome.status != Status::converged) ++first;
+    if (!run.svg.empty()) write_file_atomically(run.svg, linkage_pose_svg(model, sweep, first, run.arrows));
+    if (!run.animate.empty()) write_file_atomically(run.animate, linkage_animation_svg(model, sweep, 4.0));
+  } else if (!run.svg.empty() || !run.animate.empty()) {
+    std::cerr << "numlab: no pose assembled, so no scene was drawn\n";
+  }
+  if (run.common.format == Format::json) {
+    std::cout << linkage_json(report, run.common.trace ? &tracer.rows() : nullptr).dump(2) << '\n';
+  } else if (run.common.format == Format::csv) {
+    print_linkage_csv(std::cout, report);
+  } else {
+    print_linkage_text(std::cout, report, run.file);
+  }
+  if (run.check_jacobian && report.jacobian && !report.jacobian->worst.agrees) return exit_method_failed;
+  return exit_code_for(report.status);
+}
+
+}  // namespace numlab::cli

@@ -1,0 +1,35 @@
+#pragma once
+// `numlab mechanism FILE|MODEL ...` for a linkage described in a file (docs/linkage-files.md): the
+// derived model (--explain), then positions, velocities, accelerations, limits and scenes over a
+// crank (or slider) sweep with any solver. The built-in jansen, jansen10 and mustang are not here
+// (mechanism_command.cpp).
+
+#include <optional>
+#include <string>
+
+#include "cli/cli_common.hpp"
+
+namespace numlab::cli {
+
+struct LinkageRun {
+  std::string file;                // the description file
+  std::optional<double> driver;    // --crank: one value (degrees, or travel for a slider driver)
+  std::string sweep;               // --sweep START:STOP:STEP (same units)
+  std::string solver = "full";
+  std::string linear = "gepp";
+  bool linear_given = false;
+  bool explain = false;            // print the derived model and stop
+  bool check_jacobian = false;     // compare J with finite differences at every solved pose
+  bool arrows = false;             // --svg draws velocity arrows
+  CommonOptions common;
+  std::string svg, animate;        // already placed inside --out
+};
+
+// The description file a mechanism name stands for: NAME as a path when such a file exists, else
+// the shipped model NAME (NAME.toml in the models folder). Empty when neither exists.
+std::string linkage_file_for(const std::string& name);
+
+// Runs it; returns the exit code. Bad input throws std::invalid_argument (LinkageFileError included).
+int run_linkage(const LinkageRun& run);
+
+}  // namespace numlab::cli

@@ -1,0 +1,320 @@
+#include "commands/linkage_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "numlab/mechanisms/linkage/linkage_structure.hpp"
+#include "output/table.hpp"
+
+namespace numlab::cli {
+
+using namespace mechanisms;
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+const std::string& joint_name(const LinkageModel& model, int joint) {
+  return model.description().joints[static_cast<std::size_t>(joint)].name;
+}
+
+std::string driver_column(const LinkageModel& model) { return model.crank_driven() ? "crank_deg" : "travel"; }
+
+bool converged(const LinkagePose& pose) { return pose.outcome.status == Status::converged; }
+
+bool kept(const LinkageSolver&, const LinkagePose& pose) { return pose.branch_kept; }
+
+// Every joint's position, velocity, acceleration at a pose (ground joints: fixed, zero).
+struct JointMotion {
+  Eigen::Vector2d p, v, a;
+};
+JointMotion motion(const LinkageModel& model, const LinkagePose& pose, int joint) {
+  const int column = model.column_of(joint);
+  if (column < 0) return {model.description().joints[static_cast<std::size_t>(joint)].position, {0, 0}, {0, 0}};
+  const auto pick = [&](const Eigen::VectorXd& v) {
+    return v.size() == 0 ? Eigen::Vector2d(nan, nan) : Eigen::Vector2d(v(column), v(column + 1));
+  };
+  return {pick(pose.q), pick(pose.velocity), pick(pose.acceleration)};
+}
+
+// The dyad blocks (those with a transmission angle), by index.
+std::vector<std::size_t> dyads(const LinkageSolver& solver) {
+  std::vector<std::size_t> out;
+  for (std::size_t b = 0; b < solver.blocks().size(); ++b) {
+    if (solver.blocks()[b].dyad()) out.push_back(b);
+  }
+  return out;
+}
+
+std::string block_joint_names(const LinkageModel& model, const LinkageBlock& block) {
+  std::vector<std::string> names;
+  for (int j : block.joints) names.push_back(joint_name(model, j));
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+// "B: 51.2 .. 128.8 deg, inside 40-140" or "... leaves 40-140 at 12 poses (from 100 to 111)".
+std::string transmission_summary(const LinkageReport& r, std::size_t block) {
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  int outside = 0;
+  double first = nan, last = nan;
+  for (const auto& pose : r.sweep.poses) {
+    if (!converged(pose)) continue;
+    const double mu = pose.transmission_deg[block];
+    low = std::min(low, mu), high = std::max(high, mu);
+    if (mu < transmission_low_deg || mu > transmission_high_deg) {
+      if (outside++ == 0) first = pose.driver;
+      last = pose.driver;
+    }
+  }
+  const std::string name = block_joint_names(r.model, r.solver.blocks()[block]);
+  if (!std::isfinite(low)) return name + ": no assembled pose";
+  std::string text = fmt::format("{}: {:.1f} .. {:.1f} deg", name, low, high);
+  if (outside == 0) return text + fmt::format(", inside {:g}-{:g}", transmission_low_deg, transmission_high_deg);
+  return text + fmt::format(", outside {:g}-{:g} at {} poses (from {:g} to {:g})", transmission_low_deg,
+                            transmission_high_deg, outside, first, last);
+}
+
+std::string limit_text(const LinkageReport& r, const LinkageLimit& limit) {
+  const std::string unit = r.model.crank_driven() ? " deg" : "";
+  std::string where = "no block named";
+  if (limit.block >= 0) {
+    where = fmt::format("block {} ({}) cannot close", limit.block + 1,
+                        describe_block(r.model, r.solver.blocks()[static_cast<std::size_t>(limit.block)]));
+  }
+  const std::string angle = std::isfinite(limit.transmission_deg)
+                                ? fmt::format("; transmission angle there {:.2f} deg", limit.transmission_deg)
+                                : "";
+  return fmt::format("{} limit {:.2f}{} (bisection bracket {:.2g}{}): {}{}", limit.upper ? "upper" : "lower", limit.driver,
+                     unit, limit.bracket, unit, where, angle);
+}
+
+nlohmann::ordered_json number(double value) { return number_or_null(value); }
+
+// The pose farthest from the closed form relative to its bound (NaN when there is no closed form).
+struct ClosedFormWorst {
+  double distance = std::numeric_limits<double>::quiet_NaN(), bound = std::numeric_limits<double>::quiet_NaN();
+};
+ClosedFormWorst worst_closed_form(const LinkageSweep& sweep) {
+  ClosedFormWorst worst;
+  double ratio = -1.0;
+  for (const auto& pose : sweep.poses) {
+    if (std::isnan(pose.closed_form_distance)) continue;
+    const double r = pose.closed_form_distance / pose.closed_form_bound;
+    if (r > ratio) ratio = r, worst = {pose.closed_form_distance, pose.closed_form_bound};
+  }
+  return worst;
+}
+
+}  // namespace
+
+void print_explanation(std::ostream& out, const LinkageModel& model, Format format) {
+  const Mobility mobility = gruebler_kutzbach(model.description());
+  const auto blocks = linkage_blocks(model);
+  const auto pattern = model.pattern();
+  std::vector<std::string> unknowns, equations, sparsity;
+  for (int c = 0; c < model.unknown_count(); ++c) unknowns.push_back(model.column_name(c));
+  for (int r = 0; r < model.equation_count(); ++r) {
+    equations.push_back(model.row_name(r));
+    std::string row;
+    for (int c = 0; c < model.unknown_count(); ++c) row += pattern(r, c) ? 'x' : '.';
+    sparsity.push_back(row);
+  }
+  const auto newton_blocks = std::count_if(blocks.begin(), blocks.end(), [](const LinkageBlock& b) { return !b.closed_form(); });
+  if (format == Format::json) {
+    nlohmann::ordered_json json = {{"mechanism", model.description().name},
+                                   {"title", model.description().title},
+                                   {"mobility", {{"members", mobility.members}, {"lower_pairs", mobility.lower_pairs},
+                                                 {"mobility", mobility.mobility}}},
+                                   {"unknowns", unknowns},
+                                   {"equations", equations},
+                                   {"sparsity", sparsity},
+                                   {"blocks", nlohmann::ordered_json::array()}};
+    for (const auto& block : blocks) {
+      std::vector<std::string> known;
+      for (int j : block.known_joints) known.push_back(joint_name(model, j));
+      json["blocks"].push_back({{"joints", block_joint_names(model, block)},
+                                {"from", known},
+                                {"size", block.rows_and_columns.unknowns.size()},
+                                {"kind", std::string(to_string(block.kind))},
+                                {"closed_form", block.closed_form()},
+                                {"text", describe_block(model, block)}});
+    }
+    json["analytic"] = newton_blocks == 0;
+    out << json.dump(2) << '\n';
+    return;
+  }
+  out << fmt::format("linkage            {}{}\n", model.description().name,
+                     model.description().title.empty() ? "" : ": " + model.description().title)
+      << fmt::format("mobility           {} (Gruebler-Kutzbach {})\n", mobility.mobility, mobility.formula())
+      << fmt::format("formulation        joint coordinates, the x and y of every moving joint; one equation per link,\n"
+                     "                   for each body one plus two per further joint, one per slider, two for the driver\n")
+      << fmt::format("{:<19}{}\n", fmt::format("unknowns ({})", unknowns.size()), fmt::join(unknowns, " "))
+      << fmt::format("equations ({})\n", equations.size());
+  for (std::size_t r = 0; r < equations.size(); ++r) {
+    out << fmt::format("  {:>3}  {}  {}\n", r + 1, sparsity[r], equations[r]);
+  }
+  out << "blocks, in solving order (from: joints solved before)\n";
+  for (std::size_t b = 0; b < blocks.size(); ++b) out << fmt::format("  {:>3}. {}\n", b + 1, describe_block(model, blocks[b]));
+  out << fmt::format("closed form        {} of {} blocks; {}\n", static_cast<long>(blocks.size()) - newton_blocks,
+                     blocks.size(),
+                     newton_blocks == 0 ? "every block is a dyad or explicit: --solver analytic applies"
+                                        : fmt::format("{} need{} Newton: --solver analytic does not apply", newton_blocks, newton_blocks == 1 ? "s" : ""));
+}
+
+nlohmann::ordered_json pose_trace_json(const LinkagePose& pose) {
+  return {{"driver", pose.driver},
+          {"iterations", pose.outcome.iterations},
+          {"residual_inf", number(pose.outcome.residual_norm)},
+          {"condition", number(pose.condition)},
+          {"status", std::string(to_string(pose.outcome.status))}};
+}
+
+void print_linkage_csv(std::ostream& out, const LinkageReport& r) {
+  const auto& joints = r.model.description().joints;
+  const auto dyad_blocks = dyads(r.solver);
+  out << driver_column(r.model);
+  for (const auto& j : joints) out << ",x_" << j.name << ",y_" << j.name;
+  for (const auto& j : joints) out << ",vx_" << j.name << ",vy_" << j.name << ",ax_" << j.name << ",ay_" << j.name;
+  for (std::size_t b : dyad_blocks) out << ",mu_" << block_joint_names(r.model, r.solver.blocks()[b]);
+  out << ",condition,iterations,residual_inf,status,branch_kept\n";
+  for (const auto& pose : r.sweep.poses) {
+    out << fmt::format("{:.10g}", pose.driver);
+    std::vector<JointMotion> m;
+    for (std::size_t j = 0; j < joints.size(); ++j) m.push_back(motion(r.model, pose, static_cast<int>(j)));
+    for (const auto& jm : m) out << fmt::format(",{:.17g},{:.17g}", jm.p.x(), jm.p.y());
+    for (const auto& jm : m) out << fmt::format(",{:.17g},{:.17g},{:.17g},{:.17g}", jm.v.x(), jm.v.y(), jm.a.x(), jm.a.y());
+    for (std::size_t b : dyad_blocks) out << fmt::format(",{:.10g}", converged(pose) ? pose.transmission_deg[b] : nan);
+    out << fmt::format(",{:.6g},{},{:.6g},{},{}\n", pose.condition, pose.outcome.iterations, pose.outcome.residual_norm,
+                       to_string(pose.outcome.status), kept(r.solver, pose) ? "yes" : "no");
+  }
+}
+
+nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::ordered_json* trace) {
+  const auto& joints = r.model.description().joints;
+  const auto dyad_blocks = dyads(r.solver);
+  nlohmann::ordered_json out = {{"mechanism", r.model.description().name},
+                                {"title", r.model.description().title},
+                                {"solver", r.solver.options().solver},
+                                {"driver", r.model.crank_driven() ? "crank_deg" : "travel"},
+                                {"poses", nlohmann::ordered_json::array()}};
+  for (const auto& pose : r.sweep.poses) {
+    nlohmann::ordered_json positions, velocities, accelerations, transmission;
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+      const JointMotion m = motion(r.model, pose, static_cast<int>(j));
+      positions[joints[j].name] = {number(m.p.x()), number(m.p.y())};
+      velocities[joints[j].name] = {number(m.v.x()), number(m.v.y())};
+      accelerations[joints[j].name] = {number(m.a.x()), number(m.a.y())};
+    }
+    for (std::size_t b : dyad_blocks) {
+      transmission[block_joint_names(r.model, r.solver.blocks()[b])] = number(converged(pose) ? pose.transmission_deg[b] : nan);
+    }
+    out["poses"].push_back({{"driver", pose.driver},
+                            {"joints", positions},
+                            {"velocity", velocities},
+                            {"acceleration", accelerations},
+                            {"transmission_deg", transmission},
+                            {"condition", number(pose.condition)},
+                            {"closed_form_distance", number(pose.closed_form_distance)},
+                            {"closed_form_bound", number(pose.closed_form_bound)},
+                            {"signature", pose.signature},
+                            {"branch_kept", kept(r.solver, pose)},
+                            {"iterations", pose.outcome.iterations},
+                            {"residual_inf", number(pose.outcome.residual_norm)},
+                            {"status", std::string(to_string(pose.outcome.status))}});
+  }
+  out["status"] = std::string(to_string(r.status));
+  out["branch_kept"] = r.sweep.branch_kept;
+  out["closed_form_verified"] = r.sweep.closed_form_verified;
+  out["worst_closed_form_distance"] = number(worst_closed_form(r.sweep).distance);
+  out["worst_closed_form_bound"] = number(worst_closed_form(r.sweep).bound);
+  out["flips"] = r.sweep.flips;
+  out["change_points"] = r.sweep.change_points;
+  out["limits"] = nlohmann::ordered_json::array();
+  for (const auto& limit : r.sweep.limits) {
+    out["limits"].push_back({{"driver", limit.driver},
+                             {"bracket", limit.bracket},
+                             {"upper", limit.upper},
+                             {"block", limit.block >= 0 ? nlohmann::ordered_json(describe_block(r.model, r.solver.blocks()[static_cast<std::size_t>(limit.block)])) : nlohmann::ordered_json()},
+                             {"transmission_deg", number(limit.transmission_deg)},
+                             {"text", limit_text(r, limit)}});
+  }
+  out["derivative_check"] = {{"poses", r.derivatives.poses},
+                             {"velocity_relative", r.derivatives.velocity},
+                             {"acceleration_relative", r.derivatives.acceleration}};
+  if (r.jacobian) {
+    out["jacobian_check"] = {{"poses", r.jacobian->poses},
+                             {"worst_relative_error", number(r.jacobian->worst.worst_error)},
+                             {"at_driver", r.jacobian->driver},
+                             {"agrees", r.jacobian->worst.agrees}};
+  }
+  out["time_s"] = r.time_s;
+  if (trace != nullptr) out["trace"] = *trace;
+  return out;
+}
+
+void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::string& file) {
+  const auto& d = r.model.description();
+  const auto& blocks = r.solver.blocks();
+  const int tracked = r.model.moving().back();  // the last moving joint listed: usually the output point
+  const std::string t = joint_name(r.model, tracked);
+  const auto newton_blocks = std::count_if(blocks.begin(), blocks.end(), [](const LinkageBlock& b) { return !b.closed_form(); });
+  out << fmt::format("mechanism          {}{} ({})\n", d.name, d.title.empty() ? "" : ": " + d.title, file)
+      << fmt::format("model              {} unknowns, {} equations; {} blocks, {} in closed form (--explain shows them)\n",
+                     r.model.unknown_count(), r.model.equation_count(), blocks.size(),
+                     static_cast<long>(blocks.size()) - newton_blocks)
+      << fmt::format("solver             {}\n", r.solver.options().solver == "full"
+                                                     ? "full (" + r.solver.options().linear + ")"
+                                                     : r.solver.options().solver)
+      << fmt::format("status             {}\n", to_string(r.status))
+      << fmt::format("poses              {}\n", r.sweep.poses.size());
+  constexpr std::size_t shown = 8;
+  Table table({r.model.crank_driven() ? "crank (deg)" : "travel", "x_" + t, "y_" + t, "|v_" + t + "|", "kappa(J)",
+               "iterations", "||Phi||_inf", "status"});
+  for (std::size_t i = 0; i < r.sweep.poses.size(); ++i) {
+    if (r.sweep.poses.size() > shown && i == shown / 2) {
+      table.add_row({fmt::format("... ({} more)", r.sweep.poses.size() - shown)});
+      i = r.sweep.poses.size() - shown / 2;
+    }
+    const auto& pose = r.sweep.poses[i];
+    const JointMotion m = motion(r.model, pose, tracked);
+    table.add_row({fmt::format("{:g}", pose.driver), fmt::format("{:.6f}", m.p.x()), fmt::format("{:.6f}", m.p.y()),
+                   fmt::format("{:.4f}", m.v.norm()), scientific(pose.condition), std::to_string(pose.outcome.iterations),
+                   scientific(pose.outcome.residual_norm), std::string(to_string(pose.outcome.status))});
+  }
+  table.print(out);
+  out << fmt::format("branch             {}\n", r.sweep.branch_kept ? "kept (no block's signature changed but at a change point)"
+                                                                      : "FLIPPED");
+  for (const auto& flip : r.sweep.flips) out << "                   " << flip << '\n';
+  for (const auto& change : r.sweep.change_points) out << "change point       " << change << '\n';
+  const ClosedFormWorst worst = worst_closed_form(r.sweep);
+  if (!std::isnan(worst.distance)) {
+    out << fmt::format("closed form        worst joint distance {:.2g} (the residual allows {:.2g}): {}\n", worst.distance,
+                       worst.bound, r.sweep.closed_form_verified ? "verified" : "NOT VERIFIED");
+  }
+  for (const auto& limit : r.sweep.limits) out << "limit              " << limit_text(r, limit) << '\n';
+  double low = std::numeric_limits<double>::infinity(), high = 0.0, at = nan;
+  for (const auto& pose : r.sweep.poses) {
+    if (!converged(pose)) continue;
+    low = std::min(low, pose.condition);
+    if (pose.condition > high) high = pose.condition, at = pose.driver;
+  }
+  if (std::isfinite(low)) out << fmt::format("kappa(J)           {:.3g} .. {:.3g} (largest at {:g})\n", low, high, at);
+  for (std::size_t b : dyads(r.solver)) out << "transmission       " << transmission_summary(r, b) << '\n';
+  out << fmt::format("derivatives        at {} pose{}, against finite differences of positions: velocity {:.1e}, "
+                     "acceleration {:.1e} (relative)\n",
+                     r.derivatives.poses, r.derivatives.poses == 1 ? "" : "s", r.derivatives.velocity, r.derivatives.acceleration);
+  if (r.jacobian) {
+    out << fmt::format("jacobian           exact J against finite differences at {} solved poses: worst relative error "
+                       "{:.1e} at {:g}: {}\n",
+                       r.jacobian->poses, r.jacobian->worst.worst_error, r.jacobian->driver,
+                       r.jacobian->worst.agrees ? "agrees" : "DISAGREES " + nonlinear::describe_worst_entry(r.jacobian->worst));
+  }
+  out << fmt::format("time               {:.3g} s\n", r.time_s)
+      << (r.model.crank_driven() ? "velocities per radian of crank, accelerations per radian squared\n"
+                                 : "velocities per unit of slider travel\n");
+}
+
+}  // namespace numlab::cli

@@ -1,0 +1,49 @@
+#pragma once
+// What `numlab mechanism FILE` prints: the derived model (--explain), and a sweep's report as text,
+// CSV (columns x_J, y_J, vx_J, vy_J, ax_J, ay_J per joint) or JSON.
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "cli/cli_common.hpp"
+#include "numlab/mechanisms/linkage/linkage_sweep.hpp"
+#include "numlab/nonlinear/jacobian_check.hpp"
+
+namespace numlab::cli {
+
+// The exact Jacobian against finite differences over the solved poses (--check-jacobian).
+struct JacobianReport {
+  int poses = 0;
+  double driver = 0.0;                 // where the worst entry was
+  nonlinear::JacobianCheck worst;      // the pose with the largest relative error
+};
+
+// Velocities and accelerations against finite differences of positions at a few poses.
+struct DerivativeReport {
+  int poses = 0, unsolved = 0;
+  double velocity = 0.0;       // worst |qdot - central difference| / max(1, |qdot|)
+  double acceleration = 0.0;   // worst |qddot - 7-point stencil| / max(1, |qddot|)
+};
+
+struct LinkageReport {
+  const mechanisms::LinkageModel& model;
+  const mechanisms::LinkageSolver& solver;
+  const mechanisms::LinkageSweep& sweep;
+  double time_s = 0.0;
+  DerivativeReport derivatives;
+  std::optional<JacobianReport> jacobian;
+  Status status = Status::converged;  // the sweep's, or no_progress when the branch flipped
+};
+
+// The transmission-angle window: a dyad outside it transmits force poorly.
+inline constexpr double transmission_low_deg = 40.0, transmission_high_deg = 140.0;
+
+void print_explanation(std::ostream& out, const mechanisms::LinkageModel& model, Format format);
+void print_linkage_text(std::ostream& out, const LinkageReport& report, const std::string& file);
+void print_linkage_csv(std::ostream& out, const LinkageReport& report);
+nlohmann::ordered_json linkage_json(const LinkageReport& report, const nlohmann::ordered_json* trace);
+nlohmann::ordered_json pose_trace_json(const mechanisms::LinkagePose& pose);
+
+}  // namespace numlab::cli

@@ -1,0 +1,82 @@
+#include "commands/models_command.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "cli/data_dir.hpp"
+#include "numlab/mechanisms/linkage/linkage_blocks.hpp"
+#include "output/table.hpp"
+
+namespace numlab::cli {
+
+namespace fs = std::filesystem;
+
+ModelsCommand::ModelsCommand(CLI::App& app) {
+  command_ = app.add_subcommand("models", "List the linkage description files shipped with numlab");
+  add_common_options(*command_, common_);
+}
+
+namespace {
+
+struct ModelEntry {
+  std::string name, title, file, driver, blocks;
+  int joints = 0, unknowns = 0, newton_blocks = 0;
+};
+
+ModelEntry describe(const fs::path& file) {
+  const mechanisms::LinkageModel model(mechanisms::read_linkage_description(file.string()));
+  const auto blocks = mechanisms::linkage_blocks(model);
+  ModelEntry entry{file.stem().string(), model.description().title, file.string(), "", "", 0, model.unknown_count(), 0};
+  entry.joints = static_cast<int>(model.description().joints.size());
+  entry.driver = model.crank_driven() ? "crank" : "slider";
+  std::vector<std::string> kinds;
+  for (const auto& block : blocks) {
+    if (!block.closed_form()) ++entry.newton_blocks;
+    kinds.push_back(block.closed_form() ? (block.dyad() ? "dyad" : "explicit")
+                                        : fmt::format("{}x{} Newton", block.rows_and_columns.unknowns.size(),
+                                                      block.rows_and_columns.unknowns.size()));
+  }
+  entry.blocks = fmt::format("{}", fmt::join(kinds, ", "));
+  return entry;
+}
+
+}  // namespace
+
+int ModelsCommand::run() const {
+  const CommonOptions common = checked_common_options(common_, "models");
+  const std::string dir = models_dir();
+  std::vector<fs::path> files;
+  for (const auto& item : fs::directory_iterator(dir)) {
+    if (item.is_regular_file() && item.path().extension() == ".toml") files.push_back(item.path());
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<ModelEntry> entries;
+  for (const auto& file : files) entries.push_back(describe(file));
+  if (common.format == Format::json) {
+    nlohmann::ordered_json out = {{"folder", dir}, {"models", nlohmann::ordered_json::array()}};
+    for (const auto& e : entries) {
+      out["models"].push_back({{"name", e.name}, {"title", e.title}, {"file", e.file}, {"joints", e.joints},
+                               {"unknowns", e.unknowns}, {"driver", e.driver}, {"blocks", e.blocks},
+                               {"newton_blocks", e.newton_blocks}});
+    }
+    std::cout << out.dump(2) << '\n';
+    return exit_success;
+  }
+  Table table({"name", "title", "joints", "unknowns", "driver", "blocks in solving order"});
+  for (const auto& e : entries) {
+    table.add_row({e.name, e.title, std::to_string(e.joints), std::to_string(e.unknowns), e.driver, e.blocks});
+  }
+  table.print(std::cout);
+  std::cout << fmt::format("{} models in {}; run one with: numlab mechanism NAME --crank 30 (the built-in jansen, "
+                           "jansen10 and mustang are the seeds' hand-written models; the files are jansen.toml and "
+                           "mustang.toml: numlab mechanism jansen.toml ...)\n",
+                           entries.size(), dir);
+  return exit_success;
+}
+
+}  // namespace numlab::cli

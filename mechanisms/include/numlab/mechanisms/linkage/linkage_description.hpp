@@ -1,0 +1,104 @@
+#pragma once
+// A planar linkage as its description file states it (docs/linkage-files.md): named joints, some
+// fixed to the ground, binary links, rigid bodies, sliders, one driver and a reference pose. This is
+// what the file says and nothing more; linkage_model.hpp derives the equations from it.
+//
+// Every item keeps the place in the file it came from, so that a problem found later (mobility,
+// structure, a pose that does not assemble) can still be reported as FILE:LINE:COLUMN.
+
+#include <Eigen/Core>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace numlab::mechanisms {
+
+// Where something is in the description file; 0 when unknown.
+struct SourcePlace {
+  int line = 0;
+  int column = 0;
+};
+
+struct JointSpec {
+  std::string name;
+  bool ground = false;       // fixed at `position`; otherwise moving, `position` is its rough place
+  Eigen::Vector2d position;  // ground: exact; moving: a rough estimate at the reference pose
+  SourcePlace place;
+};
+
+// A binary link: two joints at a fixed distance.
+struct LinkSpec {
+  int first = -1, second = -1;  // indices into LinkageDescription::joints
+  double length = 0.0;
+  SourcePlace place;
+};
+
+// A rigid body with three or more joints, given in the body's own (local) coordinates.
+struct BodySpec {
+  std::string name;
+  std::vector<int> joints;               // indices into LinkageDescription::joints
+  std::vector<Eigen::Vector2d> local;    // one local position per joint, not all on one line
+  SourcePlace place;
+};
+
+// A joint held on a straight line fixed to the ground: through `through`, at `angle_deg` from +x.
+struct SliderSpec {
+  int joint = -1;
+  Eigen::Vector2d through = Eigen::Vector2d::Zero();
+  double angle_deg = 0.0;
+  SourcePlace place;
+};
+
+enum class DriverKind { crank, slider };
+
+// The one input. A crank turns `joint` about the ground joint `pivot` (the angle of pivot -> joint
+// from +x, in degrees); a slider driver moves the slider's joint along its line (the travel from
+// the line's `through` point, in length units).
+struct DriverSpec {
+  DriverKind kind = DriverKind::crank;
+  int pivot = -1;      // crank: a ground joint
+  int joint = -1;      // the driven joint (crank: on a link or body with the pivot; slider: a slider's joint)
+  int slider = -1;     // slider driver: index into LinkageDescription::sliders
+  double reference = 0.0;  // the driver's value at the reference pose (degrees or length)
+  SourcePlace place;
+};
+
+struct LinkageDescription {
+  std::string file;    // as given, for messages
+  std::string name;    // [linkage] name
+  std::string title;   // [linkage] title (may be empty)
+  std::vector<JointSpec> joints;  // in the order the file lists them: ground first, then moving
+  std::vector<LinkSpec> links;
+  std::vector<BodySpec> bodies;
+  std::vector<SliderSpec> sliders;
+  DriverSpec driver;
+
+  // The index of the joint called `name`, or -1.
+  int joint_index(std::string_view name) const;
+};
+
+// A description that cannot be used: what() is one line, "FILE:LINE:COLUMN: problem" (or
+// "FILE: problem" when the problem has no single place). The command line prints it and exits 2.
+class LinkageFileError : public std::invalid_argument {
+ public:
+  LinkageFileError(const std::string& file, SourcePlace place, const std::string& problem);
+  const std::string& problem() const { return problem_; }
+  SourcePlace place() const { return place_; }
+
+ private:
+  std::string problem_;
+  SourcePlace place_;
+};
+
+// Reads a description from TOML text (`file` names it in messages). Checks everything that can be
+// checked from the file alone: TOML syntax, the sections and keys, unknown and duplicate joint names,
+// a link from a joint to itself, lengths (positive and finite), numbers finite, bodies (three or
+// more distinct joints, local coordinates not all on one line), sliders, the driver (a crank on a
+// ground pivot, its joint on a link or body with it). Throws LinkageFileError.
+LinkageDescription parse_linkage_description(std::string_view toml_text, const std::string& file);
+
+// Reads the file (at most linalg::max_input_file_bytes) and parses it. Throws LinkageFileError.
+LinkageDescription read_linkage_description(const std::string& path);
+
+}  // namespace numlab::mechanisms

@@ -1,0 +1,99 @@
+#pragma once
+// A linkage over a driver sweep: every pose solved from the one before (continuation from the
+// reference pose), with per pose the joints, their velocities and accelerations, kappa(J), the
+// branch signature and every dyad's transmission angle; where the linkage stops assembling, the
+// limit found by bisection and the block that cannot close.
+//
+// Velocity and acceleration come from the Jacobian already at hand (per radian of crank, or per
+// unit of slider travel):
+//   J qdot  = -Phi_t
+//   J qddot = gamma = -(qdot' Phi_qq qdot + Phi_tt)
+// check_derivatives() compares them with finite differences of solved positions.
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "numlab/mechanisms/linkage/linkage_solver.hpp"
+
+namespace numlab::mechanisms {
+
+struct LinkagePose {
+  double driver = 0.0;                // user units: degrees of crank, or slider travel
+  Eigen::VectorXd q;                  // the unknowns (moving joints' x, y)
+  Eigen::VectorXd velocity;           // dq/dt; empty when the pose did not converge
+  Eigen::VectorXd acceleration;       // d2q/dt2
+  nonlinear::NewtonCounts outcome;
+  int failed_block = -1;              // the block that failed (sequential and analytic)
+  double condition = 0.0;             // kappa_2(J) (NaN when not converged)
+  double closed_form_distance = 0.0;  // max |q - closed form| when every block has one (NaN otherwise)
+  double closed_form_bound = 0.0;     // how far the residual test allows: 10 ||J^-1||_2 (||Phi||_2 + n eps |q|)
+  std::vector<int> signature;         // per block (LinkageSolver::signature)
+  std::vector<double> transmission_deg;  // per block, NaN for non-dyads
+  int step_halvings = 0;              // continuation steps halved to reach this pose
+  bool branch_kept = false;           // converged, and no jump to another branch up to here
+};
+
+// Where the linkage stops assembling between two poses of the sweep.
+struct LinkageLimit {
+  double driver = 0.0;            // the last assembling value found by bisection (user units)
+  double bracket = 0.0;           // the width of the final bracket (user units), <= 0.01 deg
+  int block = -1;                 // the block that cannot close beyond it
+  double transmission_deg = 0.0;  // that block's transmission angle at the limit (NaN: not a dyad)
+  bool upper = true;              // the sweep leaves the assembling range (true) or enters it
+};
+
+struct LinkageSweep {
+  std::vector<LinkagePose> poses;
+  Status status = Status::converged;  // converged when every pose did; else the first failure's
+  bool branch_kept = true;            // no block's signature changed between poses but at change points
+  bool closed_form_verified = true;   // every converged pose within its closed-form bound, and that bound
+                                      // below half the shortest length (when there is a closed form)
+  std::vector<std::string> flips;     // a block that jumped to another branch between two poses
+  std::vector<std::string> change_points;  // a dyad that passed a change point (reported, not a flip)
+  std::vector<LinkageLimit> limits;
+};
+
+// Called with each pose as soon as it is made (for --trace and --step); may throw to stop the sweep.
+using LinkagePoseObserver = std::function<void(const LinkagePose&)>;
+
+// Solves the poses start, start+step, ..., stop (user units). Throws std::invalid_argument for a
+// step that is zero or not finite or points away from stop.
+LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
+                           const LinkagePoseObserver& observer = {});
+
+// The velocity alone: J qdot = -Phi_t.
+Eigen::VectorXd linkage_velocity(const LinkageModel& model, double t, const Eigen::VectorXd& q);
+
+// Velocity and acceleration at a solved pose (model units for t).
+void linkage_kinematics(const LinkageModel& model, double t, const Eigen::VectorXd& q, Eigen::VectorXd& velocity,
+                        Eigen::VectorXd& acceleration);
+
+// kappa_2 of J at a pose, and ||J^-1||_2 = 1 / sigma_min.
+struct LinkageConditioning {
+  double condition = 0.0;
+  double inverse_norm = 0.0;
+};
+LinkageConditioning linkage_conditioning(const LinkageModel& model, double t, const Eigen::VectorXd& q);
+inline double linkage_condition(const LinkageModel& model, double t, const Eigen::VectorXd& q) {
+  return linkage_conditioning(model, t, q).condition;
+}
+
+// The largest differences between the velocity and acceleration from the Jacobian and those from
+// finite differences of positions solved at t +- k h (central, 2nd order, h = 1e-5 for the velocity;
+// the 7-point stencil, 6th order, h = 0.01 for the acceleration). Every position, the pose's own
+// included, is solved again from q_near by Newton to 64 eps |q|.
+struct DerivativeCheck {
+  double velocity_difference = 0.0;
+  double acceleration_difference = 0.0;
+  double velocity_scale = 0.0;       // max |qdot|, for a relative reading
+  double acceleration_scale = 0.0;   // max |qddot|
+  bool solved = true;                // false when a neighbouring pose did not solve
+};
+DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q_near);
+
+// Positions of a pose, as joints.
+inline JointPositions pose_joints(const LinkageModel& model, const LinkagePose& pose) { return model.positions(pose.q); }
+
+}  // namespace numlab::mechanisms

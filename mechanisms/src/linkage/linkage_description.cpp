@@ -1,0 +1,564 @@
+// The reader of linkage description files (docs/linkage-files.md): TOML parsed by toml++ (header-only,
+// here and nowhere else, so that the fuzzer instruments the parser too), then every section checked
+// strictly, top to bottom, the first problem thrown as "FILE:LINE:COLUMN: problem".
+
+#include "numlab/mechanisms/linkage/linkage_description.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <utility>
+
+#include "numlab/linalg/matrix_file.hpp"
+#include "numlab/printable_text.hpp"
+
+// toml++ 3.3 states a precondition of its key parser as an assertion that malformed input breaks
+// ("[%", "[[[1]]]": marzer/tomlplusplus issue 294, fixed upstream by pull request 301; found here by
+// fuzz_linkage_description). With assertions on it aborts; with NDEBUG under clang it becomes
+// __builtin_assume, undefined behaviour. With the check skipped, as in a GCC release build, the
+// parser goes on to report the input as a syntax error at the right place. So its internal checks
+// are skipped in every build, and NDEBUG is hidden while it is included so that none of them can
+// turn into an assumption. Everything else is included first, untouched by this.
+#pragma push_macro("NDEBUG")
+#undef NDEBUG
+#define TOML_ASSERT(expr) static_cast<void>(0)
+#define TOML_HEADER_ONLY 1
+#include <toml++/toml.h>
+#pragma pop_macro("NDEBUG")
+
+namespace numlab::mechanisms {
+
+namespace {
+
+// A description has at most this many joints: far beyond any teaching linkage, and it keeps the
+// pairwise checks of a body's local points quick on any file up to the 16 MiB input limit.
+constexpr std::size_t max_joints = 1000;
+constexpr std::size_t max_joint_name = 32;
+constexpr std::size_t max_linkage_name = 64;
+constexpr std::size_t max_title = 200;
+// Two local points of a body closer than this times the body's size coincide; all its points
+// within it of one line are collinear (the size: the largest distance between two of its points).
+constexpr double body_relative_tolerance = 1e-9;
+
+int clamped(toml::source_index index) { return static_cast<int>(std::min<toml::source_index>(index, INT_MAX)); }
+
+SourcePlace place_of(const toml::source_region& region) {
+  return {clamped(region.begin.line), clamped(region.begin.column)};
+}
+SourcePlace place_of(const toml::node& node) { return place_of(node.source()); }
+SourcePlace place_of(const toml::key& key) { return place_of(key.source()); }
+
+bool before(SourcePlace a, SourcePlace b) { return std::pair{a.line, a.column} < std::pair{b.line, b.column}; }
+
+std::string quoted(std::string_view text) { return linalg::quoted_token(text); }
+
+std::string number_text(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
+bool is_name_char(char c, bool dash_allowed) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+         (dash_allowed && c == '-');
+}
+
+bool valid_name(std::string_view name, std::size_t max_length, bool dash_allowed) {
+  return !name.empty() && name.size() <= max_length &&
+         std::all_of(name.begin(), name.end(), [&](char c) { return is_name_char(c, dash_allowed); });
+}
+
+// The keys of a table in the order the file writes them (toml++ keeps a sorted map).
+std::vector<std::pair<const toml::key*, const toml::node*>> in_file_order(const toml::table& table) {
+  std::vector<std::pair<const toml::key*, const toml::node*>> entries;
+  for (const auto& [key, node] : table) entries.emplace_back(&key, &node);
+  std::stable_sort(entries.begin(), entries.end(),
+                   [](const auto& a, const auto& b) { return before(place_of(*a.first), place_of(*b.first)); });
+  return entries;
+}
+
+// Does a line of the text start the linkage table ("[linkage]", "linkage = {", "linkage.name = ")?
+// Decides whether a file TOML cannot parse is reported as a linkage with a syntax error or as
+// something that is not a linkage at all.
+bool mentions_linkage_table(std::string_view text) {
+  text = linalg::without_byte_order_mark(text);
+  for (std::size_t begin = 0; begin < text.size();) {
+    const std::size_t end = std::min(text.find('\n', begin), text.size());
+    std::string_view line = text.substr(begin, end - begin);
+    begin = end + 1;
+    const auto skip = [&](std::string_view characters) {
+      line.remove_prefix(std::min(line.find_first_not_of(characters), line.size()));
+    };
+    skip(" \t");
+    if (line.starts_with('[')) line.remove_prefix(1);
+    skip(" \t\"'");
+    constexpr std::string_view key = "linkage";
+    if (line.starts_with(key) && (line.size() == key.size() || !is_name_char(line[key.size()], true))) return true;
+  }
+  return false;
+}
+
+// toml++ 3.3's table of non-ASCII blanks reaches __builtin_unreachable (undefined behaviour) for the
+// code points below, wherever its parser asks whether one is a blank: upstream issues 190 and 295,
+// fixed by pull request 305; found here by fuzz_linkage_description. Checked exhaustively under UBSan:
+// every other code point is safe. The first such character in the text, with its place, or nothing.
+struct UnsafeCharacter {
+  char32_t code = 0;
+  SourcePlace place;
+};
+
+bool unsafe_for_toml(char32_t c) {
+  return (c >= 0xA1 && c <= 0x499) || (c >= 0x2C5E && c <= 0x3057 && c != 0x3000) || (c >= 0xFB26 && c <= 0xFEFE);
+}
+
+std::optional<UnsafeCharacter> first_unsafe_character(std::string_view text) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < text.size(); ++column) {
+    const auto lead = static_cast<unsigned char>(text[i++]);
+    if (lead == '\n') {
+      ++line;
+      column = 0;
+      continue;
+    }
+    // Decoded leniently (toml++ refuses ill-formed UTF-8 itself): a lead byte and its continuations.
+    const int extra = lead >= 0xF0 ? 3 : lead >= 0xE0 ? 2 : lead >= 0xC0 ? 1 : 0;
+    char32_t code = extra == 0 ? lead : lead & (0x3Fu >> extra);
+    for (int k = 0; k < extra && i < text.size() && (static_cast<unsigned char>(text[i]) & 0xC0u) == 0x80u; ++k) {
+      code = (code << 6) | (static_cast<unsigned char>(text[i++]) & 0x3Fu);
+    }
+    if (unsafe_for_toml(code)) return UnsafeCharacter{code, {line, column}};
+  }
+  return std::nullopt;
+}
+
+std::string code_point_text(char32_t code) {
+  static constexpr char hex[] = "0123456789ABCDEF";
+  std::string digits = "U+";
+  for (int shift = 12; shift >= 0; shift -= 4) digits += hex[(code >> shift) & 0xFu];
+  return digits;
+}
+
+class Reader {
+ public:
+  Reader(const toml::table& root, const std::string& file) : root_(root), file_(file) {}
+
+  LinkageDescription read() {
+    description_.file = file_;
+    const toml::node* linkage = root_.get("linkage");
+    if (linkage == nullptr) fail({}, "not a linkage description: no [linkage] table");
+    check_top_level_keys();
+    read_linkage(table_of(*linkage, "[linkage]"));
+    read_joints();
+    for_each_table("link", [&](const toml::table& t) { read_link(t); });
+    for_each_table("body", [&](const toml::table& t) { read_body(t); });
+    for_each_table("slider", [&](const toml::table& t) { read_slider(t); });
+    const toml::node* driver = root_.get("driver");
+    if (driver == nullptr) fail({}, "no [driver] table: a linkage needs exactly one driver");
+    read_driver(table_of(*driver, "[driver]"));
+    return std::move(description_);
+  }
+
+ private:
+  [[noreturn]] void fail(SourcePlace place, const std::string& problem) const {
+    throw LinkageFileError(file_, place, problem);
+  }
+
+  // --- the pieces every section uses ---------------------------------------------------------
+
+  const toml::table& table_of(const toml::node& node, const std::string& what) const {
+    if (const toml::table* table = node.as_table()) return *table;
+    fail(place_of(node), what + " must be a table");
+  }
+
+  // Every key of `table` must be one of `allowed`.
+  void check_keys(const toml::table& table, std::initializer_list<std::string_view> allowed,
+                  const std::string& where) const {
+    for (const auto& [key, node] : in_file_order(table)) {
+      if (std::find(allowed.begin(), allowed.end(), key->str()) == allowed.end()) {
+        fail(place_of(*key), "unknown key " + quoted(key->str()) + " in " + where);
+      }
+    }
+  }
+
+  const toml::node& required(const toml::table& table, std::string_view key, const std::string& where) const {
+    if (const toml::node* node = table.get(key)) return *node;
+    fail(place_of(table), where + " needs " + quoted(key));
+  }
+
+  std::string_view string_of(const toml::node& node, const std::string& what) const {
+    if (const auto* text = node.as_string()) return text->get();
+    fail(place_of(node), what + " must be a string");
+  }
+
+  double number_of(const toml::node& node, const std::string& what) const {
+    std::optional<double> value;
+    if (const auto* integer = node.as_integer()) value = static_cast<double>(integer->get());
+    if (const auto* floating = node.as_floating_point()) value = floating->get();
+    if (!value) fail(place_of(node), what + " must be a number");
+    if (!std::isfinite(*value)) fail(place_of(node), what + " must be finite, got " + number_text(*value));
+    return *value;
+  }
+
+  Eigen::Vector2d point_of(const toml::node& node, const std::string& what) const {
+    const toml::array* pair = node.as_array();
+    if (pair == nullptr || pair->size() != 2) fail(place_of(node), what + " must be [x, y], two numbers");
+    return {number_of(*pair->get(0), what + ": x"), number_of(*pair->get(1), what + ": y")};
+  }
+
+  // The joint a string names; it must exist.
+  int joint_of(const toml::node& node, const std::string& what) const {
+    const std::string_view name = string_of(node, what);
+    const auto found = joint_indices_.find(name);
+    if (found == joint_indices_.end()) fail(place_of(node), "unknown joint " + quoted(name));
+    return found->second;
+  }
+
+  // Each table of the array of tables [[key]], if there is one.
+  template <typename Read>
+  void for_each_table(std::string_view key, Read read) const {
+    const toml::node* node = root_.get(key);
+    if (node == nullptr) return;
+    for (const toml::node& item : *node->as_array()) read(table_of(item, "[[" + std::string(key) + "]]"));
+  }
+
+  // --- the sections, in the order they are checked ----------------------------------------------
+
+  void check_top_level_keys() const {
+    struct Section {
+      std::string_view key;
+      bool array_of_tables;
+    };
+    static constexpr Section sections[] = {{"linkage", false}, {"ground", false}, {"joints", false},
+                                           {"link", true},     {"body", true},    {"slider", true},
+                                           {"driver", false}};
+    for (const auto& entry : in_file_order(root_)) {
+      const toml::key* key = entry.first;
+      const toml::node* node = entry.second;
+      const auto* section = std::find_if(std::begin(sections), std::end(sections),
+                                         [&](const Section& s) { return s.key == key->str(); });
+      const std::string name = printable(key->str().substr(0, 40));
+      if (section == std::end(sections)) {
+        const bool table = node->is_table();
+        const bool tables = node->is_array_of_tables();
+        fail(place_of(*key), table    ? "unknown table [" + name + "]"
+                             : tables ? "unknown table [[" + name + "]]"
+                                      : "unknown key " + quoted(key->str()));
+      }
+      if (section->array_of_tables && !node->is_array_of_tables()) {
+        fail(place_of(*key), "write [[" + name + "]], one table per item");
+      }
+      if (!section->array_of_tables && !node->is_table()) fail(place_of(*key), "[" + name + "] must be a table");
+    }
+  }
+
+  void read_linkage(const toml::table& linkage) {
+    check_keys(linkage, {"name", "title"}, "[linkage]");
+    const toml::node& name_node = required(linkage, "name", "[linkage]");
+    const std::string_view name = string_of(name_node, "the linkage's name");
+    if (!valid_name(name, max_linkage_name, true)) {
+      fail(place_of(name_node), "invalid linkage name " + quoted(name) + ": use 1 to " +
+                                    std::to_string(max_linkage_name) + " letters, digits, '-' or '_'");
+    }
+    description_.name = name;
+    if (const toml::node* title_node = linkage.get("title")) {
+      const std::string_view title = string_of(*title_node, "the linkage's title");
+      if (title.size() > max_title) fail(place_of(*title_node), "title longer than " + std::to_string(max_title) + " bytes");
+      if (std::any_of(title.begin(), title.end(), [](char c) { return (c >= 0 && c < 0x20) || c == 0x7F; })) {
+        fail(place_of(*title_node), "title has a control character: " + quoted(title));
+      }
+      description_.title = title;
+    }
+  }
+
+  void read_joints() {
+    read_joint_table("ground", true);
+    read_joint_table("joints", false);
+    const bool none_moving = std::none_of(description_.joints.begin(), description_.joints.end(),
+                                          [](const JointSpec& joint) { return !joint.ground; });
+    if (none_moving) {
+      const toml::node* joints = root_.get("joints");
+      fail(joints ? place_of(*joints) : SourcePlace{}, "no moving joints: list them in [joints]");
+    }
+  }
+
+  void read_joint_table(std::string_view key, bool ground) {
+    const toml::node* node = root_.get(key);
+    if (node == nullptr) return;
+    for (const auto& [name_key, value] : in_file_order(*node->as_table())) {
+      const std::string_view name = name_key->str();
+      const SourcePlace place = place_of(*name_key);
+      if (!valid_name(name, max_joint_name, false)) {
+        fail(place, "invalid joint name " + quoted(name) + ": use 1 to " + std::to_string(max_joint_name) +
+                        " letters, digits or '_'");
+      }
+      if (const auto other = joint_indices_.find(name); other != joint_indices_.end()) {
+        fail(place, "joint " + quoted(name) + " is already defined at line " +
+                        std::to_string(description_.joints[static_cast<std::size_t>(other->second)].place.line));
+      }
+      if (description_.joints.size() == max_joints) fail(place, "more than " + std::to_string(max_joints) + " joints");
+      const Eigen::Vector2d position = point_of(*value, "the position of joint " + quoted(name));
+      joint_indices_.emplace(name, static_cast<int>(description_.joints.size()));
+      description_.joints.push_back({std::string(name), ground, position, place});
+    }
+  }
+
+  // The two joints of a link, or of a link-like pair: two names of existing, different joints.
+  void read_link(const toml::table& link) {
+    check_keys(link, {"joints", "length"}, "[[link]]");
+    const toml::node& joints_node = required(link, "joints", "[[link]]");
+    const toml::array* joints = joints_node.as_array();
+    if (joints == nullptr || joints->size() != 2) fail(place_of(joints_node), "a link's joints must be two joint names");
+    LinkSpec spec;
+    spec.place = place_of(link);
+    spec.first = joint_of(*joints->get(0), "a link's joint");
+    spec.second = joint_of(*joints->get(1), "a link's joint");
+    const std::string& first_name = description_.joints[static_cast<std::size_t>(spec.first)].name;
+    const std::string& second_name = description_.joints[static_cast<std::size_t>(spec.second)].name;
+    if (spec.first == spec.second) fail(place_of(joints_node), "a link from joint " + quoted(first_name) + " to itself");
+    const auto pair = std::minmax(spec.first, spec.second);
+    if (const auto [it, added] = link_lines_.emplace(pair, spec.place.line); !added) {
+      fail(place_of(joints_node), "a second link between " + quoted(first_name) + " and " + quoted(second_name) +
+                                      " (the first is at line " + std::to_string(it->second) + ")");
+    }
+    const toml::node& length_node = required(link, "length", "[[link]]");
+    spec.length = number_of(length_node, "a link's length");
+    if (spec.length <= 0.0) {
+      fail(place_of(length_node), "a link's length must be positive, got " + number_text(spec.length));
+    }
+    description_.links.push_back(spec);
+  }
+
+  void read_body(const toml::table& body) {
+    check_keys(body, {"name", "joints", "local"}, "[[body]]");
+    BodySpec spec;
+    spec.place = place_of(body);
+    spec.name = "body " + std::to_string(description_.bodies.size() + 1);
+    if (const toml::node* name_node = body.get("name")) {
+      const std::string_view name = string_of(*name_node, "a body's name");
+      if (!valid_name(name, max_joint_name, true)) {
+        fail(place_of(*name_node), "invalid body name " + quoted(name) + ": use 1 to " +
+                                       std::to_string(max_joint_name) + " letters, digits, '-' or '_'");
+      }
+      spec.name = name;
+    }
+    const toml::node& joints_node = required(body, "joints", "[[body]]");
+    const toml::array* joints = joints_node.as_array();
+    if (joints == nullptr) fail(place_of(joints_node), "a body's joints must be a list of joint names");
+    if (joints->size() < 3) {
+      fail(place_of(joints_node), "a body needs at least 3 joints, got " + std::to_string(joints->size()) +
+                                      " (two joints make a [[link]])");
+    }
+    std::vector<bool> in_body(description_.joints.size(), false);
+    for (const toml::node& item : *joints) {
+      const int joint = joint_of(item, "a body's joint");
+      if (in_body[static_cast<std::size_t>(joint)]) {
+        fail(place_of(item), "joint " + quoted(description_.joints[static_cast<std::size_t>(joint)].name) +
+                                 " appears twice in the body");
+      }
+      in_body[static_cast<std::size_t>(joint)] = true;
+      spec.joints.push_back(joint);
+    }
+    const toml::node& local_node = required(body, "local", "[[body]]");
+    const toml::array* local = local_node.as_array();
+    if (local == nullptr || local->size() != joints->size()) {
+      fail(place_of(local_node), "'local' must give one [x, y] per joint: " + std::to_string(joints->size()) +
+                                     " joints, " + (local ? std::to_string(local->size()) : std::string("no")) +
+                                     " points");
+    }
+    for (std::size_t k = 0; k < local->size(); ++k) {
+      spec.local.push_back(point_of(*local->get(k), "local point " + std::to_string(k + 1)));
+    }
+    check_body_shape(spec, place_of(local_node));
+    description_.bodies.push_back(std::move(spec));
+  }
+
+  // No two local points coincide, and not all lie on one line (both relative to the body's size).
+  void check_body_shape(const BodySpec& body, SourcePlace place) const {
+    const std::size_t n = body.local.size();
+    double size = 0.0;
+    std::size_t far_a = 0, far_b = 1;
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = i + 1; j < n; ++j) {
+        if (const double d = (body.local[i] - body.local[j]).norm(); d > size) {
+          size = d;
+          far_a = i;
+          far_b = j;
+        }
+      }
+    }
+    const double tolerance = body_relative_tolerance * size;
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = i + 1; j < n; ++j) {
+        if ((body.local[i] - body.local[j]).norm() <= tolerance) {
+          fail(place, "local points of joints " + joint_name(body.joints[i]) + " and " + joint_name(body.joints[j]) +
+                          " coincide in body " + quoted(body.name));
+        }
+      }
+    }
+    const Eigen::Vector2d axis = (body.local[far_b] - body.local[far_a]) / size;
+    double height = 0.0;
+    for (const Eigen::Vector2d& p : body.local) {
+      const Eigen::Vector2d r = p - body.local[far_a];
+      height = std::max(height, std::abs(axis.x() * r.y() - axis.y() * r.x()));
+    }
+    if (height <= tolerance) fail(place, "the local points of body " + quoted(body.name) + " lie on one line");
+  }
+
+  std::string joint_name(int index) const { return quoted(description_.joints[static_cast<std::size_t>(index)].name); }
+
+  void read_slider(const toml::table& slider) {
+    check_keys(slider, {"joint", "through", "angle"}, "[[slider]]");
+    SliderSpec spec;
+    spec.place = place_of(slider);
+    const toml::node& joint_node = required(slider, "joint", "[[slider]]");
+    spec.joint = joint_of(joint_node, "a slider's joint");
+    if (description_.joints[static_cast<std::size_t>(spec.joint)].ground) {
+      fail(place_of(joint_node), "a slider on ground joint " + joint_name(spec.joint) + ": it cannot move");
+    }
+    for (const SliderSpec& other : description_.sliders) {
+      if (other.joint == spec.joint) {
+        fail(place_of(joint_node), "joint " + joint_name(spec.joint) + " already has a slider at line " +
+                                       std::to_string(other.place.line));
+      }
+    }
+    spec.through = point_of(required(slider, "through", "[[slider]]"), "a slider's 'through' point");
+    if (const toml::node* angle = slider.get("angle")) spec.angle_deg = number_of(*angle, "a slider's angle");
+    description_.sliders.push_back(spec);
+  }
+
+  void read_driver(const toml::table& driver) {
+    DriverSpec& spec = description_.driver;
+    spec.place = place_of(driver);
+    const toml::node& type_node = required(driver, "type", "[driver]");
+    const std::string_view type = string_of(type_node, "the driver's type");
+    if (type == "crank") {
+      check_keys(driver, {"type", "pivot", "joint", "angle"}, "a crank [driver]");
+      read_crank(driver);
+    } else if (type == "slider") {
+      check_keys(driver, {"type", "joint", "travel"}, "a slider [driver]");
+      read_slider_driver(driver);
+    } else {
+      fail(place_of(type_node), "unknown driver type " + quoted(type) + ": use \"crank\" or \"slider\"");
+    }
+  }
+
+  void read_crank(const toml::table& driver) {
+    DriverSpec& spec = description_.driver;
+    spec.kind = DriverKind::crank;
+    const toml::node& pivot_node = required(driver, "pivot", "[driver]");
+    spec.pivot = joint_of(pivot_node, "the crank's pivot");
+    if (!description_.joints[static_cast<std::size_t>(spec.pivot)].ground) {
+      fail(place_of(pivot_node), "a driver on a joint that is not grounded: the crank's pivot " +
+                                     joint_name(spec.pivot) + " is a moving joint");
+    }
+    const toml::node& joint_node = required(driver, "joint", "[driver]");
+    spec.joint = joint_of(joint_node, "the crank's joint");
+    if (description_.joints[static_cast<std::size_t>(spec.joint)].ground) {
+      fail(place_of(joint_node), "the crank's joint " + joint_name(spec.joint) + " is a ground joint, not a moving one");
+    }
+    if (!linked(spec.pivot, spec.joint)) {
+      fail(place_of(joint_node), "the crank's joint " + joint_name(spec.joint) + " is on no [[link]] or [[body]] with pivot " +
+                                     joint_name(spec.pivot));
+    }
+    spec.reference = number_of(required(driver, "angle", "[driver]"), "the crank's angle");
+  }
+
+  // Is there a link or a body with both joints?
+  bool linked(int a, int b) const {
+    const auto has = [](const std::vector<int>& joints, int j) {
+      return std::find(joints.begin(), joints.end(), j) != joints.end();
+    };
+    return link_lines_.count(std::minmax(a, b)) > 0 ||
+           std::any_of(description_.bodies.begin(), description_.bodies.end(),
+                       [&](const BodySpec& body) { return has(body.joints, a) && has(body.joints, b); });
+  }
+
+  void read_slider_driver(const toml::table& driver) {
+    DriverSpec& spec = description_.driver;
+    spec.kind = DriverKind::slider;
+    const toml::node& joint_node = required(driver, "joint", "[driver]");
+    spec.joint = joint_of(joint_node, "the slider driver's joint");
+    const auto& sliders = description_.sliders;
+    const auto slider = std::find_if(sliders.begin(), sliders.end(),
+                                     [&](const SliderSpec& s) { return s.joint == spec.joint; });
+    if (slider == sliders.end()) {
+      fail(place_of(joint_node), "joint " + joint_name(spec.joint) + " has no [[slider]] for the slider driver to move");
+    }
+    spec.slider = static_cast<int>(slider - sliders.begin());
+    spec.reference = number_of(required(driver, "travel", "[driver]"), "the slider's travel");
+  }
+
+  const toml::table& root_;
+  const std::string& file_;
+  LinkageDescription description_;
+  std::map<std::string, int, std::less<>> joint_indices_;  // joint name -> index
+  std::map<std::pair<int, int>, int> link_lines_;  // joint pair (smaller index first) -> line of its link
+};
+
+}  // namespace
+
+int LinkageDescription::joint_index(std::string_view joint_name) const {
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    if (joints[i].name == joint_name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+namespace {
+
+std::string located(const std::string& file, SourcePlace place, const std::string& problem) {
+  std::string where = printable(file);
+  if (place.line > 0) where += ":" + std::to_string(place.line);
+  if (place.line > 0 && place.column > 0) where += ":" + std::to_string(place.column);
+  return where + ": " + problem;
+}
+
+}  // namespace
+
+LinkageFileError::LinkageFileError(const std::string& file, SourcePlace place, const std::string& problem)
+    : std::invalid_argument(located(file, place, problem)), problem_(problem), place_(place) {}
+
+LinkageDescription parse_linkage_description(std::string_view toml_text, const std::string& file) {
+  if (const auto unsafe = first_unsafe_character(toml_text)) {
+    const std::string code = code_point_text(unsafe->code);
+    throw LinkageFileError(file, unsafe->place,
+                           "the character " + code + " is one toml++ 3.3 cannot read safely; in a string write it as \\u" +
+                               code.substr(2));
+  }
+  toml::table root;
+  try {
+    root = toml::parse(toml_text);
+  } catch (const toml::parse_error& error) {
+    // toml++ says "Error while parsing key-value pair: expected '=', saw 'N'" or "Encountered ...".
+    const std::string_view description = error.description();
+    constexpr std::string_view prefix = "Error while parsing ";
+    const std::string detail = printable(description.starts_with(prefix)
+                                             ? " in " + std::string(description.substr(prefix.size(), 160))
+                                             : ": " + std::string(description.substr(0, 160)));
+    throw LinkageFileError(file, place_of(error.source()),
+                           mentions_linkage_table(toml_text)
+                               ? "TOML syntax error" + detail
+                               : "not a linkage description (no [linkage] table, and TOML syntax error" + detail + ")");
+  }
+  return Reader(root, file).read();
+}
+
+LinkageDescription read_linkage_description(const std::string& path) {
+  std::string text;
+  try {
+    text = linalg::read_text_file(path);
+  } catch (const std::invalid_argument& error) {
+    // read_text_file says "FILE: problem"; keep the problem, LinkageFileError adds the file.
+    std::string_view problem = error.what();
+    if (const std::string prefix = printable(path) + ": "; problem.starts_with(prefix)) problem.remove_prefix(prefix.size());
+    throw LinkageFileError(path, {}, std::string(problem));
+  }
+  return parse_linkage_description(text, path);
+}
+
+}  // namespace numlab::mechanisms

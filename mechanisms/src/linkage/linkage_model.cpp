@@ -1,0 +1,296 @@
+#include "numlab/mechanisms/linkage/linkage_model.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "numlab/mechanisms/linkage/linkage_structure.hpp"
+
+namespace numlab::mechanisms {
+
+namespace {
+
+Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+
+Eigen::Vector2d unit_at(double angle_rad) { return {std::cos(angle_rad), std::sin(angle_rad)}; }
+
+std::string pair_name(const LinkageDescription& d, int i, int j) { return d.joints[static_cast<std::size_t>(i)].name + "-" + d.joints[static_cast<std::size_t>(j)].name; }
+
+// (a, b) with c - b0 = a (b1 - b0) + b perp(b1 - b0), from local coordinates.
+Eigen::Vector2d body_coefficients(const Eigen::Vector2d& b0, const Eigen::Vector2d& b1, const Eigen::Vector2d& c) {
+  const Eigen::Vector2d base = b1 - b0, offset = c - b0;
+  const double squared = base.squaredNorm();
+  return {offset.dot(base) / squared, offset.dot(perp(base)) / squared};
+}
+
+}  // namespace
+
+LinkageModel::LinkageModel(LinkageDescription description) : description_(std::move(description)) {
+  derive();
+  require_one_degree_of_freedom(*this);
+}
+
+void LinkageModel::add(Constraint constraint) {
+  first_row_.push_back(equation_count_);
+  for (int r = 0; r < constraint.rows(); ++r) row_constraint_.push_back(static_cast<int>(constraints_.size()));
+  equation_count_ += constraint.rows();
+  constraints_.push_back(std::move(constraint));
+}
+
+void LinkageModel::derive() {
+  const auto& d = description_;
+  column_.assign(d.joints.size(), -1);
+  for (std::size_t j = 0; j < d.joints.size(); ++j) {
+    if (!d.joints[j].ground) {
+      column_[j] = 2 * static_cast<int>(moving_.size());
+      moving_.push_back(static_cast<int>(j));
+    }
+  }
+  const DriverSpec& driver = d.driver;
+  const auto driven_pair = [&](int i, int j) {
+    return driver.kind == DriverKind::crank &&
+           ((i == driver.pivot && j == driver.joint) || (i == driver.joint && j == driver.pivot));
+  };
+  // 1. Links: one distance each, but the crank's own link is the driver's.
+  for (const LinkSpec& link : d.links) {
+    if (driven_pair(link.first, link.second)) continue;
+    Constraint c;
+    c.kind = ConstraintKind::distance;
+    c.joints = {link.first, link.second, -1};
+    c.length = link.length;
+    c.name = "link " + pair_name(d, link.first, link.second);
+    c.place = link.place;
+    add(std::move(c));
+  }
+  // 2. Bodies: the base pair's distance (the crank's pair when the crank turns this body), then
+  // each further joint placed by the base pair.
+  for (const BodySpec& body : d.bodies) {
+    std::size_t b0 = 0, b1 = 1;
+    for (std::size_t i = 0; i < body.joints.size(); ++i) {
+      for (std::size_t k = 0; k < body.joints.size(); ++k) {
+        if (i != k && driven_pair(body.joints[i], body.joints[k]) && body.joints[i] == driver.pivot) b0 = i, b1 = k;
+      }
+    }
+    const int j0 = body.joints[b0], j1 = body.joints[b1];
+    if (!driven_pair(j0, j1)) {
+      Constraint c;
+      c.kind = ConstraintKind::distance;
+      c.joints = {j0, j1, -1};
+      c.length = (body.local[b1] - body.local[b0]).norm();
+      c.name = "body " + body.name + ": " + pair_name(d, j0, j1);
+      c.place = body.place;
+      add(std::move(c));
+    }
+    for (std::size_t k = 0; k < body.joints.size(); ++k) {
+      if (k == b0 || k == b1) continue;
+      Constraint c;
+      c.kind = ConstraintKind::body_point;
+      c.joints = {j0, j1, body.joints[k]};
+      c.coefficients = body_coefficients(body.local[b0], body.local[b1], body.local[k]);
+      c.name = "body " + body.name + ": " + d.joints[static_cast<std::size_t>(body.joints[k])].name + " from " +
+               pair_name(d, j0, j1);
+      c.place = body.place;
+      add(std::move(c));
+    }
+  }
+  // 3. Sliders: the joint on its line.
+  for (const SliderSpec& slider : d.sliders) {
+    Constraint c;
+    c.kind = ConstraintKind::slider_line;
+    c.joints = {slider.joint, -1, -1};
+    c.point = slider.through;
+    c.direction = unit_at(slider.angle_deg * std::numbers::pi / 180.0);
+    c.name = "slider " + d.joints[static_cast<std::size_t>(slider.joint)].name;
+    c.place = slider.place;
+    add(std::move(c));
+  }
+  // 4. The driver.
+  Constraint c;
+  c.kind = driver.kind == DriverKind::crank ? ConstraintKind::crank : ConstraintKind::slider_travel;
+  c.place = driver.place;
+  if (driver.kind == DriverKind::crank) {
+    c.joints = {driver.pivot, driver.joint, -1};
+    c.length = crank_radius(d);
+    c.name = "crank " + pair_name(d, driver.pivot, driver.joint);
+  } else {
+    const SliderSpec& slider = d.sliders[static_cast<std::size_t>(driver.slider)];
+    c.joints = {driver.joint, -1, -1};
+    c.point = slider.through;
+    c.direction = unit_at(slider.angle_deg * std::numbers::pi / 180.0);
+    c.name = "slider driver " + d.joints[static_cast<std::size_t>(driver.joint)].name;
+  }
+  add(std::move(c));
+}
+
+std::string LinkageModel::row_name(int row) const {
+  const Constraint& c = constraints_[static_cast<std::size_t>(row_constraint_[static_cast<std::size_t>(row)])];
+  if (c.rows() == 1) return c.name;
+  const bool second = row != first_row(row_constraint_[static_cast<std::size_t>(row)]);
+  return c.name + (second ? " (y)" : " (x)");
+}
+
+std::string LinkageModel::column_name(int column) const {
+  const auto& joint = description_.joints[static_cast<std::size_t>(moving_[static_cast<std::size_t>(column / 2)])];
+  return (column % 2 == 0 ? "x_" : "y_") + joint.name;
+}
+
+double LinkageModel::driver_from_user(double value) const {
+  return crank_driven() ? value * std::numbers::pi / 180.0 : value;
+}
+
+double LinkageModel::driver_to_user(double value) const {
+  return crank_driven() ? value * 180.0 / std::numbers::pi : value;
+}
+
+JointPositions LinkageModel::positions(const Eigen::VectorXd& q) const {
+  JointPositions p;
+  p.reserve(description_.joints.size());
+  for (std::size_t j = 0; j < description_.joints.size(); ++j) {
+    p.push_back(column_[j] < 0 ? description_.joints[j].position : Eigen::Vector2d(q(column_[j]), q(column_[j] + 1)));
+  }
+  return p;
+}
+
+Eigen::VectorXd LinkageModel::unknowns(const JointPositions& positions) const {
+  Eigen::VectorXd q(unknown_count());
+  for (std::size_t k = 0; k < moving_.size(); ++k) q.segment<2>(2 * static_cast<Eigen::Index>(k)) = positions[static_cast<std::size_t>(moving_[k])];
+  return q;
+}
+
+JointPositions LinkageModel::rough_positions() const {
+  JointPositions p;
+  for (const auto& joint : description_.joints) p.push_back(joint.position);
+  return p;
+}
+
+namespace {
+
+// Position of joint j: from q, or fixed.
+struct PositionReader {
+  const LinkageModel& model;
+  const Eigen::VectorXd& q;
+  Eigen::Vector2d operator()(int joint) const {
+    const int column = model.column_of(joint);
+    return column < 0 ? model.description().joints[static_cast<std::size_t>(joint)].position
+                      : Eigen::Vector2d(q(column), q(column + 1));
+  }
+};
+
+// Adds `block` (rows x 2) to J at the joint's columns, if it moves.
+template <typename Block>
+void put(const LinkageModel& model, Eigen::MatrixXd& J, int row, int joint, const Block& block) {
+  const int column = model.column_of(joint);
+  if (column >= 0) J.block(row, column, block.rows(), 2) += block;
+}
+
+}  // namespace
+
+void LinkageModel::residual(const Eigen::VectorXd& q, double t, Eigen::VectorXd& f) const {
+  const PositionReader p{*this, q};
+  f.resize(equation_count_);
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const Constraint& c = constraints_[k];
+    const int row = first_row_[k];
+    switch (c.kind) {
+      case ConstraintKind::distance:
+        f(row) = ((p(c.joints[0]) - p(c.joints[1])).squaredNorm() - c.length * c.length) / (2.0 * c.length);
+        break;
+      case ConstraintKind::body_point: {
+        const Eigen::Vector2d base = p(c.joints[1]) - p(c.joints[0]);
+        f.segment<2>(row) = p(c.joints[2]) - p(c.joints[0]) - c.coefficients.x() * base - c.coefficients.y() * perp(base);
+        break;
+      }
+      case ConstraintKind::slider_line: {
+        const Eigen::Vector2d offset = p(c.joints[0]) - c.point;
+        f(row) = c.direction.x() * offset.y() - c.direction.y() * offset.x();
+        break;
+      }
+      case ConstraintKind::crank:
+        f.segment<2>(row) = p(c.joints[1]) - p(c.joints[0]) - c.length * unit_at(t + c.offset);
+        break;
+      case ConstraintKind::slider_travel:
+        f(row) = c.direction.dot(p(c.joints[0]) - c.point) - t;
+        break;
+    }
+  }
+}
+
+void LinkageModel::jacobian(const Eigen::VectorXd& q, double /*t*/, Eigen::MatrixXd& J) const {
+  const PositionReader p{*this, q};
+  J.setZero(equation_count_, unknown_count());
+  const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const Constraint& c = constraints_[k];
+    const int row = first_row_[k];
+    switch (c.kind) {
+      case ConstraintKind::distance: {
+        const Eigen::RowVector2d g = (p(c.joints[0]) - p(c.joints[1])).transpose() / c.length;
+        put(*this, J, row, c.joints[0], g);
+        put(*this, J, row, c.joints[1], Eigen::RowVector2d(-g));
+        break;
+      }
+      case ConstraintKind::body_point: {
+        // d/d b1 of a base + b perp(base): a I + b R, R = [[0, -1], [1, 0]] (perp as a matrix).
+        Eigen::Matrix2d rotation;
+        rotation << 0.0, -1.0, 1.0, 0.0;
+        const Eigen::Matrix2d along = c.coefficients.x() * identity + c.coefficients.y() * rotation;
+        put(*this, J, row, c.joints[0], Eigen::Matrix2d(along - identity));
+        put(*this, J, row, c.joints[1], Eigen::Matrix2d(-along));
+        put(*this, J, row, c.joints[2], identity);
+        break;
+      }
+      case ConstraintKind::slider_line:
+        put(*this, J, row, c.joints[0], Eigen::RowVector2d(-c.direction.y(), c.direction.x()));
+        break;
+      case ConstraintKind::crank:
+        put(*this, J, row, c.joints[0], Eigen::Matrix2d(-identity));
+        put(*this, J, row, c.joints[1], identity);
+        break;
+      case ConstraintKind::slider_travel:
+        put(*this, J, row, c.joints[0], Eigen::RowVector2d(c.direction.transpose()));
+        break;
+    }
+  }
+}
+
+void LinkageModel::driver_derivative(const Eigen::VectorXd& /*q*/, double t, Eigen::VectorXd& phi_t) const {
+  phi_t.setZero(equation_count_);
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const Constraint& c = constraints_[k];
+    if (c.kind == ConstraintKind::crank) phi_t.segment<2>(first_row_[k]) = -c.length * perp(unit_at(t + c.offset));
+    if (c.kind == ConstraintKind::slider_travel) phi_t(first_row_[k]) = -1.0;
+  }
+}
+
+void LinkageModel::acceleration_rhs(const Eigen::VectorXd& /*q*/, const Eigen::VectorXd& qdot, double t,
+                                    Eigen::VectorXd& gamma) const {
+  const PositionReader v{*this, qdot};  // velocities; ground joints read as their positions, so mask them
+  const auto velocity = [&](int joint) -> Eigen::Vector2d {
+    return column_of(joint) < 0 ? Eigen::Vector2d::Zero() : v(joint);
+  };
+  gamma.setZero(equation_count_);
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const Constraint& c = constraints_[k];
+    const int row = first_row_[k];
+    // Only the distance rows (quadratic in q) and the crank (in t) have second derivatives.
+    if (c.kind == ConstraintKind::distance) {
+      gamma(row) = -(velocity(c.joints[0]) - velocity(c.joints[1])).squaredNorm() / c.length;
+    } else if (c.kind == ConstraintKind::crank) {
+      gamma.segment<2>(row) = -c.length * unit_at(t + c.offset);
+    }
+  }
+}
+
+Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> LinkageModel::pattern() const {
+  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> result =
+      Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic>::Constant(equation_count_, unknown_count(), false);
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const Constraint& c = constraints_[k];
+    for (int joint : c.joints) {
+      if (joint < 0 || column_of(joint) < 0) continue;
+      result.block(first_row_[k], column_of(joint), c.rows(), 2).setConstant(true);
+    }
+  }
+  return result;
+}
+
+}  // namespace numlab::mechanisms

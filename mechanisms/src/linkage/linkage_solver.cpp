@@ -1,0 +1,337 @@
+#include "numlab/mechanisms/linkage/linkage_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include "numlab/mechanisms/circle_intersection.hpp"
+#include "numlab/nonlinear/gsl_multiroot.hpp"
+#include "numlab/nonlinear/linear_step.hpp"
+#include "numlab/nonlinear/sequential_newton.hpp"
+
+namespace numlab::mechanisms {
+
+const std::vector<std::string>& linkage_solver_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out{"full", "sequential", "analytic"};
+    for (const std::string& type : nonlinear::gsl_multiroot_types()) out.push_back("gsl-" + type);
+    return out;
+  }();
+  return names;
+}
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+Eigen::Vector2d joint_at(const LinkageModel& model, const Eigen::VectorXd& q, int joint) {
+  const int column = model.column_of(joint);
+  return column < 0 ? model.description().joints[static_cast<std::size_t>(joint)].position
+                    : Eigen::Vector2d(q(column), q(column + 1));
+}
+
+void set_joint(const LinkageModel& model, Eigen::VectorXd& q, int joint, const Eigen::Vector2d& p) {
+  q.segment<2>(model.column_of(joint)) = p;
+}
+
+int sign_of(double value) { return value >= 0.0 ? 1 : -1; }
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// The other joint of a distance constraint (its circle's centre) for the block's joint.
+int centre_of(const Constraint& c, int joint) { return c.joints[0] == joint ? c.joints[1] : c.joints[0]; }
+
+// A dyad's two constraints: for circle-line, the distance first.
+struct DyadParts {
+  const Constraint* first;
+  const Constraint* second;
+};
+
+DyadParts dyad_parts(const LinkageModel& model, const LinkageBlock& block) {
+  const Constraint* a = &model.constraints()[static_cast<std::size_t>(block.constraints[0])];
+  const Constraint* b = &model.constraints()[static_cast<std::size_t>(block.constraints[1])];
+  if (a->kind != ConstraintKind::distance) std::swap(a, b);
+  return {a, b};
+}
+
+// The foot of the perpendicular from `point` onto a slider's line.
+Eigen::Vector2d foot_on_line(const Constraint& line, const Eigen::Vector2d& point) {
+  return line.point + (point - line.point).dot(line.direction) * line.direction;
+}
+
+// Of a dyad's two solutions, the one nearer where the joint was (or is predicted to be).
+Eigen::Vector2d nearer(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& near) {
+  return (a - near).squaredNorm() <= (b - near).squaredNorm() ? a : b;
+}
+
+double residual_norm(const LinkageModel& model, const Eigen::VectorXd& q, double t) {
+  Eigen::VectorXd f;
+  model.residual(q, t, f);
+  return f.size() == 0 ? 0.0 : f.lpNorm<Eigen::Infinity>();
+}
+
+}  // namespace
+
+LinkageSolver::LinkageSolver(const LinkageModel& model, LinkageSolverOptions options)
+    : model_(model), options_(std::move(options)), blocks_(linkage_blocks(model)) {
+  const auto& names = linkage_solver_names();
+  if (std::find(names.begin(), names.end(), options_.solver) == names.end()) {
+    throw std::invalid_argument("unknown linkage solver '" + options_.solver + "'");
+  }
+  (void)nonlinear::linear_method_named(options_.linear);  // throws for an unknown name
+  if (options_.solver == "analytic") {
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+      if (!blocks_[b].closed_form()) {
+        throw std::invalid_argument(fmt::format("--solver analytic needs every block in closed form; block {} ({}) is not",
+                                                b + 1, describe_block(model_, blocks_[b])));
+      }
+    }
+  }
+  // The reference pose: damped Newton from the file's rough positions.
+  reference_driver_ = model_.driver_from_user(model_.description().driver.reference);
+  nonlinear::NewtonOptions newton = options_.newton;
+  newton.damped = true;
+  newton.max_iterations = std::max(newton.max_iterations, 100);
+  const LinkageSystem system(model_, reference_driver_);
+  const auto result = nonlinear::newton_solve(system, model_.unknowns(model_.rough_positions()), newton);
+  if (result.status != Status::converged) {
+    const auto& d = model_.description();
+    throw LinkageFileError(d.file, d.driver.place,
+                           fmt::format("the reference pose does not assemble: damped Newton from the rough joint positions "
+                                       "at driver {:g} ends {} with ||Phi||_inf = {:.3g}",
+                                       d.driver.reference, to_string(result.status), result.residual_norm));
+  }
+  reference_ = result.x;
+  reference_signature_ = signature(reference_, reference_driver_);
+}
+
+LinkageSolution LinkageSolver::solve(double t, const Eigen::VectorXd& q0) const {
+  if (options_.solver == "full") return solve_full(t, q0);
+  if (options_.solver == "sequential") return solve_sequential(t, q0);
+  if (options_.solver == "analytic") return closed_form(t, q0);
+  return solve_gsl(t, q0);
+}
+
+LinkageSolution LinkageSolver::solve_full(double t, const Eigen::VectorXd& q0) const {
+  const LinkageSystem system(model_, t);
+  nonlinear::Newton<LinkageSystem, nonlinear::RuntimeLinearStep> newton(
+      system, options_.newton, nonlinear::RuntimeLinearStep(options_.linear, system.dimension()));
+  auto result = newton.solve(q0);
+  return {std::move(result.x), static_cast<nonlinear::NewtonCounts>(result), -1};
+}
+
+namespace {
+
+// The system in shifted unknowns z = q + shift, for GSL's types that estimate J themselves. GSL's finite-difference Jacobian steps by
+// sqrt(eps) |z_j|, which is ~1e-31 for a coordinate that is zero up to rounding (a joint on an
+// axis: 4.7e-23); with every z_j >= 1 the step is sane. The residuals, and so the stop tests, are
+// those of q.
+class ShiftedSystem final : public nonlinear::DynamicSystem {
+ public:
+  ShiftedSystem(const LinkageSystem& system, Eigen::VectorXd shift) : system_(system), shift_(std::move(shift)) {}
+  int dimension() const override { return system_.dimension(); }
+  void residual(const Eigen::VectorXd& z, Eigen::VectorXd& f) const override { system_.residual(z - shift_, f); }
+  void jacobian(const Eigen::VectorXd& z, Eigen::MatrixXd& J) const override { system_.jacobian(z - shift_, J); }
+
+ private:
+  const LinkageSystem& system_;
+  Eigen::VectorXd shift_;
+};
+
+}  // namespace
+
+LinkageSolution LinkageSolver::solve_gsl(double t, const Eigen::VectorXd& q0) const {
+  const LinkageSystem system(model_, t);
+  const std::string type = options_.solver.substr(4);
+  const bool finite_differences = type == "hybrids" || type == "hybrid" || type == "dnewton" || type == "broyden";
+  if (!finite_differences) {  // the types given J need no shift (and its size would loosen their step test)
+    auto result = nonlinear::gsl_multiroot_solve(system, q0, type, options_.newton);
+    return {std::move(result.x), static_cast<nonlinear::NewtonCounts>(result), -1};
+  }
+  const double size = q0.size() == 0 ? 0.0 : q0.lpNorm<Eigen::Infinity>();
+  const Eigen::VectorXd shift = Eigen::VectorXd::Constant(q0.size(), 2.0 * (1.0 + size));
+  const ShiftedSystem shifted(system, shift);
+  auto result = nonlinear::gsl_multiroot_solve(shifted, q0 + shift, type, options_.newton);
+  return {Eigen::VectorXd(result.x - shift), static_cast<nonlinear::NewtonCounts>(result), -1};
+}
+
+// The blocks in order, each by Newton with every other unknown held: the 2x2 closed-form inverse
+// for a two-unknown block, GEPP for a bigger one.
+LinkageSolution LinkageSolver::solve_sequential(double t, const Eigen::VectorXd& q0) const {
+  const LinkageSystem whole(model_, t);
+  LinkageSolution solution{q0, {}, -1};
+  int evaluations = 0;
+  nonlinear::BlockSystem block_system(whole, solution.q, evaluations);
+  solution.outcome.status = Status::converged;
+  solution.outcome.reason = nonlinear::StopReason::residual_small;
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    const nonlinear::Block& block = blocks_[b].rows_and_columns;
+    block_system.select(block);
+    const int n = static_cast<int>(block.unknowns.size());
+    Eigen::VectorXd start(n);
+    for (int i = 0; i < n; ++i) start(i) = solution.q(block.unknowns[static_cast<std::size_t>(i)]);
+    const auto method = n == 2 ? nonlinear::LinearMethod::inverse2x2 : nonlinear::LinearMethod::gepp;
+    nonlinear::Newton<nonlinear::BlockSystem, nonlinear::RuntimeLinearStep> newton(
+        block_system, options_.newton, nonlinear::RuntimeLinearStep(method, n));
+    const auto result = newton.solve(start);
+    for (int i = 0; i < n; ++i) solution.q(block.unknowns[static_cast<std::size_t>(i)]) = result.x(i);
+    solution.outcome.iterations += result.iterations;
+    solution.outcome.jacobian_evaluations += result.jacobian_evaluations;
+    solution.outcome.step_norm = result.step_norm;
+    if (result.status != Status::converged) {
+      solution.outcome.status = result.status;
+      solution.outcome.reason = result.reason;
+      solution.failed_block = static_cast<int>(b);
+      break;
+    }
+  }
+  solution.outcome.function_evaluations = evaluations;
+  solution.outcome.residual_norm = residual_norm(model_, solution.q, t);
+  // Every block converged, so the whole residual is small unless a block's test was too loose.
+  if (solution.outcome.status == Status::converged && !(solution.outcome.residual_norm <= options_.newton.residual_tolerance)) {
+    solution.outcome.status = Status::no_progress;
+    solution.outcome.reason = nonlinear::StopReason::no_progress;
+  }
+  return solution;
+}
+
+LinkageSolution LinkageSolver::closed_form(double t, const Eigen::VectorXd& q0) const {
+  LinkageSolution solution{q0, {}, -1};
+  solution.outcome.status = Status::converged;
+  solution.outcome.reason = nonlinear::StopReason::residual_small;
+  Eigen::VectorXd& q = solution.q;
+  const auto at = [&](int joint) { return joint_at(model_, q, joint); };
+  for (std::size_t b = 0; b < blocks_.size() && solution.failed_block < 0; ++b) {
+    const LinkageBlock& block = blocks_[b];
+    const auto fail = [&] {
+      solution.failed_block = static_cast<int>(b);
+      solution.outcome.status = Status::cannot_assemble;
+      solution.outcome.reason = nonlinear::StopReason::running;
+    };
+    if (block.kind == BlockKind::newton) {
+      fail();
+      break;
+    }
+    const int joint = block.joints[0];
+    const Constraint& c = model_.constraints()[static_cast<std::size_t>(block.constraints[0])];
+    switch (block.kind) {
+      case BlockKind::crank:  // 1. p_A = p_O + r u(t)
+        set_joint(model_, q, joint, at(c.joints[0]) + c.length * Eigen::Vector2d(std::cos(t + c.offset), std::sin(t + c.offset)));
+        break;
+      case BlockKind::body_point: {  // 2. p_c = p_b0 + a base + b perp(base)
+        const Eigen::Vector2d base = at(c.joints[1]) - at(c.joints[0]);
+        set_joint(model_, q, joint, at(c.joints[0]) + c.coefficients.x() * base + c.coefficients.y() * Eigen::Vector2d(-base.y(), base.x()));
+        break;
+      }
+      case BlockKind::slider: {  // 3. p = P + s u
+        const Constraint& line = c.kind == ConstraintKind::slider_travel ? c : model_.constraints()[static_cast<std::size_t>(block.constraints[1])];
+        set_joint(model_, q, joint, line.point + t * line.direction);
+        break;
+      }
+      case BlockKind::circle_circle: {  // 4. two circles meet: the point nearer q0's (continuation)
+        const auto [first, second] = dyad_parts(model_, block);
+        const Eigen::Vector2d c1 = at(centre_of(*first, joint)), c2 = at(centre_of(*second, joint));
+        const auto left = circle_intersection(c1, first->length, c2, second->length, 1);
+        const auto right = circle_intersection(c1, first->length, c2, second->length, -1);
+        if (!left || !right) fail();
+        else set_joint(model_, q, joint, nearer(*left, *right, joint_at(model_, q0, joint)));
+        break;
+      }
+      case BlockKind::circle_line: {  // 5. a circle meets a line: the point nearer q0's
+        const auto [circle, line] = dyad_parts(model_, block);
+        const Eigen::Vector2d centre = at(centre_of(*circle, joint)), foot = foot_on_line(*line, centre);
+        const double half_chord_squared = circle->length * circle->length - (centre - foot).squaredNorm();
+        if (!(half_chord_squared >= 0.0)) {
+          fail();
+        } else {
+          const Eigen::Vector2d along = std::sqrt(half_chord_squared) * line->direction;
+          set_joint(model_, q, joint, nearer(foot + along, foot - along, joint_at(model_, q0, joint)));
+        }
+        break;
+      }
+      case BlockKind::newton:
+        break;
+    }
+  }
+  solution.outcome.residual_norm = residual_norm(model_, q, t);
+  if (solution.failed_block < 0 && !(solution.outcome.residual_norm <= options_.newton.residual_tolerance)) {
+    solution.outcome.status = Status::no_progress;
+    solution.outcome.reason = nonlinear::StopReason::no_progress;
+  }
+  return solution;
+}
+
+std::vector<int> LinkageSolver::signature(const Eigen::VectorXd& q, double t) const {
+  std::vector<int> out(blocks_.size(), 0);
+  Eigen::MatrixXd J;
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    const LinkageBlock& block = blocks_[b];
+    if (block.kind == BlockKind::circle_circle) {
+      const auto [first, second] = dyad_parts(model_, block);
+      const int joint = block.joints[0];
+      const Eigen::Vector2d k1 = joint_at(model_, q, centre_of(*first, joint)), k2 = joint_at(model_, q, centre_of(*second, joint));
+      out[b] = sign_of(cross(k2 - k1, joint_at(model_, q, joint) - k1));
+    } else if (block.kind == BlockKind::circle_line) {
+      const auto [circle, line] = dyad_parts(model_, block);
+      const int joint = block.joints[0];
+      const Eigen::Vector2d foot = foot_on_line(*line, joint_at(model_, q, centre_of(*circle, joint)));
+      out[b] = sign_of((joint_at(model_, q, joint) - foot).dot(line->direction));
+    } else if (block.kind == BlockKind::newton) {
+      if (J.size() == 0) model_.jacobian(q, t, J);
+      const auto& rc = block.rows_and_columns;
+      const int n = static_cast<int>(rc.unknowns.size());
+      Eigen::MatrixXd sub(n, n);
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) sub(i, j) = J(rc.equations[static_cast<std::size_t>(i)], rc.unknowns[static_cast<std::size_t>(j)]);
+      }
+      out[b] = sign_of(sub.determinant());
+    }
+  }
+  return out;
+}
+
+std::vector<double> LinkageSolver::transmission_angles(const Eigen::VectorXd& q) const {
+  std::vector<double> out(blocks_.size(), nan);
+  const auto angle_between = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return std::atan2(std::abs(cross(a, b)), a.dot(b)) * 180.0 / std::numbers::pi;
+  };
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    const LinkageBlock& block = blocks_[b];
+    if (!block.dyad()) continue;
+    const int joint = block.joints[0];
+    const Eigen::Vector2d p = joint_at(model_, q, joint);
+    const auto [first, second] = dyad_parts(model_, block);
+    const Eigen::Vector2d link = joint_at(model_, q, centre_of(*first, joint)) - p;
+    if (block.kind == BlockKind::circle_circle) {
+      out[b] = angle_between(link, joint_at(model_, q, centre_of(*second, joint)) - p);
+    } else {
+      out[b] = angle_between(link, Eigen::Vector2d(-second->direction.y(), second->direction.x()));
+    }
+  }
+  return out;
+}
+
+std::vector<double> LinkageSolver::dyad_margins(const Eigen::VectorXd& q) const {
+  std::vector<double> out(blocks_.size(), nan);
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    const LinkageBlock& block = blocks_[b];
+    if (!block.dyad()) continue;
+    const int joint = block.joints[0];
+    const auto [first, second] = dyad_parts(model_, block);
+    const Eigen::Vector2d centre = joint_at(model_, q, centre_of(*first, joint));
+    if (block.kind == BlockKind::circle_circle) {
+      const double d = (joint_at(model_, q, centre_of(*second, joint)) - centre).norm();
+      out[b] = std::min(d - std::abs(first->length - second->length), first->length + second->length - d);
+    } else {
+      out[b] = first->length - (centre - foot_on_line(*second, centre)).norm();
+    }
+  }
+  return out;
+}
+
+}  // namespace numlab::mechanisms

@@ -1,0 +1,173 @@
+#include "numlab/mechanisms/linkage/linkage_structure.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+#include "numlab/mechanisms/linkage/linkage_model.hpp"
+
+namespace numlab::mechanisms {
+
+std::string Mobility::formula() const {
+  return fmt::format("3 (n - 1) - 2 j1 = 3 ({} - 1) - 2 ({}) = {}", members, lower_pairs, mobility);
+}
+
+Mobility gruebler_kutzbach(const LinkageDescription& d) {
+  std::vector<int> members_at(d.joints.size(), 0);
+  for (std::size_t j = 0; j < d.joints.size(); ++j) members_at[j] = d.joints[j].ground ? 1 : 0;
+  for (const LinkSpec& link : d.links) {
+    ++members_at[static_cast<std::size_t>(link.first)];
+    ++members_at[static_cast<std::size_t>(link.second)];
+  }
+  for (const BodySpec& body : d.bodies) {
+    for (int joint : body.joints) ++members_at[static_cast<std::size_t>(joint)];
+  }
+  for (const SliderSpec& slider : d.sliders) ++members_at[static_cast<std::size_t>(slider.joint)];
+  Mobility m;
+  m.members = 1 + static_cast<int>(d.links.size() + d.bodies.size() + d.sliders.size());
+  for (int k : members_at) m.lower_pairs += std::max(k - 1, 0);
+  m.lower_pairs += static_cast<int>(d.sliders.size());  // each slider block's prismatic pair
+  m.mobility = 3 * (m.members - 1) - 2 * m.lower_pairs;
+  return m;
+}
+
+double crank_radius(const LinkageDescription& d) {
+  const int pivot = d.driver.pivot, joint = d.driver.joint;
+  for (const LinkSpec& link : d.links) {
+    if ((link.first == pivot && link.second == joint) || (link.first == joint && link.second == pivot)) return link.length;
+  }
+  for (const BodySpec& body : d.bodies) {
+    const auto at = [&](int j) { return std::find(body.joints.begin(), body.joints.end(), j) - body.joints.begin(); };
+    const auto p = at(pivot), q = at(joint);
+    if (p < static_cast<long>(body.joints.size()) && q < static_cast<long>(body.joints.size())) {
+      return (body.local[static_cast<std::size_t>(q)] - body.local[static_cast<std::size_t>(p)]).norm();
+    }
+  }
+  throw LinkageFileError(d.file, d.driver.place, "the crank's joint is not on a link or body with its pivot");
+}
+
+namespace {
+
+using Pattern = Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic>;
+
+// Maximum matching of rows to columns by augmenting paths (Kuhn): row_of[c], column_of[r], -1 if free.
+struct Matching {
+  std::vector<int> row_of, column_of;
+};
+
+bool augment(const Pattern& pattern, int row, std::vector<char>& seen, Matching& m) {
+  for (int c = 0; c < pattern.cols(); ++c) {
+    if (!pattern(row, c) || seen[static_cast<std::size_t>(c)]) continue;
+    seen[static_cast<std::size_t>(c)] = 1;
+    const int other = m.row_of[static_cast<std::size_t>(c)];
+    if (other < 0 || augment(pattern, other, seen, m)) {
+      m.row_of[static_cast<std::size_t>(c)] = row;
+      m.column_of[static_cast<std::size_t>(row)] = c;
+      return true;
+    }
+  }
+  return false;
+}
+
+Matching maximum_matching(const Pattern& pattern) {
+  Matching m{std::vector<int>(static_cast<std::size_t>(pattern.cols()), -1),
+             std::vector<int>(static_cast<std::size_t>(pattern.rows()), -1)};
+  for (int r = 0; r < pattern.rows(); ++r) {
+    std::vector<char> seen(static_cast<std::size_t>(pattern.cols()), 0);
+    augment(pattern, r, seen, m);
+  }
+  return m;
+}
+
+// From the free columns (under-constrained) or the free rows (over-constrained), everything
+// reachable by alternating paths: the part of the system that cannot be solved.
+void reach_from_free_columns(const Pattern& pattern, const Matching& m, std::set<int>& rows, std::set<int>& columns) {
+  std::vector<int> stack;
+  for (int c = 0; c < pattern.cols(); ++c) {
+    if (m.row_of[static_cast<std::size_t>(c)] < 0) stack.push_back(c), columns.insert(c);
+  }
+  while (!stack.empty()) {
+    const int c = stack.back();
+    stack.pop_back();
+    for (int r = 0; r < pattern.rows(); ++r) {
+      if (!pattern(r, c) || !rows.insert(r).second) continue;
+      const int next = m.column_of[static_cast<std::size_t>(r)];
+      if (next >= 0 && columns.insert(next).second) stack.push_back(next);
+    }
+  }
+}
+
+void reach_from_free_rows(const Pattern& pattern, const Matching& m, std::set<int>& rows, std::set<int>& columns) {
+  std::vector<int> stack;
+  for (int r = 0; r < pattern.rows(); ++r) {
+    if (m.column_of[static_cast<std::size_t>(r)] < 0) stack.push_back(r), rows.insert(r);
+  }
+  while (!stack.empty()) {
+    const int r = stack.back();
+    stack.pop_back();
+    for (int c = 0; c < pattern.cols(); ++c) {
+      if (!pattern(r, c) || !columns.insert(c).second) continue;
+      const int next = m.row_of[static_cast<std::size_t>(c)];
+      if (next >= 0 && rows.insert(next).second) stack.push_back(next);
+    }
+  }
+}
+
+std::string plural(std::size_t count, const char* word) { return fmt::format("{} {}{}", count, word, count == 1 ? "" : "s"); }
+
+// "joints C, D" (the joints of the columns) or, when no unknown is involved, the rows' items.
+std::string who(const LinkageModel& model, const std::set<int>& rows, const std::set<int>& columns) {
+  std::vector<std::string> names;
+  if (!columns.empty()) {
+    for (int c : columns) {
+      const std::string& name = model.description().joints[static_cast<std::size_t>(model.moving()[static_cast<std::size_t>(c / 2)])].name;
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    return fmt::format("{} {}", names.size() == 1 ? "joint" : "joints", fmt::join(names, ", "));
+  }
+  for (int r : rows) names.push_back(model.row_name(r));
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+// The place of the first constraint among rows, or of the first joint among columns.
+SourcePlace first_place(const LinkageModel& model, const std::set<int>& rows, const std::set<int>& columns) {
+  if (!columns.empty()) {
+    return model.description().joints[static_cast<std::size_t>(model.moving()[static_cast<std::size_t>(*columns.begin() / 2)])].place;
+  }
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    const int first = model.first_row(static_cast<int>(k));
+    if (!rows.empty() && *rows.begin() >= first && *rows.begin() < first + model.constraints()[k].rows()) {
+      return model.constraints()[k].place;
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+StructuralProblem structural_problem(const LinkageModel& model) {
+  const Pattern pattern = model.pattern();
+  const Matching m = maximum_matching(pattern);
+  std::set<int> rows, columns;
+  reach_from_free_columns(pattern, m, rows, columns);
+  if (columns.empty()) reach_from_free_rows(pattern, m, rows, columns);
+  if (rows.empty() && columns.empty()) return {};
+  const std::string count = fmt::format("{} for {}", plural(rows.size(), "equation"), plural(columns.size(), "unknown"));
+  return {who(model, rows, columns) + ": " + count, first_place(model, rows, columns)};
+}
+
+void require_one_degree_of_freedom(const LinkageModel& model) {
+  const LinkageDescription& d = model.description();
+  const Mobility mobility = gruebler_kutzbach(d);
+  const StructuralProblem problem = structural_problem(model);
+  const std::string mobility_text =
+      fmt::format("mobility {} (Gruebler-Kutzbach {}), one driver needs 1", mobility.mobility, mobility.formula());
+  if (!problem.text.empty()) {
+    throw LinkageFileError(d.file, problem.place,
+                           problem.text + (mobility.mobility == 1 ? "" : "; " + mobility_text));
+  }
+  if (mobility.mobility != 1) throw LinkageFileError(d.file, {}, mobility_text);
+}
+
+}  // namespace numlab::mechanisms
