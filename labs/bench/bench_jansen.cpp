@@ -72,6 +72,7 @@ double time_of(const std::vector<JansenBenchRow>& rows, const std::string& solve
 std::string jansen_bench_label(const std::string& solver) {
   if (solver == library_sines) return "full, std::sin";
   if (solver == textbook_sequential) return "sequential, textbook";
+  if (solver.starts_with("file-")) return "jansen.toml, " + solver.substr(5);
   return solver;
 }
 
@@ -121,6 +122,13 @@ void print_jansen_bench(std::ostream& out, const std::vector<JansenBenchRow>& ro
                      verdict(full / sequential >= 2.5))
       << fmt::format("  full Newton vs the closed form:    {:.2f}x slower   (target <= 4x: {})\n", full / analytic,
                      verdict(full / analytic <= 4.0));
+  const double file_full = time_of(rows, "file-full"), file_sequential = time_of(rows, "file-sequential");
+  if (!std::isnan(file_full)) {
+    out << fmt::format("  jansen.toml (derived) vs hand-coded, full:        {:.2f}x slower   (goal <= 2x: {})\n",
+                       file_full / full, verdict(file_full / full <= 2.0))
+        << fmt::format("  jansen.toml (derived) vs hand-coded, sequential:  {:.2f}x slower   (goal <= 2x: {})\n",
+                       file_sequential / sequential, verdict(file_sequential / sequential <= 2.0));
+  }
 }
 
 }  // namespace numlab::cli

@@ -14,7 +14,7 @@ namespace numlab::cli {
 
 struct JansenBenchRow {
   std::string solver;  // full, full-std-sin, full-gauss-seidel, full-gsl-lu, full-eigen-lu, sequential, analytic,
-                       // gsl-<type>
+                       // gsl-<type>; file-full, file-sequential, file-analytic (bench_jansen_file)
   mechanisms::JansenModel model;
   double tolerance;
   double time_s;  // median per cycle
@@ -26,6 +26,11 @@ struct JansenBenchRow {
 // from the table (sine_sources.hpp) but the row full-std-sin's: full Newton on the textbook
 // closure, std::sin and std::cos, so that the table's gain is measured.
 std::vector<JansenBenchRow> bench_jansen(mechanisms::JansenModel model, double tolerance, bool quick);
+
+// Rows file-full, file-sequential, file-analytic: the same leg from mechanisms/models/jansen.toml,
+// its derived model (12 joint coordinates) solved by the generic linkage solvers over the same cycle
+// (linkage_sweep.hpp's solve_linkage_cycle), error against the hand-coded closed form.
+std::vector<JansenBenchRow> bench_jansen_file(double tolerance, bool quick);
 
 // How a solver is named in printed tables: "full, std::sin" for full-std-sin, else its name.
 std::string jansen_bench_label(const std::string& solver);

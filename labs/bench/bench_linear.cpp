@@ -210,7 +210,9 @@ int BenchCommand::run() const {
 
 int BenchCommand::run_jansen(const CommonOptions& common) const {
   const double tolerance = common.tolerance.value_or(1e-10);
-  const auto rows = bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick_);
+  auto rows = bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick_);
+  const auto file_rows = bench_jansen_file(tolerance, quick_);
+  rows.insert(rows.end(), file_rows.begin(), file_rows.end());
   if (common.format == Format::json) {
     nlohmann::ordered_json out = {{"benchmark", "jansen"}, {"rows", nlohmann::ordered_json::array()}};
     for (const auto& row : rows) {

@@ -1,5 +1,7 @@
 #include "cli/cli_common.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>

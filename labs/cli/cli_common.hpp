@@ -2,7 +2,6 @@
 // What every `numlab` sub-command shares: the common flags and where each applies, exit codes,
 // --step pauses, and the rules for the files a command writes.
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -11,6 +10,13 @@
 #include <vector>
 
 #include "numlab/status.hpp"
+
+// CLI11 is only named here (a sub-command and a validator): the files that build commands include
+// <CLI/CLI.hpp> themselves, so the ~30 files that only print and compute do not compile it.
+namespace CLI {
+class App;
+class Validator;
+}  // namespace CLI
 
 namespace numlab::cli {
 

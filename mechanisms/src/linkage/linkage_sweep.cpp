@@ -289,6 +289,28 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   return sweep;
 }
 
+LinkageCycle solve_linkage_cycle(const LinkageSolver& solver, double start, double stop, double step) {
+  const LinkageModel& model = solver.model();
+  const std::size_t count = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
+  LinkageCycle cycle;
+  cycle.q.reserve(count);
+  const double reference = solver.reference_driver();
+  double at = model.driver_from_user(start);
+  const double walk_to = model.crank_driven() ? reference + std::remainder(at - reference, 2.0 * std::acos(-1.0)) : at;
+  const double longest = model.crank_driven() ? model.driver_from_user(crank_walk_deg)
+                                              : std::max(std::abs(walk_to - reference) / slider_walk_steps, 1e-12);
+  LinkageSolution pose = continue_to(solver, reference, walk_to, solver.reference(), longest);
+  for (std::size_t k = 0; k < count; ++k) {
+    const double t = model.driver_from_user(start + static_cast<double>(k) * step);
+    if (k > 0) pose = continue_to(solver, at, t, pose.q, std::abs(t - at));
+    at = t;
+    cycle.iterations += pose.outcome.iterations;
+    if (!converged(pose) && cycle.status == Status::converged) cycle.status = pose.outcome.status;
+    cycle.q.push_back(pose.q);
+  }
+  return cycle;
+}
+
 DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q_near) {
   const LinkageModel& model = solver.model();
   DerivativeCheck check;

@@ -63,6 +63,17 @@ using LinkagePoseObserver = std::function<void(const LinkagePose&)>;
 LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
                            const LinkagePoseObserver& observer = {});
 
+// Positions only, for timing: from the reference pose to start, then every pose from the one before
+// (predicted, then solved), its unknowns stored; none of the sweep's per-pose analysis. What
+// `numlab bench jansen` times for a description file, as it times solve_crank_sweep for the
+// hand-coded models.
+struct LinkageCycle {
+  std::vector<Eigen::VectorXd> q;
+  int iterations = 0;
+  Status status = Status::converged;  // the first failure's, if any
+};
+LinkageCycle solve_linkage_cycle(const LinkageSolver& solver, double start, double stop, double step);
+
 // The velocity alone: J qdot = -Phi_t.
 Eigen::VectorXd linkage_velocity(const LinkageModel& model, double t, const Eigen::VectorXd& q);
 
