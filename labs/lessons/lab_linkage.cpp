@@ -213,12 +213,22 @@ bool show_limit_approach(LabSession& session) {
     const std::size_t b = static_cast<std::size_t>(upper->block);
     const LimitApproachRow row{before, pose.transmission_deg[b], pose.condition, joint_part(model, pose.velocity, joint).norm()};
     approach.rows.push_back(row);
-    table.add_row({fmt::format("{:g}", before), fmt::format("{:.4f}", crank), fmt::format("{:.4g}", row.mu_deg),
+    table.add_row({fmt::format("{:g}", before), fmt::format("{:.4f}", crank), fmt::format("{:.3g}", row.mu_deg),
                    scientific(solver.dyad_margins(pose.q)[b]), scientific(row.kappa), fmt::format("{:.4g}", row.speed)});
   }
   session.show(table, "limit-approach");
   session.say(limit_approach_sentence(approach, 1.0, 0.1));
-  return solved;
+  // The linkage 0.01 deg below the limit, after a turn of 56 deg towards it.
+  const double last = upper->driver - 0.01;
+  const LinkageSweep towards = linkage_sweep(solver, last - 56.0, last, 1.0);
+  if (towards.poses.back().outcome.status == Status::converged) {
+    const std::string path = lab_file(session, "mustang-toml-near-limit.svg",
+                                      linkage_pose_svg(model, towards, towards.poses.size() - 1, true));
+    session.figure(path, fmt::format("mustang.toml at {:.4f} deg, 0.01 deg below its limit: the links at {} nearly in "
+                                     "line, the joints' paths over the {:g} deg before, velocities as arrows",
+                                     last, joint, last - towards.poses.front().driver));
+  }
+  return solved && towards.status == Status::converged;
 }
 
 // Step 6: seed 001's 10 angles, seed 000's 8 angles and jansen.toml's joint coordinates.

@@ -28,8 +28,11 @@ std::string derived_model_sentence(const DerivedModelSummary& model) {
                                  counted(model.equations, "equation"), model.mobility,
                                  model.mobility == 1 ? ": the driver's value fixes every pose" : "");
   // 2. The blocks, and what they allow.
-  text += fmt::format("Of its {}, {} {} in closed form and {} explicit; ", counted(blocks, "block"),
-                      counted(dyads, "dyad"), dyads == 1 ? "is" : "are", explicit_blocks);
+  text += fmt::format("Of its {}, {} and {} explicit; ", counted(blocks, "block"),
+                      dyads == 0   ? std::string("none is a dyad")
+                      : dyads == 1 ? std::string("1 is a dyad in closed form")
+                                   : fmt::format("{} are dyads in closed form", dyads),
+                      explicit_blocks == 1 ? "1 is" : fmt::format("{} are", explicit_blocks));
   text += newton == 0 ? "none needs Newton, so --solver analytic solves the whole linkage in closed form."
                       : fmt::format("{} need{} Newton (joints that can only be found together), so --solver analytic "
                                     "does not apply.",
@@ -118,13 +121,15 @@ std::string over_modelling_sentence(const std::vector<ModelCost>& rows) {
                       speed_ratio_phrase(ten.time_s, eight.time_s), ten.time_s, eight.time_s);
   // 3. Joint coordinates: more unknowns, a sparser Jacobian, eliminated densely all the same.
   text += fmt::format("The derived model has {} unknowns, but only {} of its {} Jacobian entries are nonzero "
-                      "({:.0f}%, against {:.0f}% for seed 000's {}x{} and {:.0f}% for seed 001's {}x{}); full Newton "
-                      "eliminates it as a dense matrix all the same, and is {} on seed 000's {} equations ({:.3g} s "
-                      "against {:.3g} s, {} iterations against {}).",
+                      "({:.0f}%, against {:.0f}% for seed 000's {}x{} and {:.0f}% for seed 001's {}x{}). Full Newton "
+                      "eliminates it as a dense matrix all the same, about ({}/{})^3 = {:.1f} times the operations "
+                      "of the {}x{} LU, and is {} on seed 000's {} equations ({:.3g} s against {:.3g} s, {} iterations "
+                      "against {}).",
                       derived.unknowns, derived.nonzeros, derived.unknowns * derived.unknowns, share(derived),
                       share(eight), eight.unknowns, eight.unknowns, share(ten), ten.unknowns, ten.unknowns,
-                      speed_ratio_phrase(derived.time_s, eight.time_s), eight.unknowns, derived.time_s, eight.time_s,
-                      derived.iterations, eight.iterations);
+                      derived.unknowns, eight.unknowns, std::pow(static_cast<double>(derived.unknowns) / eight.unknowns, 3),
+                      eight.unknowns, eight.unknowns, speed_ratio_phrase(derived.time_s, eight.time_s), eight.unknowns,
+                      derived.time_s, eight.time_s, derived.iterations, eight.iterations);
   return text;
 }
 
