@@ -24,8 +24,9 @@ struct DerivedModelSummary {
 std::string derived_model_sentence(const DerivedModelSummary& model);
 
 // Step 2: sequential Newton against full Newton on the derived model, from the measured times and
-// iterations alone: the speed ratio, the iterations ratio, the cost of one iteration.
-std::string sequential_against_full_sentence(const SolverCost& sequential, const SolverCost& full);
+// iterations: the speed ratio, the iterations ratio, the cost of one iteration, and what a block
+// iteration of the generic solve (nonlinear::BlockSystem on a model of `unknowns` unknowns) does.
+std::string sequential_against_full_sentence(const SolverCost& sequential, const SolverCost& full, int unknowns);
 
 // Step 3: one pose of the velocity and acceleration check.
 struct DerivativeRow {
