@@ -112,6 +112,8 @@ const std::vector<Lab>& all_labs() {
        run_basins_lab},
       {"robustness", "MINPACK's test set from three starts: success table, performance and data profiles, damping, dogleg",
        run_robustness_lab},
+      {"linkage", "A linkage from a file: the derived model, every solver, velocities, a limit, seeds' models beside it",
+       run_linkage_lab},
   };
   return labs;
 }

@@ -91,5 +91,6 @@ int run_mustang_lab(LabSession& session);
 int run_fit_lab(LabSession& session);
 int run_exercises_lab(LabSession& session);
 int run_robustness_lab(LabSession& session);
+int run_linkage_lab(LabSession& session);
 
 }  // namespace numlab::cli

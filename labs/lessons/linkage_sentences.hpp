@@ -1,0 +1,74 @@
+#pragma once
+// The linkage lab's sentences, each made from the numbers of the table printed beside it (see
+// lab_sentences.hpp for the sentences the labs share). tests/labs/test_lab_linkage.cpp reads the
+// tables back from the CSV files and checks every sentence against them.
+
+#include <string>
+#include <vector>
+
+#include "lessons/lab_sentences.hpp"
+
+namespace numlab::cli {
+
+// Step 1: what the model derived from a file is.
+struct DerivedModelSummary {
+  std::string file;          // "jansen.toml"
+  int moving_joints = 0;
+  int unknowns = 0;
+  int equations = 0;
+  int mobility = 0;
+  std::vector<std::string> block_kinds;  // per block, as describe_block prints it: "dyad, closed form (circle-circle)"
+};
+// The unknowns and equations, the mobility, and the blocks counted: dyads in closed form, explicit
+// blocks, Newton blocks; whether --solver analytic applies.
+std::string derived_model_sentence(const DerivedModelSummary& model);
+
+// Step 2: sequential Newton against full Newton on the derived model, from the measured times and
+// iterations: the speed ratio, the iterations ratio, the cost of one iteration, and what a block
+// iteration of the generic solve (nonlinear::BlockSystem on a model of `unknowns` unknowns) does.
+std::string sequential_against_full_sentence(const SolverCost& sequential, const SolverCost& full, int unknowns);
+
+// Step 3: one pose of the velocity and acceleration check.
+struct DerivativeRow {
+  double crank_deg;
+  double velocity_difference;      // relative, against central differences of positions
+  double acceleration_difference;  // relative, against the 7-point stencil
+  double foot_speed;               // |v| of the output joint from J qdot = -Phi_t, per radian
+  double seed_foot_speed;          // the same from an independent model (seed 000's rates)
+};
+std::string derivative_check_sentence(const std::vector<DerivativeRow>& rows, const std::string& joint);
+
+// Step 4: a dyad approaching an assembly limit.
+struct LimitApproachRow {
+  double before_deg;   // distance below the limit found by bisection
+  double mu_deg;       // the failing dyad's transmission angle
+  double kappa;        // kappa_2(J) of the whole model
+  double speed;        // |v| of the dyad's joint, per radian of crank
+};
+struct LimitApproach {
+  double limit_deg;       // the last value that assembles
+  double bracket_deg;     // the bisection's final bracket
+  std::string block;      // "block 8 (P10 from (P7, P8): dyad, closed form (circle-circle))"
+  std::string joint;      // the dyad's joint: "P10"
+  std::vector<LimitApproachRow> rows;  // farthest first
+};
+// The limit and the block; mu falling and kappa rising over the rows; the exponents of d measured
+// between the rows at `far` and `near` degrees before the limit (a fold gives -1/2 for kappa and the
+// speed, +1/2 for mu).
+std::string limit_approach_sentence(const LimitApproach& approach, double far, double near);
+// log(value(near) / value(far)) / log(near / far): the power of the distance the rows show.
+double measured_exponent(double far, double value_far, double near, double value_near);
+
+// Step 6: the same leg modelled three ways.
+struct ModelCost {
+  std::string name;      // as the table prints it
+  int unknowns = 0;
+  int nonzeros = 0;      // Jacobian entries not zero at a pose
+  double time_s = 0.0;   // per cycle, full Newton
+  int iterations = 0;    // summed over the cycle
+  double error = 0.0;    // worst joint distance from the closed form
+};
+// rows: the 10-equation model, the 8-equation model, the derived model, in that order.
+std::string over_modelling_sentence(const std::vector<ModelCost>& rows);
+
+}  // namespace numlab::cli
