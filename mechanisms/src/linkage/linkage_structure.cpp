@@ -80,36 +80,23 @@ Matching maximum_matching(const Pattern& pattern) {
   return m;
 }
 
-// From the free columns (under-constrained) or the free rows (over-constrained), everything
-// reachable by alternating paths: the part of the system that cannot be solved.
-void reach_from_free_columns(const Pattern& pattern, const Matching& m, std::set<int>& rows, std::set<int>& columns) {
+// From the free columns of `pattern` (its unknowns without an equation: under-constrained),
+// everything reachable by alternating paths: the part of the system that cannot be solved.
+// `partner_of_column` / `partner_of_row` are the matching's two sides. Called on the transposed
+// pattern with the sides swapped, it starts from the free equations instead (over-constrained).
+void reach_from_free(const Pattern& pattern, const std::vector<int>& partner_of_column,
+                     const std::vector<int>& partner_of_row, std::set<int>& rows, std::set<int>& columns) {
   std::vector<int> stack;
   for (int c = 0; c < pattern.cols(); ++c) {
-    if (m.row_of[static_cast<std::size_t>(c)] < 0) stack.push_back(c), columns.insert(c);
+    if (partner_of_column[static_cast<std::size_t>(c)] < 0) stack.push_back(c), columns.insert(c);
   }
   while (!stack.empty()) {
     const int c = stack.back();
     stack.pop_back();
     for (int r = 0; r < pattern.rows(); ++r) {
       if (!pattern(r, c) || !rows.insert(r).second) continue;
-      const int next = m.column_of[static_cast<std::size_t>(r)];
+      const int next = partner_of_row[static_cast<std::size_t>(r)];
       if (next >= 0 && columns.insert(next).second) stack.push_back(next);
-    }
-  }
-}
-
-void reach_from_free_rows(const Pattern& pattern, const Matching& m, std::set<int>& rows, std::set<int>& columns) {
-  std::vector<int> stack;
-  for (int r = 0; r < pattern.rows(); ++r) {
-    if (m.column_of[static_cast<std::size_t>(r)] < 0) stack.push_back(r), rows.insert(r);
-  }
-  while (!stack.empty()) {
-    const int r = stack.back();
-    stack.pop_back();
-    for (int c = 0; c < pattern.cols(); ++c) {
-      if (!pattern(r, c) || !columns.insert(c).second) continue;
-      const int next = m.row_of[static_cast<std::size_t>(c)];
-      if (next >= 0 && rows.insert(next).second) stack.push_back(next);
     }
   }
 }
@@ -150,8 +137,8 @@ StructuralProblem structural_problem(const LinkageModel& model) {
   const Pattern pattern = model.pattern();
   const Matching m = maximum_matching(pattern);
   std::set<int> rows, columns;
-  reach_from_free_columns(pattern, m, rows, columns);
-  if (columns.empty()) reach_from_free_rows(pattern, m, rows, columns);
+  reach_from_free(pattern, m.row_of, m.column_of, rows, columns);
+  if (columns.empty()) reach_from_free(pattern.transpose(), m.column_of, m.row_of, columns, rows);
   if (rows.empty() && columns.empty()) return {};
   const std::string count = fmt::format("{} for {}", plural(rows.size(), "equation"), plural(columns.size(), "unknown"));
   return {who(model, rows, columns) + ": " + count, first_place(model, rows, columns)};
