@@ -9,12 +9,19 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "linkage_joints.hpp"
 #include "numlab/mechanisms/circle_intersection.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/sequential_newton.hpp"
 
 namespace numlab::mechanisms {
+
+using detail::centre_of;
+using detail::cross;
+using detail::dyad_parts;
+using detail::foot_on_line;
+using detail::joint_at;
 
 const std::vector<std::string>& linkage_solver_names() {
   static const std::vector<std::string> names = [] {
@@ -29,40 +36,7 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-Eigen::Vector2d joint_at(const LinkageModel& model, const Eigen::VectorXd& q, int joint) {
-  const int column = model.column_of(joint);
-  return column < 0 ? model.description().joints[static_cast<std::size_t>(joint)].position
-                    : Eigen::Vector2d(q(column), q(column + 1));
-}
-
-void set_joint(const LinkageModel& model, Eigen::VectorXd& q, int joint, const Eigen::Vector2d& p) {
-  q.segment<2>(model.column_of(joint)) = p;
-}
-
 int sign_of(double value) { return value >= 0.0 ? 1 : -1; }
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-// The other joint of a distance constraint (its circle's centre) for the block's joint.
-int centre_of(const Constraint& c, int joint) { return c.joints[0] == joint ? c.joints[1] : c.joints[0]; }
-
-// A dyad's two constraints: for circle-line, the distance first.
-struct DyadParts {
-  const Constraint* first;
-  const Constraint* second;
-};
-
-DyadParts dyad_parts(const LinkageModel& model, const LinkageBlock& block) {
-  const Constraint* a = &model.constraints()[static_cast<std::size_t>(block.constraints[0])];
-  const Constraint* b = &model.constraints()[static_cast<std::size_t>(block.constraints[1])];
-  if (a->kind != ConstraintKind::distance) std::swap(a, b);
-  return {a, b};
-}
-
-// The foot of the perpendicular from `point` onto a slider's line.
-Eigen::Vector2d foot_on_line(const Constraint& line, const Eigen::Vector2d& point) {
-  return line.point + (point - line.point).dot(line.direction) * line.direction;
-}
 
 // Of a dyad's two solutions, the one nearer where the joint was (or is predicted to be).
 Eigen::Vector2d nearer(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& near) {
@@ -202,68 +176,63 @@ LinkageSolution LinkageSolver::solve_sequential(double t, const Eigen::VectorXd&
 
 LinkageSolution LinkageSolver::closed_form(double t, const Eigen::VectorXd& q0) const {
   LinkageSolution solution{q0, {}, -1};
-  solution.outcome.status = Status::converged;
-  solution.outcome.reason = nonlinear::StopReason::residual_small;
-  Eigen::VectorXd& q = solution.q;
-  const auto at = [&](int joint) { return joint_at(model_, q, joint); };
-  for (std::size_t b = 0; b < blocks_.size() && solution.failed_block < 0; ++b) {
-    const LinkageBlock& block = blocks_[b];
-    const auto fail = [&] {
-      solution.failed_block = static_cast<int>(b);
-      solution.outcome.status = Status::cannot_assemble;
-      solution.outcome.reason = nonlinear::StopReason::running;
-    };
-    if (block.kind == BlockKind::newton) {
-      fail();
-      break;
-    }
+  solution.failed_block = detail::closed_form_in_place(model_, blocks_, t, solution.q);
+  solution.outcome.status = solution.failed_block < 0 ? Status::converged : Status::cannot_assemble;
+  solution.outcome.reason = solution.failed_block < 0 ? nonlinear::StopReason::residual_small : nonlinear::StopReason::running;
+  solution.outcome.residual_norm = residual_norm(model_, solution.q, t);
+  if (solution.failed_block < 0 && !(solution.outcome.residual_norm <= options_.newton.residual_tolerance)) {
+    solution.outcome.status = Status::no_progress;
+    solution.outcome.reason = nonlinear::StopReason::no_progress;
+  }
+  return solution;
+}
+
+int detail::closed_form_in_place(const LinkageModel& model, const std::vector<LinkageBlock>& blocks, double t,
+                                 Eigen::VectorXd& q) {
+  const auto at = [&](int joint) { return joint_at(model, q, joint); };
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const LinkageBlock& block = blocks[b];
+    if (block.kind == BlockKind::newton) return static_cast<int>(b);
     const int joint = block.joints[0];
-    const Constraint& c = model_.constraints()[static_cast<std::size_t>(block.constraints[0])];
+    const Eigen::Vector2d was = at(joint);  // the start's place: q's entries of this joint are not written yet
+    const Constraint& c = model.constraints()[static_cast<std::size_t>(block.constraints[0])];
     switch (block.kind) {
       case BlockKind::crank:  // 1. p_A = p_O + r u(t)
-        set_joint(model_, q, joint, at(c.joints[0]) + c.length * Eigen::Vector2d(std::cos(t + c.offset), std::sin(t + c.offset)));
+        set_joint(model, q, joint, at(c.joints[0]) + c.length * Eigen::Vector2d(std::cos(t + c.offset), std::sin(t + c.offset)));
         break;
       case BlockKind::body_point: {  // 2. p_c = p_b0 + a base + b perp(base)
         const Eigen::Vector2d base = at(c.joints[1]) - at(c.joints[0]);
-        set_joint(model_, q, joint, at(c.joints[0]) + c.coefficients.x() * base + c.coefficients.y() * Eigen::Vector2d(-base.y(), base.x()));
+        set_joint(model, q, joint, at(c.joints[0]) + c.coefficients.x() * base + c.coefficients.y() * Eigen::Vector2d(-base.y(), base.x()));
         break;
       }
       case BlockKind::slider: {  // 3. p = P + s u
-        const Constraint& line = c.kind == ConstraintKind::slider_travel ? c : model_.constraints()[static_cast<std::size_t>(block.constraints[1])];
-        set_joint(model_, q, joint, line.point + t * line.direction);
+        const Constraint& line = c.kind == ConstraintKind::slider_travel ? c : model.constraints()[static_cast<std::size_t>(block.constraints[1])];
+        set_joint(model, q, joint, line.point + t * line.direction);
         break;
       }
-      case BlockKind::circle_circle: {  // 4. two circles meet: the point nearer q0's (continuation)
-        const auto [first, second] = dyad_parts(model_, block);
+      case BlockKind::circle_circle: {  // 4. two circles meet: the point nearer the start's (continuation)
+        const auto [first, second] = dyad_parts(model, block);
         const Eigen::Vector2d c1 = at(centre_of(*first, joint)), c2 = at(centre_of(*second, joint));
         const auto left = circle_intersection(c1, first->length, c2, second->length, 1);
         const auto right = circle_intersection(c1, first->length, c2, second->length, -1);
-        if (!left || !right) fail();
-        else set_joint(model_, q, joint, nearer(*left, *right, joint_at(model_, q0, joint)));
+        if (!left || !right) return static_cast<int>(b);
+        set_joint(model, q, joint, nearer(*left, *right, was));
         break;
       }
-      case BlockKind::circle_line: {  // 5. a circle meets a line: the point nearer q0's
-        const auto [circle, line] = dyad_parts(model_, block);
+      case BlockKind::circle_line: {  // 5. a circle meets a line: the point nearer the start's
+        const auto [circle, line] = dyad_parts(model, block);
         const Eigen::Vector2d centre = at(centre_of(*circle, joint)), foot = foot_on_line(*line, centre);
         const double half_chord_squared = circle->length * circle->length - (centre - foot).squaredNorm();
-        if (!(half_chord_squared >= 0.0)) {
-          fail();
-        } else {
-          const Eigen::Vector2d along = std::sqrt(half_chord_squared) * line->direction;
-          set_joint(model_, q, joint, nearer(foot + along, foot - along, joint_at(model_, q0, joint)));
-        }
+        if (!(half_chord_squared >= 0.0)) return static_cast<int>(b);
+        const Eigen::Vector2d along = std::sqrt(half_chord_squared) * line->direction;
+        set_joint(model, q, joint, nearer(foot + along, foot - along, was));
         break;
       }
       case BlockKind::newton:
         break;
     }
   }
-  solution.outcome.residual_norm = residual_norm(model_, q, t);
-  if (solution.failed_block < 0 && !(solution.outcome.residual_norm <= options_.newton.residual_tolerance)) {
-    solution.outcome.status = Status::no_progress;
-    solution.outcome.reason = nonlinear::StopReason::no_progress;
-  }
-  return solution;
+  return -1;
 }
 
 std::vector<int> LinkageSolver::signature(const Eigen::VectorXd& q, double t) const {

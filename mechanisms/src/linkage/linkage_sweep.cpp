@@ -1,5 +1,7 @@
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 
+#include "numlab/mechanisms/linkage/linkage_fast_solver.hpp"
+
 #include <fmt/format.h>
 
 #include <Eigen/LU>
@@ -30,29 +32,58 @@ Eigen::VectorXd predicted(const LinkageModel& model, double at, const Eigen::Vec
   return velocity.allFinite() ? Eigen::VectorXd(q + velocity * (next - at)) : q;
 }
 
+// The pose solves of a continuation: the fast path (linkage_fast_solver.hpp) where it applies, else
+// the generic solver; both predict and solve in place.
+class PoseSolver {
+ public:
+  PoseSolver(const LinkageSolver& solver, bool fast) : solver_(solver) {
+    if (fast && LinkageFastSolver::applies(solver.options())) fast_.emplace(solver);
+  }
+  const LinkageSolver& solver() const { return solver_; }
+  LinkageFastOutcome solve(double t, Eigen::VectorXd& q) {
+    if (fast_) return fast_->solve(t, q);
+    LinkageSolution solution = solver_.solve(t, q);
+    q = std::move(solution.q);
+    return {solution.outcome, solution.failed_block};
+  }
+  void predict(double at, Eigen::VectorXd& q, double next) {
+    if (fast_) fast_->predict(at, q, next);
+    else q = predicted(solver_.model(), at, q, next);
+  }
+
+ private:
+  const LinkageSolver& solver_;
+  std::optional<LinkageFastSolver> fast_;
+};
+
 // From q at driver `from` to driver `to` (model units) in steps no longer than `longest`, each
-// solve started from the predictor; a step that fails is halved. The last solution (failed or not).
-LinkageSolution continue_to(const LinkageSolver& solver, double from, double to, const Eigen::VectorXd& q, double longest,
-                            int* halvings = nullptr) {
-  LinkageSolution last{q, {}, -1};
+// solve started from the predictor; a step that fails is halved. q becomes the last solution
+// (failed or not); `trial` is scratch of q's size.
+LinkageFastOutcome continue_in_place(PoseSolver& poses, double from, double to, Eigen::VectorXd& q, Eigen::VectorXd& trial,
+                                     double longest, int* halvings = nullptr) {
+  if (from == to) return poses.solve(to, q);  // measured, never assumed
+  LinkageFastOutcome last;
   last.outcome.status = Status::converged;
   double at = from;
   double step = std::abs(to - at) <= longest ? to - at : std::copysign(longest, to - at);
   int halved = 0;
-  if (from == to) return solver.solve(to, q);  // measured, never assumed
   int iterations = 0;  // over every sub-step
   while (at != to) {
     const double next = std::abs(to - at) <= std::abs(step) ? to : at + step;
-    LinkageSolution trial = solver.solve(next, predicted(solver.model(), at, last.q, next));
-    iterations += trial.outcome.iterations;
-    if (converged(trial)) {
-      last = std::move(trial);
+    trial = q;
+    poses.predict(at, trial, next);
+    LinkageFastOutcome outcome = poses.solve(next, trial);
+    iterations += outcome.outcome.iterations;
+    if (outcome.outcome.status == Status::converged) {
+      q.swap(trial);
+      last = outcome;
       at = next;
       continue;
     }
     if (halved == max_halvings) {
-      trial.outcome.iterations = iterations;
-      return trial;
+      q.swap(trial);
+      outcome.outcome.iterations = iterations;
+      return outcome;
     }
     step /= 2.0;
     ++halved;
@@ -60,6 +91,17 @@ LinkageSolution continue_to(const LinkageSolver& solver, double from, double to,
   if (halvings != nullptr) *halvings = halved;
   last.outcome.iterations = iterations;
   return last;
+}
+
+// The same, as a LinkageSolution.
+LinkageSolution continue_to(PoseSolver& poses, double from, double to, const Eigen::VectorXd& q, double longest,
+                            int* halvings = nullptr) {
+  LinkageSolution solution{q, {}, -1};
+  Eigen::VectorXd trial(q.size());
+  const LinkageFastOutcome outcome = continue_in_place(poses, from, to, solution.q, trial, longest, halvings);
+  solution.outcome = outcome.outcome;
+  solution.failed_block = outcome.failed_block;
+  return solution;
 }
 
 }  // namespace
@@ -146,12 +188,13 @@ int failing_block(const LinkageSolver& solver, double t, const Eigen::VectorXd& 
 }
 
 // Bisection between a driver value that assembles (good, with its q) and one that does not.
-LinkageLimit bisect_limit(const LinkageSolver& solver, double good, Eigen::VectorXd q, double bad, bool upper) {
+LinkageLimit bisect_limit(PoseSolver& poses, double good, Eigen::VectorXd q, double bad, bool upper) {
+  const LinkageSolver& solver = poses.solver();
   const LinkageModel& model = solver.model();
   const double target = model.crank_driven() ? crank_limit_deg * std::acos(-1.0) / 180.0 : 1e-4 * std::abs(bad - good);
   for (int i = 0; i < max_bisections && std::abs(bad - good) > target; ++i) {
     const double middle = 0.5 * (good + bad);
-    LinkageSolution trial = continue_to(solver, good, middle, q, std::abs(middle - good));
+    LinkageSolution trial = continue_to(poses, good, middle, q, std::abs(middle - good));
     if (converged(trial)) {
       good = middle;
       q = std::move(trial.q);
@@ -206,6 +249,9 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   const LinkageModel& model = solver.model();
   const std::size_t count = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
   LinkageSweep sweep;
+  // The fast path solves the poses, unless an observer traces them: --trace and --step follow the
+  // generic solver (the same poses, checked by tests/linkage_fast/).
+  PoseSolver poses(solver, !observer);
   // 1. Walk from the reference pose to the start: the shorter way round for a crank.
   const double reference = solver.reference_driver();
   double t_start = model.driver_from_user(start);
@@ -213,7 +259,7 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   if (model.crank_driven()) walk_to = reference + std::remainder(t_start - reference, 2.0 * std::acos(-1.0));
   const double longest = model.crank_driven() ? model.driver_from_user(crank_walk_deg)
                                               : std::max(std::abs(walk_to - reference) / slider_walk_steps, 1e-12);
-  LinkageSolution at = continue_to(solver, reference, walk_to, solver.reference(), longest);
+  LinkageSolution at = continue_to(poses, reference, walk_to, solver.reference(), longest);
   Eigen::VectorXd last_good = converged(at) ? at.q : solver.reference();
   double last_good_t = converged(at) ? t_start : reference;
   bool have_good = converged(at);
@@ -230,7 +276,7 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
     int halvings = 0;
     // Sub-steps no longer than the walk's, each from the predictor: a coarse sweep still follows
     // its branch through a change point between two of its poses.
-    LinkageSolution solution = k == 0 && have_good ? at : continue_to(solver, last_good_t, t, last_good, longest, &halvings);
+    LinkageSolution solution = k == 0 && have_good ? at : continue_to(poses, last_good_t, t, last_good, longest, &halvings);
     LinkagePose pose = make_pose(solver, user, t, std::move(solution));
     pose.step_halvings = halvings;
     const bool ok = pose.outcome.status == Status::converged;
@@ -238,9 +284,9 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
     if (k > 0) {
       const LinkagePose& before = sweep.poses.back();
       const bool was_ok = before.outcome.status == Status::converged;
-      if (was_ok && !ok) sweep.limits.push_back(bisect_limit(solver, last_good_t, last_good, t, true));
+      if (was_ok && !ok) sweep.limits.push_back(bisect_limit(poses, last_good_t, last_good, t, true));
       if (!was_ok && ok) {
-        LinkageLimit limit = bisect_limit(solver, t, pose.q, model.driver_from_user(before.driver), false);
+        LinkageLimit limit = bisect_limit(poses, t, pose.q, model.driver_from_user(before.driver), false);
         sweep.limits.push_back(limit);
       }
     }
@@ -289,24 +335,49 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   return sweep;
 }
 
+namespace {
+
+// The next of equally spaced poses from the last m <= 5 (the polynomial of degree m - 1 through them):
+// sum over k = 1..m of (-1)^(k+1) C(m, k) poses[end - k].
+void extrapolate(const std::vector<Eigen::VectorXd>& poses, Eigen::VectorXd& next) {
+  const int m = static_cast<int>(std::min<std::size_t>(poses.size(), 5));
+  next.setZero();
+  double binomial = 1.0;  // C(m, k), from C(m, 0)
+  for (int k = 1; k <= m; ++k) {
+    binomial = binomial * (m - k + 1) / k;
+    next += (k % 2 == 1 ? binomial : -binomial) * poses[poses.size() - static_cast<std::size_t>(k)];
+  }
+}
+
+}  // namespace
+
 LinkageCycle solve_linkage_cycle(const LinkageSolver& solver, double start, double stop, double step) {
   const LinkageModel& model = solver.model();
   const std::size_t count = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
   LinkageCycle cycle;
   cycle.q.reserve(count);
+  PoseSolver poses(solver, true);
   const double reference = solver.reference_driver();
   double at = model.driver_from_user(start);
   const double walk_to = model.crank_driven() ? reference + std::remainder(at - reference, 2.0 * std::acos(-1.0)) : at;
   const double longest = model.crank_driven() ? model.driver_from_user(crank_walk_deg)
                                               : std::max(std::abs(walk_to - reference) / slider_walk_steps, 1e-12);
-  LinkageSolution pose = continue_to(solver, reference, walk_to, solver.reference(), longest);
+  Eigen::VectorXd q = solver.reference(), trial(q.size());
+  LinkageFastOutcome pose = continue_in_place(poses, reference, walk_to, q, trial, longest);
   for (std::size_t k = 0; k < count; ++k) {
     const double t = model.driver_from_user(start + static_cast<double>(k) * step);
-    if (k > 0) pose = continue_to(solver, at, t, pose.q, std::abs(t - at));
+    if (k > 0) {
+      // The prediction of `numlab bench jansen`'s hand-coded sweeps: the polynomial through the
+      // last poses (up to five), extrapolated; if its solve fails, continuation from the last pose.
+      extrapolate(cycle.q, trial);
+      pose = poses.solve(t, trial);
+      if (pose.outcome.status == Status::converged) q.swap(trial);
+      else pose = continue_in_place(poses, at, t, q, trial, std::abs(t - at));
+    }
     at = t;
     cycle.iterations += pose.outcome.iterations;
-    if (!converged(pose) && cycle.status == Status::converged) cycle.status = pose.outcome.status;
-    cycle.q.push_back(pose.q);
+    if (pose.outcome.status != Status::converged && cycle.status == Status::converged) cycle.status = pose.outcome.status;
+    cycle.q.push_back(q);
   }
   return cycle;
 }

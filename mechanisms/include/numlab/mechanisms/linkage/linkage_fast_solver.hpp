@@ -1,0 +1,77 @@
+#pragma once
+// The fast path beside LinkageSolver (linkage_solver.hpp), for sweeps and `numlab bench`: the same
+// full, sequential and analytic solves, with the same stop tests, statuses and counts, on a workspace
+// sized once when it is made. A solve, and each Newton iteration in it, allocates nothing on the heap.
+//
+// Where the time goes instead:
+//   full        model.residual and model.jacobian into preallocated f and J, GEPP's one-loop kernel
+//               (gauss_elimination_kernel.hpp) on a preallocated copy: the generic path's arithmetic
+//   sequential  per block only that block's own rows and columns: a one-joint block by Newton on a
+//               fixed 2x2 system with the closed-form inverse, a bigger block by the GEPP kernel
+//   analytic    the generic closed form itself, in place
+// and velocity() solves J qdot = -Phi_t block by block (J is block lower triangular in block order).
+//
+// tests/linkage_fast/ checks that both paths agree on every shipped model and that nothing is
+// allocated. The teaching path, and --trace and --step, stay with LinkageSolver.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "numlab/mechanisms/linkage/linkage_solver.hpp"
+
+namespace numlab::mechanisms {
+
+struct LinkageFastOutcome {
+  nonlinear::NewtonCounts outcome;
+  int failed_block = -1;  // as LinkageSolution::failed_block
+};
+
+class LinkageFastSolver {
+ public:
+  // Whether the fast path covers these options: full with GEPP, sequential or analytic, undamped.
+  static bool applies(const LinkageSolverOptions& options);
+
+  // Sizes the workspace for the solver's model and blocks (the solver must outlive it). Throws
+  // std::invalid_argument when applies(solver.options()) is false.
+  explicit LinkageFastSolver(const LinkageSolver& solver);
+
+  const LinkageSolver& solver() const { return solver_; }
+
+  // Solves at driver value t (model units), in place: q is the start, then the result, as
+  // LinkageSolver::solve(t, q).q. Throws std::invalid_argument for a q of the wrong size or not
+  // finite, as Newton does.
+  LinkageFastOutcome solve(double t, Eigen::VectorXd& q);
+
+  // dq/dt at a pose (J qdot = -Phi_t), into qdot (sized to the unknowns). False, and qdot not
+  // finite, when a block of J is singular.
+  bool velocity(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot);
+
+  // The first-order predictor of continuation, in place: q + qdot (next - at); q unchanged when the
+  // velocity is not finite (as the generic sweep's predictor).
+  void predict(double at, Eigen::VectorXd& q, double next);
+
+  // One block's precomputed rows and columns (public for the .cpp's helpers; not an interface).
+  struct Block {
+    int size = 0;                       // unknowns (and rows)
+    std::vector<int> rows, columns;     // of the whole system
+    std::vector<const Constraint*> row_constraint;
+    std::vector<int> row_part;          // 0 or 1: which row of its constraint
+    std::vector<int> joints;            // the block's joints, in column order (x, y each)
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> work;  // bigger blocks: J, then U
+    Eigen::VectorXd x, f, dx, rhs, inverse_pivots;
+  };
+
+ private:
+  LinkageFastOutcome solve_full(double t, Eigen::VectorXd& q);
+  LinkageFastOutcome solve_sequential(double t, Eigen::VectorXd& q);
+  LinkageFastOutcome solve_analytic(double t, Eigen::VectorXd& q);
+  double whole_residual_norm(const Eigen::VectorXd& q, double t);
+
+  const LinkageSolver& solver_;
+  std::vector<Block> blocks_;
+  Eigen::VectorXd f_, dx_, rhs_, inverse_pivots_, phi_t_, qdot_;
+  Eigen::MatrixXd J_;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> work_;
+};
+
+}  // namespace numlab::mechanisms

@@ -1,0 +1,343 @@
+#include "numlab/mechanisms/linkage/linkage_fast_solver.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "linkage_joints.hpp"
+#include "numlab/linalg/gauss_elimination_kernel.hpp"
+#include "numlab/linalg/input_checks.hpp"
+#include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/nonlinear/stopping_tests.hpp"
+
+namespace numlab::mechanisms {
+
+namespace {
+
+using nonlinear::NewtonCounts;
+using nonlinear::StopReason;
+using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+
+// Constraint c's rows at q (a one-row constraint leaves the second 0): the rows of LinkageModel::residual.
+Eigen::Vector2d rows_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, double t) {
+  const auto p = [&](int slot) { return detail::joint_at(model, q, c.joints[static_cast<std::size_t>(slot)]); };
+  switch (c.kind) {
+    case ConstraintKind::distance: return {((p(0) - p(1)).squaredNorm() - c.length * c.length) / (2.0 * c.length), 0.0};
+    case ConstraintKind::body_point: {
+      const Eigen::Vector2d base = p(1) - p(0);
+      return p(2) - p(0) - c.coefficients.x() * base - c.coefficients.y() * perp(base);
+    }
+    case ConstraintKind::slider_line: return {detail::cross(c.direction, p(0) - c.point), 0.0};
+    case ConstraintKind::crank: return p(1) - p(0) - c.length * Eigen::Vector2d(std::cos(t + c.offset), std::sin(t + c.offset));
+    case ConstraintKind::slider_travel: return {c.direction.dot(p(0) - c.point) - t, 0.0};
+  }
+  return Eigen::Vector2d::Zero();
+}
+
+// d(rows of c) / d(joint's x, y): the blocks LinkageModel::jacobian puts in J.
+Eigen::Matrix2d partial_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, int joint) {
+  Eigen::Matrix2d d = Eigen::Matrix2d::Zero();
+  switch (c.kind) {
+    case ConstraintKind::distance: {
+      const Eigen::Vector2d g = (detail::joint_at(model, q, c.joints[0]) - detail::joint_at(model, q, c.joints[1])) / c.length;
+      d.row(0) = joint == c.joints[0] ? g.transpose() : Eigen::RowVector2d(-g.transpose());
+      break;
+    }
+    case ConstraintKind::body_point: {
+      Eigen::Matrix2d along;  // a I + b R, R the quarter turn
+      along << c.coefficients.x(), -c.coefficients.y(), c.coefficients.y(), c.coefficients.x();
+      if (joint == c.joints[0]) d = along - Eigen::Matrix2d::Identity();
+      else if (joint == c.joints[1]) d = -along;
+      else d.setIdentity();
+      break;
+    }
+    case ConstraintKind::slider_line: d.row(0) << -c.direction.y(), c.direction.x(); break;
+    case ConstraintKind::crank: d = joint == c.joints[0] ? Eigen::Matrix2d(-Eigen::Matrix2d::Identity()) : Eigen::Matrix2d::Identity(); break;
+    case ConstraintKind::slider_travel: d.row(0) = c.direction.transpose(); break;
+  }
+  return d;
+}
+
+// Undamped Newton with a direct inner solve, in place on x: the loop of nonlinear::Newton
+// (newton.hpp) with the same tests in the same order and the same counts. The problem gives
+// residual(x, f), jacobian(x) (false when J is not finite) and solve(f, dx) (J dx = -f, a status).
+template <typename Problem, typename Vector>
+NewtonCounts newton_in_place(Problem& problem, Vector& x, Vector& f, Vector& dx, const nonlinear::NewtonOptions& options) {
+  NewtonCounts counts;
+  const auto finish = [&](Status status, StopReason reason) {
+    counts.status = status;
+    counts.reason = reason;
+    counts.residual_norm = f.template lpNorm<Eigen::Infinity>();
+    return counts;
+  };
+  problem.residual(x, f);
+  ++counts.function_evaluations;
+  const double at_start = f.template lpNorm<Eigen::Infinity>();
+  if (!linalg::all_finite(f)) return finish(Status::non_finite, StopReason::non_finite);
+  if (nonlinear::residual_small(at_start, options.residual_tolerance)) return finish(Status::converged, StopReason::residual_small);
+  while (true) {
+    ++counts.iterations;
+    ++counts.jacobian_evaluations;
+    if (!problem.jacobian(x)) return finish(Status::non_finite, StopReason::non_finite);
+    const Status linear = problem.solve(f, dx);
+    if (linear == Status::singular) return finish(Status::singular, StopReason::singular_jacobian);
+    if (linear != Status::converged || !linalg::all_finite(dx)) return finish(Status::non_finite, StopReason::non_finite);
+    x += dx;
+    problem.residual(x, f);
+    ++counts.function_evaluations;
+    counts.step_norm = dx.template lpNorm<Eigen::Infinity>();
+    const double residual = f.template lpNorm<Eigen::Infinity>();
+    if (!linalg::all_finite(x) || !linalg::all_finite(f)) return finish(Status::non_finite, StopReason::non_finite);
+    if (nonlinear::residual_small(residual, options.residual_tolerance)) return finish(Status::converged, StopReason::residual_small);
+    if (nonlinear::step_small(counts.step_norm, x.template lpNorm<Eigen::Infinity>(), options.step_tolerance)) {
+      return finish(Status::no_progress, StopReason::step_small);
+    }
+    if (nonlinear::diverged(residual, at_start, options.divergence_factor)) return finish(Status::diverged, StopReason::diverged);
+    if (counts.iterations >= options.max_iterations) return finish(Status::max_iterations, StopReason::iteration_limit);
+  }
+}
+
+// GEPP's kernel on `work` (J, overwritten by U) and -f, as GaussElimination::solve: pivots negligible
+// below n eps max|J|.
+Status gepp_in_place(RowMajorMatrix& work, const Eigen::VectorXd& f, Eigen::VectorXd& rhs, Eigen::VectorXd& inverse_pivots,
+                     Eigen::VectorXd& dx) {
+  const double negligible = static_cast<double>(work.rows()) * std::numeric_limits<double>::epsilon() * work.cwiseAbs().maxCoeff();
+  rhs = -f;
+  dx.setZero();
+  return linalg::gepp_kernel<Eigen::Dynamic>(work, rhs, inverse_pivots, dx, negligible, true).status;
+}
+
+// The whole system, for full Newton.
+struct WholeProblem {
+  const LinkageModel& model;
+  double t;
+  Eigen::MatrixXd& J;
+  RowMajorMatrix& work;
+  Eigen::VectorXd& rhs;
+  Eigen::VectorXd& inverse_pivots;
+  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const { model.residual(x, t, f); }
+  bool jacobian(const Eigen::VectorXd& x) const {
+    model.jacobian(x, t, J);
+    return linalg::all_finite(J);
+  }
+  Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx) const {
+    work = J;
+    return gepp_in_place(work, f, rhs, inverse_pivots, dx);
+  }
+};
+
+// A one-joint block: two rows, the joint's x and y, a fixed 2x2 system.
+struct JointProblem {
+  const LinkageModel& model;
+  const LinkageFastSolver::Block& block;
+  double t;
+  Eigen::VectorXd& q;
+  Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+  void place(const Eigen::Vector2d& x) const { q.segment<2>(block.columns[0]) = x; }
+  void residual(const Eigen::Vector2d& x, Eigen::Vector2d& f) const {
+    place(x);
+    for (int i = 0; i < 2; ++i) f(i) = rows_of(model, *block.row_constraint[static_cast<std::size_t>(i)], q, t)(block.row_part[static_cast<std::size_t>(i)]);
+  }
+  bool jacobian(const Eigen::Vector2d& x) {
+    place(x);
+    for (int i = 0; i < 2; ++i) {
+      J.row(i) = partial_of(model, *block.row_constraint[static_cast<std::size_t>(i)], q, block.joints[0]).row(block.row_part[static_cast<std::size_t>(i)]);
+    }
+    return J.allFinite();
+  }
+  Status solve(const Eigen::Vector2d& f, Eigen::Vector2d& dx) const {
+    const linalg::LinearResult<2> step = linalg::ClosedForm2x2().solve_prechecked(J, -f);
+    dx = step.x;
+    return step.status;
+  }
+};
+
+// A block of several joints: its rows and columns only, GEPP on its preallocated work matrix.
+struct BlockProblem {
+  const LinkageModel& model;
+  LinkageFastSolver::Block& block;
+  double t;
+  Eigen::VectorXd& q;
+  void place(const Eigen::VectorXd& x) const {
+    for (int j = 0; j < block.size; ++j) q(block.columns[static_cast<std::size_t>(j)]) = x(j);
+  }
+  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const {
+    place(x);
+    for (int i = 0; i < block.size; ++i) {
+      const auto r = static_cast<std::size_t>(i);
+      f(i) = rows_of(model, *block.row_constraint[r], q, t)(block.row_part[r]);
+    }
+  }
+  bool jacobian(const Eigen::VectorXd& x) const {
+    place(x);
+    for (int i = 0; i < block.size; ++i) {
+      const auto r = static_cast<std::size_t>(i);
+      for (std::size_t k = 0; k < block.joints.size(); ++k) {
+        const Eigen::Matrix2d d = partial_of(model, *block.row_constraint[r], q, block.joints[k]);
+        block.work.block<1, 2>(i, 2 * static_cast<Eigen::Index>(k)) = d.row(block.row_part[r]);
+      }
+    }
+    return linalg::all_finite(block.work);
+  }
+  Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx) const { return gepp_in_place(block.work, f, block.rhs, block.inverse_pivots, dx); }
+};
+
+// The counts of a block's Newton added to the solve's, as solve_sequential adds them.
+void add_block(NewtonCounts& total, const NewtonCounts& block) {
+  total.iterations += block.iterations;
+  total.jacobian_evaluations += block.jacobian_evaluations;
+  total.function_evaluations += block.function_evaluations;
+  total.step_norm = block.step_norm;
+}
+
+}  // namespace
+
+bool LinkageFastSolver::applies(const LinkageSolverOptions& options) {
+  if (options.newton.damped) return false;
+  return (options.solver == "full" && options.linear == "gepp") || options.solver == "sequential" || options.solver == "analytic";
+}
+
+LinkageFastSolver::LinkageFastSolver(const LinkageSolver& solver) : solver_(solver) {
+  if (!applies(solver.options())) {
+    throw std::invalid_argument("the fast linkage path does not cover --solver " + solver.options().solver + " --linear " +
+                                solver.options().linear + (solver.options().newton.damped ? " (damped)" : ""));
+  }
+  const LinkageModel& model = solver.model();
+  const int n = model.unknown_count();
+  f_.setZero(n), dx_.setZero(n), rhs_.setZero(n), inverse_pivots_.setZero(n), phi_t_.setZero(n), qdot_.setZero(n);
+  J_.setZero(n, n);
+  work_.setZero(n, n);
+  for (const LinkageBlock& source : solver.blocks()) {
+    Block block;
+    block.size = static_cast<int>(source.rows_and_columns.unknowns.size());
+    block.rows = source.rows_and_columns.equations;
+    block.columns = source.rows_and_columns.unknowns;
+    block.joints = source.joints;
+    for (int row : block.rows) {
+      for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+        const int first = model.first_row(static_cast<int>(k));
+        if (row >= first && row < first + model.constraints()[k].rows()) {
+          block.row_constraint.push_back(&model.constraints()[k]);
+          block.row_part.push_back(row - first);
+        }
+      }
+    }
+    block.work.setZero(block.size, block.size);
+    block.x.setZero(block.size), block.f.setZero(block.size), block.dx.setZero(block.size);
+    block.rhs.setZero(block.size), block.inverse_pivots.setZero(block.size);
+    blocks_.push_back(std::move(block));
+  }
+}
+
+LinkageFastOutcome LinkageFastSolver::solve(double t, Eigen::VectorXd& q) {
+  if (q.size() != solver_.model().unknown_count()) {
+    throw std::invalid_argument("starting point has " + std::to_string(q.size()) + " entries but the system has " +
+                                std::to_string(solver_.model().unknown_count()) + " unknowns");
+  }
+  const std::string& kind = solver_.options().solver;
+  if (kind == "full") return solve_full(t, q);
+  if (kind == "sequential") return solve_sequential(t, q);
+  return solve_analytic(t, q);
+}
+
+LinkageFastOutcome LinkageFastSolver::solve_full(double t, Eigen::VectorXd& q) {
+  linalg::require_finite(q, "starting point");
+  WholeProblem whole{solver_.model(), t, J_, work_, rhs_, inverse_pivots_};
+  return {newton_in_place(whole, q, f_, dx_, solver_.options().newton), -1};
+}
+
+// The blocks in order, as LinkageSolver::solve_sequential, each on its own rows and columns.
+LinkageFastOutcome LinkageFastSolver::solve_sequential(double t, Eigen::VectorXd& q) {
+  LinkageFastOutcome solution;
+  solution.outcome.status = Status::converged;
+  solution.outcome.reason = StopReason::residual_small;
+  const nonlinear::NewtonOptions& options = solver_.options().newton;
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    Block& block = blocks_[b];
+    NewtonCounts counts;
+    if (block.size == 2) {
+      Eigen::Vector2d x = q.segment<2>(block.columns[0]), f, dx;
+      linalg::require_finite(x, "starting point");
+      JointProblem problem{solver_.model(), block, t, q};
+      counts = newton_in_place(problem, x, f, dx, options);
+      problem.place(x);
+    } else {
+      for (int j = 0; j < block.size; ++j) block.x(j) = q(block.columns[static_cast<std::size_t>(j)]);
+      linalg::require_finite(block.x, "starting point");
+      BlockProblem problem{solver_.model(), block, t, q};
+      counts = newton_in_place(problem, block.x, block.f, block.dx, options);
+      problem.place(block.x);
+    }
+    add_block(solution.outcome, counts);
+    if (counts.status != Status::converged) {
+      solution.outcome.status = counts.status;
+      solution.outcome.reason = counts.reason;
+      solution.failed_block = static_cast<int>(b);
+      break;
+    }
+  }
+  solution.outcome.residual_norm = whole_residual_norm(q, t);
+  if (solution.outcome.status == Status::converged && !(solution.outcome.residual_norm <= options.residual_tolerance)) {
+    solution.outcome.status = Status::no_progress;
+    solution.outcome.reason = StopReason::no_progress;
+  }
+  return solution;
+}
+
+// As LinkageSolver::closed_form, in place.
+LinkageFastOutcome LinkageFastSolver::solve_analytic(double t, Eigen::VectorXd& q) {
+  LinkageFastOutcome solution;
+  solution.failed_block = detail::closed_form_in_place(solver_.model(), solver_.blocks(), t, q);
+  solution.outcome.status = solution.failed_block < 0 ? Status::converged : Status::cannot_assemble;
+  solution.outcome.reason = solution.failed_block < 0 ? StopReason::residual_small : StopReason::running;
+  solution.outcome.residual_norm = whole_residual_norm(q, t);
+  if (solution.failed_block < 0 && !(solution.outcome.residual_norm <= solver_.options().newton.residual_tolerance)) {
+    solution.outcome.status = Status::no_progress;
+    solution.outcome.reason = StopReason::no_progress;
+  }
+  return solution;
+}
+
+double LinkageFastSolver::whole_residual_norm(const Eigen::VectorXd& q, double t) {
+  solver_.model().residual(q, t, f_);
+  return f_.size() == 0 ? 0.0 : f_.lpNorm<Eigen::Infinity>();
+}
+
+// Block forward substitution: block by block in solving order, A_bb qdot_b = -Phi_t,b - sum of the
+// earlier blocks' A_bc qdot_c (the later blocks' entries are zero, and so are qdot's unsolved ones).
+bool LinkageFastSolver::velocity(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot) {
+  const LinkageModel& model = solver_.model();
+  model.jacobian(q, t, J_);
+  model.driver_derivative(q, t, phi_t_);
+  qdot.setZero(model.unknown_count());
+  for (Block& block : blocks_) {
+    for (int i = 0; i < block.size; ++i) {
+      const int row = block.rows[static_cast<std::size_t>(i)];
+      block.f(i) = phi_t_(row) + J_.row(row).dot(qdot);  // the right-hand side is -f
+      for (int j = 0; j < block.size; ++j) block.work(i, j) = J_(row, block.columns[static_cast<std::size_t>(j)]);
+    }
+    Status status = Status::converged;
+    if (block.size == 2) {
+      const auto step = linalg::ClosedForm2x2().solve_prechecked(block.work, Eigen::Vector2d(-block.f));
+      block.dx = step.x;
+      status = step.status;
+    } else {
+      status = gepp_in_place(block.work, block.f, block.rhs, block.inverse_pivots, block.dx);
+    }
+    if (status != Status::converged) {
+      qdot.setConstant(std::numeric_limits<double>::quiet_NaN());
+      return false;
+    }
+    for (int j = 0; j < block.size; ++j) qdot(block.columns[static_cast<std::size_t>(j)]) = block.dx(j);
+  }
+  return true;
+}
+
+void LinkageFastSolver::predict(double at, Eigen::VectorXd& q, double next) {
+  if (velocity(at, q, qdot_) && qdot_.allFinite()) q += qdot_ * (next - at);
+}
+
+}  // namespace numlab::mechanisms
