@@ -40,6 +40,7 @@ Eigen::Vector2d rows_of(const LinkageModel& model, const Constraint& c, const Ei
 // d(rows of c) / d(joint's x, y): the blocks LinkageModel::jacobian puts in J.
 Eigen::Matrix2d partial_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, int joint) {
   Eigen::Matrix2d d = Eigen::Matrix2d::Zero();
+  if (joint != c.joints[0] && joint != c.joints[1] && joint != c.joints[2]) return d;  // c does not read it
   switch (c.kind) {
     case ConstraintKind::distance: {
       const Eigen::Vector2d g = (detail::joint_at(model, q, c.joints[0]) - detail::joint_at(model, q, c.joints[1])) / c.length;
@@ -62,7 +63,8 @@ Eigen::Matrix2d partial_of(const LinkageModel& model, const Constraint& c, const
 }
 
 // Undamped Newton with a direct inner solve, in place on x: the loop of nonlinear::Newton
-// (newton.hpp) with the same tests in the same order and the same counts. The problem gives
+// (newton.hpp) with the same tests in the same order and the same counts, but for J: evaluated once
+// per iteration here, where Newton on a DynamicSystem evaluates it with every residual. The problem gives
 // residual(x, f), jacobian(x) (false when J is not finite) and solve(f, dx) (J dx = -f, a status).
 template <typename Problem, typename Vector>
 NewtonCounts newton_in_place(Problem& problem, Vector& x, Vector& f, Vector& dx, const nonlinear::NewtonOptions& options) {

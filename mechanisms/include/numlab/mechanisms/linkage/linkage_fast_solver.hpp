@@ -1,7 +1,8 @@
 #pragma once
 // The fast path beside LinkageSolver (linkage_solver.hpp), for sweeps and `numlab bench`: the same
-// full, sequential and analytic solves, with the same stop tests, statuses and counts, on a workspace
-// sized once when it is made. A solve, and each Newton iteration in it, allocates nothing on the heap.
+// full, sequential and analytic solves, with the same stop tests, statuses, iterations and residual
+// evaluations, on a workspace sized once when it is made. (Its jacobian_evaluations are one per
+// iteration: the generic Newton on a DynamicSystem evaluates J with every residual, the last unused.) A solve, and each Newton iteration in it, allocates nothing on the heap.
 //
 // Where the time goes instead:
 //   full        model.residual and model.jacobian into preallocated f and J, GEPP's one-loop kernel
