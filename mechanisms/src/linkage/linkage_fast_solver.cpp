@@ -1,12 +1,12 @@
 #include "numlab/mechanisms/linkage/linkage_fast_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "linkage_joints.hpp"
-#include "numlab/linalg/gauss_elimination_kernel.hpp"
 #include "numlab/linalg/input_checks.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/nonlinear/stopping_tests.hpp"
@@ -21,8 +21,10 @@ using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eig
 
 Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
-// Constraint c's rows at q (a one-row constraint leaves the second 0): the rows of LinkageModel::residual.
-Eigen::Vector2d rows_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, double t) {
+// Constraint c's rows at q (a one-row constraint leaves the second 0): the rows of LinkageModel::residual,
+// with the crank's direction (cos, sin)(t + offset) given, computed once per solve.
+Eigen::Vector2d rows_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, double t,
+                        const Eigen::Vector2d& crank_direction) {
   const auto p = [&](int slot) { return detail::joint_at(model, q, c.joints[static_cast<std::size_t>(slot)]); };
   switch (c.kind) {
     case ConstraintKind::distance: return {((p(0) - p(1)).squaredNorm() - c.length * c.length) / (2.0 * c.length), 0.0};
@@ -31,7 +33,7 @@ Eigen::Vector2d rows_of(const LinkageModel& model, const Constraint& c, const Ei
       return p(2) - p(0) - c.coefficients.x() * base - c.coefficients.y() * perp(base);
     }
     case ConstraintKind::slider_line: return {detail::cross(c.direction, p(0) - c.point), 0.0};
-    case ConstraintKind::crank: return p(1) - p(0) - c.length * Eigen::Vector2d(std::cos(t + c.offset), std::sin(t + c.offset));
+    case ConstraintKind::crank: return p(1) - p(0) - c.length * crank_direction;
     case ConstraintKind::slider_travel: return {c.direction.dot(p(0) - c.point) - t, 0.0};
   }
   return Eigen::Vector2d::Zero();
@@ -102,32 +104,77 @@ NewtonCounts newton_in_place(Problem& problem, Vector& x, Vector& f, Vector& dx,
   }
 }
 
-// GEPP's kernel on `work` (J, overwritten by U) and -f, as GaussElimination::solve: pivots negligible
-// below n eps max|J|.
-Status gepp_in_place(RowMajorMatrix& work, const Eigen::VectorXd& f, Eigen::VectorXd& rhs, Eigen::VectorXd& inverse_pivots,
-                     Eigen::VectorXd& dx) {
-  const double negligible = static_cast<double>(work.rows()) * std::numeric_limits<double>::epsilon() * work.cwiseAbs().maxCoeff();
+// GEPP as gauss_elimination_kernel.hpp runs it (the same pivots, multipliers and order of
+// operations), except that a row whose multiplier is zero is left alone: a derived J has a few
+// nonzeros per column (the Jansen leg's 36 of 144), so most row updates are skipped.
+// J dx = -f with J in `work` (overwritten by U); pivots negligible below n eps max|J|.
+Status sparse_gepp(RowMajorMatrix& work, const Eigen::VectorXd& f, Eigen::VectorXd& rhs, Eigen::VectorXd& inverse_pivots,
+                   Eigen::VectorXd& dx) {
+  const Eigen::Index n = work.rows();
+  const double negligible = static_cast<double>(n) * std::numeric_limits<double>::epsilon() * work.cwiseAbs().maxCoeff();
   rhs = -f;
-  dx.setZero();
-  return linalg::gepp_kernel<Eigen::Dynamic>(work, rhs, inverse_pivots, dx, negligible, true).status;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    // 1. The pivot: the first row p >= k with the largest |u_pk|.
+    Eigen::Index p = k;
+    for (Eigen::Index i = k + 1; i < n; ++i) {
+      if (std::abs(work(i, k)) > std::abs(work(p, k))) p = i;
+    }
+    // 2. Rows k and p swapped.
+    if (p != k) {
+      work.row(k).swap(work.row(p));
+      std::swap(rhs(k), rhs(p));
+    }
+    const double pivot = work(k, k);
+    if (!std::isfinite(pivot)) return Status::non_finite;
+    if (std::abs(pivot) <= negligible) return Status::singular;
+    // 3. Each row below with a nonzero multiplier l_ik = u_ik / u_kk: row_i -= l_ik row_k.
+    inverse_pivots(k) = 1.0 / pivot;
+    for (Eigen::Index i = k + 1; i < n; ++i) {
+      const double multiplier = work(i, k) * inverse_pivots(k);
+      if (multiplier == 0.0) continue;
+      work(i, k) = 0.0;
+      work.row(i).tail(n - k - 1) -= multiplier * work.row(k).tail(n - k - 1);
+      rhs(i) -= multiplier * rhs(k);
+    }
+  }
+  // 4. Back substitution, column by column from the last unknown.
+  for (Eigen::Index i = n - 1; i >= 0; --i) {
+    dx(i) = rhs(i) * inverse_pivots(i);
+    if (!std::isfinite(dx(i))) return Status::non_finite;
+    rhs.head(i) -= work.col(i).head(i) * dx(i);
+  }
+  return Status::converged;
+}
+
+// Phi(q; t), every constraint once, into f.
+void whole_residual(const LinkageModel& model, const Eigen::VectorXd& q, double t, const Eigen::Vector2d& crank_direction,
+                    Eigen::VectorXd& f) {
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    const Constraint& c = model.constraints()[k];
+    const Eigen::Vector2d rows = rows_of(model, c, q, t, crank_direction);
+    const int row = model.first_row(static_cast<int>(k));
+    f(row) = rows(0);
+    if (c.rows() == 2) f(row + 1) = rows(1);
+  }
 }
 
 // The whole system, for full Newton.
 struct WholeProblem {
   const LinkageModel& model;
   double t;
+  Eigen::Vector2d crank_direction;
   Eigen::MatrixXd& J;
   RowMajorMatrix& work;
   Eigen::VectorXd& rhs;
   Eigen::VectorXd& inverse_pivots;
-  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const { model.residual(x, t, f); }
+  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const { whole_residual(model, x, t, crank_direction, f); }
   bool jacobian(const Eigen::VectorXd& x) const {
     model.jacobian(x, t, J);
     return linalg::all_finite(J);
   }
   Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx) const {
     work = J;
-    return gepp_in_place(work, f, rhs, inverse_pivots, dx);
+    return sparse_gepp(work, f, rhs, inverse_pivots, dx);
   }
 };
 
@@ -136,21 +183,35 @@ struct JointProblem {
   const LinkageModel& model;
   const LinkageFastSolver::Block& block;
   double t;
+  Eigen::Vector2d crank_direction;
   Eigen::VectorXd& q;
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
   void place(const Eigen::Vector2d& x) const { q.segment<2>(block.columns[0]) = x; }
   void residual(const Eigen::Vector2d& x, Eigen::Vector2d& f) const {
     place(x);
-    for (int i = 0; i < 2; ++i) f(i) = rows_of(model, *block.row_constraint[static_cast<std::size_t>(i)], q, t)(block.row_part[static_cast<std::size_t>(i)]);
+    for (const LinkageFastSolver::Part& part : block.parts) {
+      const Eigen::Vector2d rows = rows_of(model, *part.constraint, q, t, crank_direction);
+      for (int r = 0; r < 2; ++r) {
+        if (part.row[r] >= 0) f(part.row[r]) = rows(r);
+      }
+    }
   }
   bool jacobian(const Eigen::Vector2d& x) {
+    if (block.identity_jacobian) return true;  // J = I, set once
     place(x);
-    for (int i = 0; i < 2; ++i) {
-      J.row(i) = partial_of(model, *block.row_constraint[static_cast<std::size_t>(i)], q, block.joints[0]).row(block.row_part[static_cast<std::size_t>(i)]);
+    for (const LinkageFastSolver::Part& part : block.parts) {
+      const Eigen::Matrix2d d = partial_of(model, *part.constraint, q, block.joints[0]);
+      for (int r = 0; r < 2; ++r) {
+        if (part.row[r] >= 0) J.row(part.row[r]) = d.row(r);
+      }
     }
     return J.allFinite();
   }
   Status solve(const Eigen::Vector2d& f, Eigen::Vector2d& dx) const {
+    if (block.identity_jacobian) {  // what the closed form gives for J = I, bit for bit
+      dx = -f;
+      return Status::converged;
+    }
     const linalg::LinearResult<2> step = linalg::ClosedForm2x2().solve_prechecked(J, -f);
     dx = step.x;
     return step.status;
@@ -162,29 +223,35 @@ struct BlockProblem {
   const LinkageModel& model;
   LinkageFastSolver::Block& block;
   double t;
+  Eigen::Vector2d crank_direction;
   Eigen::VectorXd& q;
   void place(const Eigen::VectorXd& x) const {
     for (int j = 0; j < block.size; ++j) q(block.columns[static_cast<std::size_t>(j)]) = x(j);
   }
   void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const {
     place(x);
-    for (int i = 0; i < block.size; ++i) {
-      const auto r = static_cast<std::size_t>(i);
-      f(i) = rows_of(model, *block.row_constraint[r], q, t)(block.row_part[r]);
+    for (const LinkageFastSolver::Part& part : block.parts) {
+      const Eigen::Vector2d rows = rows_of(model, *part.constraint, q, t, crank_direction);
+      for (int r = 0; r < 2; ++r) {
+        if (part.row[r] >= 0) f(part.row[r]) = rows(r);
+      }
     }
   }
   bool jacobian(const Eigen::VectorXd& x) const {
     place(x);
-    for (int i = 0; i < block.size; ++i) {
-      const auto r = static_cast<std::size_t>(i);
+    for (const LinkageFastSolver::Part& part : block.parts) {
       for (std::size_t k = 0; k < block.joints.size(); ++k) {
-        const Eigen::Matrix2d d = partial_of(model, *block.row_constraint[r], q, block.joints[k]);
-        block.work.block<1, 2>(i, 2 * static_cast<Eigen::Index>(k)) = d.row(block.row_part[r]);
+        const Eigen::Matrix2d d = partial_of(model, *part.constraint, q, block.joints[k]);
+        for (int r = 0; r < 2; ++r) {
+          if (part.row[r] >= 0) block.work.block<1, 2>(part.row[r], 2 * static_cast<Eigen::Index>(k)) = d.row(r);
+        }
       }
     }
     return linalg::all_finite(block.work);
   }
-  Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx) const { return gepp_in_place(block.work, f, block.rhs, block.inverse_pivots, dx); }
+  Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx) const {
+    return sparse_gepp(block.work, f, block.rhs, block.inverse_pivots, dx);
+  }
 };
 
 // The counts of a block's Newton added to the solve's, as solve_sequential adds them.
@@ -212,20 +279,29 @@ LinkageFastSolver::LinkageFastSolver(const LinkageSolver& solver) : solver_(solv
   f_.setZero(n), dx_.setZero(n), rhs_.setZero(n), inverse_pivots_.setZero(n), phi_t_.setZero(n), qdot_.setZero(n);
   J_.setZero(n, n);
   work_.setZero(n, n);
+  for (const Constraint& c : model.constraints()) {
+    if (c.kind == ConstraintKind::crank) crank_ = &c;
+  }
   for (const LinkageBlock& source : solver.blocks()) {
     Block block;
     block.size = static_cast<int>(source.rows_and_columns.unknowns.size());
     block.rows = source.rows_and_columns.equations;
     block.columns = source.rows_and_columns.unknowns;
     block.joints = source.joints;
-    for (int row : block.rows) {
-      for (std::size_t k = 0; k < model.constraints().size(); ++k) {
-        const int first = model.first_row(static_cast<int>(k));
-        if (row >= first && row < first + model.constraints()[k].rows()) {
-          block.row_constraint.push_back(&model.constraints()[k]);
-          block.row_part.push_back(row - first);
-        }
+    // Each constraint with a row in the block, and where its rows go in the block's f.
+    for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+      Part part{&model.constraints()[k], {-1, -1}};
+      for (int r = 0; r < part.constraint->rows(); ++r) {
+        const auto at = std::find(block.rows.begin(), block.rows.end(), model.first_row(static_cast<int>(k)) + r);
+        if (at != block.rows.end()) part.row[r] = static_cast<int>(at - block.rows.begin());
       }
+      if (part.row[0] >= 0 || part.row[1] >= 0) block.parts.push_back(part);
+    }
+    // A crank's joint and a body's point enter their rows as + p: J = I for their blocks.
+    if (block.size == 2 && block.parts.size() == 1) {
+      const Constraint& c = *block.parts[0].constraint;
+      block.identity_jacobian = (c.kind == ConstraintKind::crank && c.joints[1] == block.joints[0]) ||
+                                (c.kind == ConstraintKind::body_point && c.joints[2] == block.joints[0]);
     }
     block.work.setZero(block.size, block.size);
     block.x.setZero(block.size), block.f.setZero(block.size), block.dx.setZero(block.size);
@@ -247,7 +323,7 @@ LinkageFastOutcome LinkageFastSolver::solve(double t, Eigen::VectorXd& q) {
 
 LinkageFastOutcome LinkageFastSolver::solve_full(double t, Eigen::VectorXd& q) {
   linalg::require_finite(q, "starting point");
-  WholeProblem whole{solver_.model(), t, J_, work_, rhs_, inverse_pivots_};
+  WholeProblem whole{solver_.model(), t, crank_direction(t), J_, work_, rhs_, inverse_pivots_};
   return {newton_in_place(whole, q, f_, dx_, solver_.options().newton), -1};
 }
 
@@ -257,23 +333,26 @@ LinkageFastOutcome LinkageFastSolver::solve_sequential(double t, Eigen::VectorXd
   solution.outcome.status = Status::converged;
   solution.outcome.reason = StopReason::residual_small;
   const nonlinear::NewtonOptions& options = solver_.options().newton;
+  const Eigen::Vector2d direction = crank_direction(t);
+  double worst_row = 0.0;
   for (std::size_t b = 0; b < blocks_.size(); ++b) {
     Block& block = blocks_[b];
     NewtonCounts counts;
     if (block.size == 2) {
       Eigen::Vector2d x = q.segment<2>(block.columns[0]), f, dx;
       linalg::require_finite(x, "starting point");
-      JointProblem problem{solver_.model(), block, t, q};
+      JointProblem problem{solver_.model(), block, t, direction, q, Eigen::Matrix2d::Identity()};
       counts = newton_in_place(problem, x, f, dx, options);
       problem.place(x);
     } else {
       for (int j = 0; j < block.size; ++j) block.x(j) = q(block.columns[static_cast<std::size_t>(j)]);
       linalg::require_finite(block.x, "starting point");
-      BlockProblem problem{solver_.model(), block, t, q};
+      BlockProblem problem{solver_.model(), block, t, direction, q};
       counts = newton_in_place(problem, block.x, block.f, block.dx, options);
       problem.place(block.x);
     }
     add_block(solution.outcome, counts);
+    worst_row = std::max(worst_row, counts.residual_norm);
     if (counts.status != Status::converged) {
       solution.outcome.status = counts.status;
       solution.outcome.reason = counts.reason;
@@ -281,7 +360,10 @@ LinkageFastOutcome LinkageFastSolver::solve_sequential(double t, Eigen::VectorXd
       break;
     }
   }
-  solution.outcome.residual_norm = whole_residual_norm(q, t);
+  // ||Phi||_inf at the result. When every block converged it is the largest of the blocks' own
+  // final ||f||_inf: a block's rows read only its joints and those of the blocks before it, none of
+  // which moved after it ended, so those rows are Phi's rows at the result, computed alike.
+  solution.outcome.residual_norm = solution.failed_block < 0 ? worst_row : whole_residual_norm(q, t);
   if (solution.outcome.status == Status::converged && !(solution.outcome.residual_norm <= options.residual_tolerance)) {
     solution.outcome.status = Status::no_progress;
     solution.outcome.reason = StopReason::no_progress;
@@ -304,8 +386,12 @@ LinkageFastOutcome LinkageFastSolver::solve_analytic(double t, Eigen::VectorXd& 
 }
 
 double LinkageFastSolver::whole_residual_norm(const Eigen::VectorXd& q, double t) {
-  solver_.model().residual(q, t, f_);
+  whole_residual(solver_.model(), q, t, crank_direction(t), f_);
   return f_.size() == 0 ? 0.0 : f_.lpNorm<Eigen::Infinity>();
+}
+
+Eigen::Vector2d LinkageFastSolver::crank_direction(double t) const {
+  return crank_ == nullptr ? Eigen::Vector2d::Zero() : Eigen::Vector2d(std::cos(t + crank_->offset), std::sin(t + crank_->offset));
 }
 
 // Block forward substitution: block by block in solving order, A_bb qdot_b = -Phi_t,b - sum of the
@@ -327,7 +413,7 @@ bool LinkageFastSolver::velocity(double t, const Eigen::VectorXd& q, Eigen::Vect
       block.dx = step.x;
       status = step.status;
     } else {
-      status = gepp_in_place(block.work, block.f, block.rhs, block.inverse_pivots, block.dx);
+      status = sparse_gepp(block.work, block.f, block.rhs, block.inverse_pivots, block.dx);
     }
     if (status != Status::converged) {
       qdot.setConstant(std::numeric_limits<double>::quiet_NaN());

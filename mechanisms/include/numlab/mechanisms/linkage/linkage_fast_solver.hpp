@@ -5,17 +5,19 @@
 // iteration: the generic Newton on a DynamicSystem evaluates J with every residual, the last unused.) A solve, and each Newton iteration in it, allocates nothing on the heap.
 //
 // Where the time goes instead:
-//   full        model.residual and model.jacobian into preallocated f and J, GEPP's one-loop kernel
-//               (gauss_elimination_kernel.hpp) on a preallocated copy: the generic path's arithmetic
+//   full        the residual and model.jacobian into preallocated f and J, and GEPP on a preallocated
+//               copy that skips the row updates whose multiplier is zero (J is sparse)
 //   sequential  per block only that block's own rows and columns: a one-joint block by Newton on a
-//               fixed 2x2 system with the closed-form inverse, a bigger block by the GEPP kernel
+//               fixed 2x2 system with the closed-form inverse, a bigger block by that GEPP
 //   analytic    the generic closed form itself, in place
+// and the crank's cos and sin once per solve, not at every residual.
 // and velocity() solves J qdot = -Phi_t block by block (J is block lower triangular in block order).
 //
 // tests/linkage_fast/ checks that both paths agree on every shipped model and that nothing is
 // allocated. The teaching path, and --trace and --step, stay with LinkageSolver.
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
@@ -51,13 +53,19 @@ class LinkageFastSolver {
   // velocity is not finite (as the generic sweep's predictor).
   void predict(double at, Eigen::VectorXd& q, double next);
 
-  // One block's precomputed rows and columns (public for the .cpp's helpers; not an interface).
+  // A constraint with rows in a block, and where they go in the block's f (-1: not in the block).
+  // Public for the .cpp's helpers; not an interface.
+  struct Part {
+    const Constraint* constraint;
+    std::array<int, 2> row;
+  };
+  // One block's precomputed rows and columns.
   struct Block {
     int size = 0;                       // unknowns (and rows)
     std::vector<int> rows, columns;     // of the whole system
-    std::vector<const Constraint*> row_constraint;
-    std::vector<int> row_part;          // 0 or 1: which row of its constraint
+    std::vector<Part> parts;
     std::vector<int> joints;            // the block's joints, in column order (x, y each)
+    bool identity_jacobian = false;     // the block's J is I (a crank, a body point): dx = -f
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> work;  // bigger blocks: J, then U
     Eigen::VectorXd x, f, dx, rhs, inverse_pivots;
   };
@@ -67,8 +75,10 @@ class LinkageFastSolver {
   LinkageFastOutcome solve_sequential(double t, Eigen::VectorXd& q);
   LinkageFastOutcome solve_analytic(double t, Eigen::VectorXd& q);
   double whole_residual_norm(const Eigen::VectorXd& q, double t);
+  Eigen::Vector2d crank_direction(double t) const;  // (cos, sin)(t + offset), once per solve
 
   const LinkageSolver& solver_;
+  const Constraint* crank_ = nullptr;  // the driving crank's constraint, if a crank drives
   std::vector<Block> blocks_;
   Eigen::VectorXd f_, dx_, rhs_, inverse_pivots_, phi_t_, qdot_;
   Eigen::MatrixXd J_;
