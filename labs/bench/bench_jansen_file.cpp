@@ -29,10 +29,10 @@ std::vector<JansenBenchRow> bench_jansen_file(double tolerance, bool quick) {
     const mechanisms::LinkageCycle solved = cycle();
     // Untimed: every joint against the hand-coded closed form.
     double error = solved.status == Status::converged ? 0.0 : std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < solved.q.size() && solved.status == Status::converged; ++k) {
+    for (Eigen::Index k = 0; k < solved.q.cols() && solved.status == Status::converged; ++k) {
       const double crank = (start + static_cast<double>(k)) * std::numbers::pi / 180.0;
       const auto exact = leg.closed_form_joints(crank);
-      const auto joints = model.positions(solved.q[k]);
+      const auto joints = model.positions(solved.q.col(k));
       for (std::size_t j = 0; j < mechanisms::jansen_joint_names.size() && exact; ++j) {
         const int index = model.description().joint_index(mechanisms::jansen_joint_names[j]);
         error = std::max(error, (joints[static_cast<std::size_t>(index)] - (*exact)[j]).norm());

@@ -158,24 +158,28 @@ void whole_residual(const LinkageModel& model, const Eigen::VectorXd& q, double 
   }
 }
 
-// The whole system, for full Newton.
+// The whole system, for full Newton. J is put straight into the work matrix GEPP overwrites.
 struct WholeProblem {
   const LinkageModel& model;
   double t;
   Eigen::Vector2d crank_direction;
-  Eigen::MatrixXd& J;
   RowMajorMatrix& work;
   Eigen::VectorXd& rhs;
   Eigen::VectorXd& inverse_pivots;
   void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const { whole_residual(model, x, t, crank_direction, f); }
   bool jacobian(const Eigen::VectorXd& x) const {
-    model.jacobian(x, t, J);
-    return linalg::all_finite(J);
+    work.setZero();
+    for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+      const Constraint& c = model.constraints()[k];
+      for (const int joint : c.joints) {
+        if (joint < 0 || model.column_of(joint) < 0) continue;  // unused slot, or a ground joint
+        work.block(model.first_row(static_cast<int>(k)), model.column_of(joint), c.rows(), 2) =
+            partial_of(model, c, x, joint).topRows(c.rows());
+      }
+    }
+    return linalg::all_finite(work);
   }
-  Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx) const {
-    work = J;
-    return sparse_gepp(work, f, rhs, inverse_pivots, dx);
-  }
+  Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx) const { return sparse_gepp(work, f, rhs, inverse_pivots, dx); }
 };
 
 // A one-joint block: two rows, the joint's x and y, a fixed 2x2 system.
@@ -323,7 +327,7 @@ LinkageFastOutcome LinkageFastSolver::solve(double t, Eigen::VectorXd& q) {
 
 LinkageFastOutcome LinkageFastSolver::solve_full(double t, Eigen::VectorXd& q) {
   linalg::require_finite(q, "starting point");
-  WholeProblem whole{solver_.model(), t, crank_direction(t), J_, work_, rhs_, inverse_pivots_};
+  WholeProblem whole{solver_.model(), t, crank_direction(t), work_, rhs_, inverse_pivots_};
   return {newton_in_place(whole, q, f_, dx_, solver_.options().newton), -1};
 }
 

@@ -337,15 +337,15 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
 
 namespace {
 
-// The next of equally spaced poses from the last m <= 5 (the polynomial of degree m - 1 through them):
-// sum over k = 1..m of (-1)^(k+1) C(m, k) poses[end - k].
-void extrapolate(const std::vector<Eigen::VectorXd>& poses, Eigen::VectorXd& next) {
-  const int m = static_cast<int>(std::min<std::size_t>(poses.size(), 5));
+// The next of equally spaced poses from the last m <= 5 of the `done` columns of poses (the
+// polynomial of degree m - 1 through them): sum over k = 1..m of (-1)^(k+1) C(m, k) poses(done - k).
+void extrapolate(const Eigen::MatrixXd& poses, Eigen::Index done, Eigen::VectorXd& next) {
+  const Eigen::Index m = std::min<Eigen::Index>(done, 5);
   next.setZero();
   double binomial = 1.0;  // C(m, k), from C(m, 0)
-  for (int k = 1; k <= m; ++k) {
-    binomial = binomial * (m - k + 1) / k;
-    next += (k % 2 == 1 ? binomial : -binomial) * poses[poses.size() - static_cast<std::size_t>(k)];
+  for (Eigen::Index k = 1; k <= m; ++k) {
+    binomial = binomial * static_cast<double>(m - k + 1) / static_cast<double>(k);
+    next += (k % 2 == 1 ? binomial : -binomial) * poses.col(done - k);
   }
 }
 
@@ -355,7 +355,7 @@ LinkageCycle solve_linkage_cycle(const LinkageSolver& solver, double start, doub
   const LinkageModel& model = solver.model();
   const std::size_t count = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
   LinkageCycle cycle;
-  cycle.q.reserve(count);
+  cycle.q.resize(solver.model().unknown_count(), static_cast<Eigen::Index>(count));
   PoseSolver poses(solver, true);
   const double reference = solver.reference_driver();
   double at = model.driver_from_user(start);
@@ -369,7 +369,7 @@ LinkageCycle solve_linkage_cycle(const LinkageSolver& solver, double start, doub
     if (k > 0) {
       // The prediction of `numlab bench jansen`'s hand-coded sweeps: the polynomial through the
       // last poses (up to five), extrapolated; if its solve fails, continuation from the last pose.
-      extrapolate(cycle.q, trial);
+      extrapolate(cycle.q, static_cast<Eigen::Index>(k), trial);
       pose = poses.solve(t, trial);
       if (pose.outcome.status == Status::converged) q.swap(trial);
       else pose = continue_in_place(poses, at, t, q, trial, std::abs(t - at));
@@ -377,7 +377,7 @@ LinkageCycle solve_linkage_cycle(const LinkageSolver& solver, double start, doub
     at = t;
     cycle.iterations += pose.outcome.iterations;
     if (pose.outcome.status != Status::converged && cycle.status == Status::converged) cycle.status = pose.outcome.status;
-    cycle.q.push_back(q);
+    cycle.q.col(static_cast<Eigen::Index>(k)) = q;
   }
   return cycle;
 }

@@ -5,8 +5,8 @@
 // iteration: the generic Newton on a DynamicSystem evaluates J with every residual, the last unused.) A solve, and each Newton iteration in it, allocates nothing on the heap.
 //
 // Where the time goes instead:
-//   full        the residual and model.jacobian into preallocated f and J, and GEPP on a preallocated
-//               copy that skips the row updates whose multiplier is zero (J is sparse)
+//   full        f and J into preallocated storage, J's nonzeros only, and GEPP in place that skips
+//               the row updates whose multiplier is zero (J is sparse)
 //   sequential  per block only that block's own rows and columns: a one-joint block by Newton on a
 //               fixed 2x2 system with the closed-form inverse, a bigger block by that GEPP
 //   analytic    the generic closed form itself, in place

@@ -63,12 +63,14 @@ using LinkagePoseObserver = std::function<void(const LinkagePose&)>;
 LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
                            const LinkagePoseObserver& observer = {});
 
-// Positions only, for timing: from the reference pose to start, then every pose from the one before
-// (predicted, then solved), its unknowns stored; none of the sweep's per-pose analysis. What
-// `numlab bench jansen` times for a description file, as it times solve_crank_sweep for the
+// Positions only, for timing: from the reference pose to start, then every pose predicted as
+// solve_crank_sweep predicts the hand-coded models' (the polynomial through the last five poses,
+// extrapolated; continuation from the last pose if that fails), solved, its unknowns stored; none
+// of the sweep's per-pose analysis. On the fast path (linkage_fast_solver.hpp) where it applies.
+// What `numlab bench jansen` times for a description file, as it times solve_crank_sweep for the
 // hand-coded models.
 struct LinkageCycle {
-  std::vector<Eigen::VectorXd> q;
+  Eigen::MatrixXd q;  // one column per pose, allocated once
   int iterations = 0;
   Status status = Status::converged;  // the first failure's, if any
 };
