@@ -257,8 +257,12 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   double t_start = model.driver_from_user(start);
   double walk_to = t_start;
   if (model.crank_driven()) walk_to = reference + std::remainder(t_start - reference, 2.0 * std::acos(-1.0));
-  const double longest = model.crank_driven() ? model.driver_from_user(crank_walk_deg)
-                                              : std::max(std::abs(walk_to - reference) / slider_walk_steps, 1e-12);
+  // A slider's sub-steps: a 50th of the walk, but never shorter than the sweep's own step (a sweep
+  // that starts at the reference has no walk; sub-steps of 1e-12 would never reach its next pose).
+  const double longest = model.crank_driven()
+                             ? model.driver_from_user(crank_walk_deg)
+                             : std::max(std::abs(walk_to - reference) / slider_walk_steps,
+                                        std::abs(model.driver_from_user(start + step) - t_start));
   LinkageSolution at = continue_to(poses, reference, walk_to, solver.reference(), longest);
   Eigen::VectorXd last_good = converged(at) ? at.q : solver.reference();
   double last_good_t = converged(at) ? t_start : reference;
