@@ -6,157 +6,23 @@
 #include <stdexcept>
 #include <string>
 
+#include "linkage_fast_kernels.hpp"
 #include "linkage_joints.hpp"
 #include "numlab/linalg/input_checks.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
-#include "numlab/nonlinear/stopping_tests.hpp"
 
 namespace numlab::mechanisms {
 
 namespace {
 
+using detail::newton_in_place;
+using detail::partial_of;
+using detail::rows_of;
+using detail::RowMajorMatrix;
+using detail::sparse_gepp;
+using detail::whole_residual;
 using nonlinear::NewtonCounts;
 using nonlinear::StopReason;
-using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
-Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
-
-// Constraint c's rows at q (a one-row constraint leaves the second 0): the rows of LinkageModel::residual,
-// with the crank's direction (cos, sin)(t + offset) given, computed once per solve.
-Eigen::Vector2d rows_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, double t,
-                        const Eigen::Vector2d& crank_direction) {
-  const auto p = [&](int slot) { return detail::joint_at(model, q, c.joints[static_cast<std::size_t>(slot)]); };
-  switch (c.kind) {
-    case ConstraintKind::distance: return {((p(0) - p(1)).squaredNorm() - c.length * c.length) / (2.0 * c.length), 0.0};
-    case ConstraintKind::body_point: {
-      const Eigen::Vector2d base = p(1) - p(0);
-      return p(2) - p(0) - c.coefficients.x() * base - c.coefficients.y() * perp(base);
-    }
-    case ConstraintKind::slider_line: return {detail::cross(c.direction, p(0) - c.point), 0.0};
-    case ConstraintKind::crank: return p(1) - p(0) - c.length * crank_direction;
-    case ConstraintKind::slider_travel: return {c.direction.dot(p(0) - c.point) - t, 0.0};
-  }
-  return Eigen::Vector2d::Zero();
-}
-
-// d(rows of c) / d(joint's x, y): the blocks LinkageModel::jacobian puts in J.
-Eigen::Matrix2d partial_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, int joint) {
-  Eigen::Matrix2d d = Eigen::Matrix2d::Zero();
-  if (joint != c.joints[0] && joint != c.joints[1] && joint != c.joints[2]) return d;  // c does not read it
-  switch (c.kind) {
-    case ConstraintKind::distance: {
-      const Eigen::Vector2d g = (detail::joint_at(model, q, c.joints[0]) - detail::joint_at(model, q, c.joints[1])) / c.length;
-      d.row(0) = joint == c.joints[0] ? g.transpose() : Eigen::RowVector2d(-g.transpose());
-      break;
-    }
-    case ConstraintKind::body_point: {
-      Eigen::Matrix2d along;  // a I + b R, R the quarter turn
-      along << c.coefficients.x(), -c.coefficients.y(), c.coefficients.y(), c.coefficients.x();
-      if (joint == c.joints[0]) d = along - Eigen::Matrix2d::Identity();
-      else if (joint == c.joints[1]) d = -along;
-      else d.setIdentity();
-      break;
-    }
-    case ConstraintKind::slider_line: d.row(0) << -c.direction.y(), c.direction.x(); break;
-    case ConstraintKind::crank: d = joint == c.joints[0] ? Eigen::Matrix2d(-Eigen::Matrix2d::Identity()) : Eigen::Matrix2d::Identity(); break;
-    case ConstraintKind::slider_travel: d.row(0) = c.direction.transpose(); break;
-  }
-  return d;
-}
-
-// Undamped Newton with a direct inner solve, in place on x: the loop of nonlinear::Newton
-// (newton.hpp) with the same tests in the same order and the same counts, but for J: evaluated once
-// per iteration here, where Newton on a DynamicSystem evaluates it with every residual. The problem gives
-// residual(x, f), jacobian(x) (false when J is not finite) and solve(f, dx) (J dx = -f, a status).
-template <typename Problem, typename Vector>
-NewtonCounts newton_in_place(Problem& problem, Vector& x, Vector& f, Vector& dx, const nonlinear::NewtonOptions& options) {
-  NewtonCounts counts;
-  const auto finish = [&](Status status, StopReason reason) {
-    counts.status = status;
-    counts.reason = reason;
-    counts.residual_norm = f.template lpNorm<Eigen::Infinity>();
-    return counts;
-  };
-  problem.residual(x, f);
-  ++counts.function_evaluations;
-  const double at_start = f.template lpNorm<Eigen::Infinity>();
-  if (!linalg::all_finite(f)) return finish(Status::non_finite, StopReason::non_finite);
-  if (nonlinear::residual_small(at_start, options.residual_tolerance)) return finish(Status::converged, StopReason::residual_small);
-  while (true) {
-    ++counts.iterations;
-    ++counts.jacobian_evaluations;
-    if (!problem.jacobian(x)) return finish(Status::non_finite, StopReason::non_finite);
-    const Status linear = problem.solve(f, dx);
-    if (linear == Status::singular) return finish(Status::singular, StopReason::singular_jacobian);
-    if (linear != Status::converged || !linalg::all_finite(dx)) return finish(Status::non_finite, StopReason::non_finite);
-    x += dx;
-    problem.residual(x, f);
-    ++counts.function_evaluations;
-    counts.step_norm = dx.template lpNorm<Eigen::Infinity>();
-    const double residual = f.template lpNorm<Eigen::Infinity>();
-    if (!linalg::all_finite(x) || !linalg::all_finite(f)) return finish(Status::non_finite, StopReason::non_finite);
-    if (nonlinear::residual_small(residual, options.residual_tolerance)) return finish(Status::converged, StopReason::residual_small);
-    if (nonlinear::step_small(counts.step_norm, x.template lpNorm<Eigen::Infinity>(), options.step_tolerance)) {
-      return finish(Status::no_progress, StopReason::step_small);
-    }
-    if (nonlinear::diverged(residual, at_start, options.divergence_factor)) return finish(Status::diverged, StopReason::diverged);
-    if (counts.iterations >= options.max_iterations) return finish(Status::max_iterations, StopReason::iteration_limit);
-  }
-}
-
-// GEPP as gauss_elimination_kernel.hpp runs it (the same pivots, multipliers and order of
-// operations), except that a row whose multiplier is zero is left alone: a derived J has a few
-// nonzeros per column (the Jansen leg's 36 of 144), so most row updates are skipped.
-// J dx = -f with J in `work` (overwritten by U); pivots negligible below n eps max|J|.
-Status sparse_gepp(RowMajorMatrix& work, const Eigen::VectorXd& f, Eigen::VectorXd& rhs, Eigen::VectorXd& inverse_pivots,
-                   Eigen::VectorXd& dx) {
-  const Eigen::Index n = work.rows();
-  const double negligible = static_cast<double>(n) * std::numeric_limits<double>::epsilon() * work.cwiseAbs().maxCoeff();
-  rhs = -f;
-  for (Eigen::Index k = 0; k < n; ++k) {
-    // 1. The pivot: the first row p >= k with the largest |u_pk|.
-    Eigen::Index p = k;
-    for (Eigen::Index i = k + 1; i < n; ++i) {
-      if (std::abs(work(i, k)) > std::abs(work(p, k))) p = i;
-    }
-    // 2. Rows k and p swapped.
-    if (p != k) {
-      work.row(k).swap(work.row(p));
-      std::swap(rhs(k), rhs(p));
-    }
-    const double pivot = work(k, k);
-    if (!std::isfinite(pivot)) return Status::non_finite;
-    if (std::abs(pivot) <= negligible) return Status::singular;
-    // 3. Each row below with a nonzero multiplier l_ik = u_ik / u_kk: row_i -= l_ik row_k.
-    inverse_pivots(k) = 1.0 / pivot;
-    for (Eigen::Index i = k + 1; i < n; ++i) {
-      const double multiplier = work(i, k) * inverse_pivots(k);
-      if (multiplier == 0.0) continue;
-      work(i, k) = 0.0;
-      work.row(i).tail(n - k - 1) -= multiplier * work.row(k).tail(n - k - 1);
-      rhs(i) -= multiplier * rhs(k);
-    }
-  }
-  // 4. Back substitution, column by column from the last unknown.
-  for (Eigen::Index i = n - 1; i >= 0; --i) {
-    dx(i) = rhs(i) * inverse_pivots(i);
-    if (!std::isfinite(dx(i))) return Status::non_finite;
-    rhs.head(i) -= work.col(i).head(i) * dx(i);
-  }
-  return Status::converged;
-}
-
-// Phi(q; t), every constraint once, into f.
-void whole_residual(const LinkageModel& model, const Eigen::VectorXd& q, double t, const Eigen::Vector2d& crank_direction,
-                    Eigen::VectorXd& f) {
-  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
-    const Constraint& c = model.constraints()[k];
-    const Eigen::Vector2d rows = rows_of(model, c, q, t, crank_direction);
-    const int row = model.first_row(static_cast<int>(k));
-    f(row) = rows(0);
-    if (c.rows() == 2) f(row + 1) = rows(1);
-  }
-}
 
 // The whole system, for full Newton. J is put straight into the work matrix GEPP overwrites.
 struct WholeProblem {
