@@ -54,7 +54,7 @@ int solved_by_column(const CsvRows& rows, std::size_t solved_column) {
 
 }  // namespace
 
-TEST_CASE("robustness lab: every count and every failure named comes from its tables", "[labs][robustness]") {
+TEST_CASE("robustness lab: every count and every failure named comes from its tables", "[labs][robustness][lab-text-release-only]") {
   const LabOutput lab = numlab::test::run_lab("robustness");
   REQUIRE(lab.exit_code == 0);
   CHECK_FALSE(numlab::test::has_developer_talk(lab.text));
