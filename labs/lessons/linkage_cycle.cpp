@@ -1,5 +1,10 @@
 #include "lessons/linkage_cycle.hpp"
 
+#include <optional>
+#include <utility>
+
+#include "numlab/mechanisms/linkage/linkage_fast_solver.hpp"
+
 namespace numlab::cli {
 
 namespace {
@@ -20,17 +25,28 @@ LinkageCycle solve_linkage_cycle(const mechanisms::LinkageSolver& solver, double
   LinkageCycle cycle;
   cycle.q.resize(model.unknown_count(), poses);
   cycle.driver.reserve(static_cast<std::size_t>(poses));
+  // The fast path where it applies (as `numlab bench jansen` solves the file), else the solver itself.
+  std::optional<mechanisms::LinkageFastSolver> fast;
+  if (mechanisms::LinkageFastSolver::applies(solver.options())) fast.emplace(solver);
   Eigen::VectorXd guess = solver.reference();
   for (int k = 0; k < poses; ++k) {
     const double value = start + k * step;
     if (k > 0) predict(cycle.q, k, guess);  // 1.
-    const mechanisms::LinkageSolution solution = solver.solve(model.driver_from_user(value), guess);  // 2.
-    cycle.iterations += solution.outcome.iterations;
-    if (solution.outcome.status != Status::converged) {
-      cycle.status = solution.outcome.status;
+    const double t = model.driver_from_user(value);
+    mechanisms::LinkageFastOutcome solved;  // 2., in place on guess
+    if (fast) {
+      solved = fast->solve(t, guess);
+    } else {
+      mechanisms::LinkageSolution solution = solver.solve(t, guess);
+      guess = std::move(solution.q);
+      solved = {solution.outcome, solution.failed_block};
+    }
+    cycle.iterations += solved.outcome.iterations;
+    if (solved.outcome.status != Status::converged) {
+      cycle.status = solved.outcome.status;
       break;
     }
-    cycle.q.col(k) = solution.q;
+    cycle.q.col(k) = guess;
     cycle.driver.push_back(value);
     ++cycle.solved;
   }

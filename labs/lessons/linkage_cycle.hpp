@@ -22,7 +22,9 @@ struct LinkageCycle {
 // Solves the poses start, start + step, ... (`poses` of them, user units), the first from the
 // solver's reference pose, each later one from the prediction:
 //   1. predict: the polynomial through the last m solved poses (m <= 5, degree m - 1), one step on;
-//   2. correct: the solver's solve() from that prediction.
+//   2. correct: the solver's solve() from that prediction, on its fast path (LinkageFastSolver: the
+//      same solves, iterations and statuses, on a workspace sized once) where that applies, as
+//      `numlab bench jansen` solves the file.
 // No step halving: a pose that fails ends the cycle.
 LinkageCycle solve_linkage_cycle(const mechanisms::LinkageSolver& solver, double start, double step, int poses);
 

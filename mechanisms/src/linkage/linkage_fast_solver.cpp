@@ -67,7 +67,6 @@ struct JointProblem {
     }
   }
   bool jacobian(const Eigen::Vector2d& x) {
-    if (block.identity_jacobian) return true;  // J = I, set once
     place(x);
     for (const LinkageFastSolver::Part& part : block.parts) {
       const Eigen::Matrix2d d = partial_of(model, *part.constraint, q, block.joints[0]);
@@ -78,10 +77,6 @@ struct JointProblem {
     return J.allFinite();
   }
   Status solve(const Eigen::Vector2d& f, Eigen::Vector2d& dx) const {
-    if (block.identity_jacobian) {  // what the closed form gives for J = I, bit for bit
-      dx = -f;
-      return Status::converged;
-    }
     const linalg::LinearResult<2> step = linalg::ClosedForm2x2().solve_prechecked(J, -f);
     dx = step.x;
     return step.status;
@@ -167,12 +162,6 @@ LinkageFastSolver::LinkageFastSolver(const LinkageSolver& solver) : solver_(solv
       }
       if (part.row[0] >= 0 || part.row[1] >= 0) block.parts.push_back(part);
     }
-    // A crank's joint and a body's point enter their rows as + p: J = I for their blocks.
-    if (block.size == 2 && block.parts.size() == 1) {
-      const Constraint& c = *block.parts[0].constraint;
-      block.identity_jacobian = (c.kind == ConstraintKind::crank && c.joints[1] == block.joints[0]) ||
-                                (c.kind == ConstraintKind::body_point && c.joints[2] == block.joints[0]);
-    }
     block.work.setZero(block.size, block.size);
     block.x.setZero(block.size), block.f.setZero(block.size), block.dx.setZero(block.size);
     block.rhs.setZero(block.size), block.inverse_pivots.setZero(block.size);
@@ -208,10 +197,16 @@ LinkageFastOutcome LinkageFastSolver::solve_sequential(double t, Eigen::VectorXd
   for (std::size_t b = 0; b < blocks_.size(); ++b) {
     Block& block = blocks_[b];
     NewtonCounts counts;
-    if (block.size == 2) {
+    if (solver_.blocks()[b].placed_directly()) {  // placed by its formula, its rows then checked
+      detail::place_block(solver_.model(), solver_.blocks()[b], t, direction, q);
+      Eigen::Vector2d f;
+      JointProblem problem{solver_.model(), block, t, direction, q, Eigen::Matrix2d::Zero()};
+      problem.residual(q.segment<2>(block.columns[0]), f);
+      counts = detail::placed_block_counts(f, options.residual_tolerance);
+    } else if (block.size == 2) {
       Eigen::Vector2d x = q.segment<2>(block.columns[0]), f, dx;
       linalg::require_finite(x, "starting point");
-      JointProblem problem{solver_.model(), block, t, direction, q, Eigen::Matrix2d::Identity()};
+      JointProblem problem{solver_.model(), block, t, direction, q, Eigen::Matrix2d::Zero()};
       counts = newton_in_place(problem, x, f, dx, options);
       problem.place(x);
     } else {

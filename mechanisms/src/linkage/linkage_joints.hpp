@@ -4,11 +4,14 @@
 // generic solver and its fast path run.
 
 #include <Eigen/Core>
+#include <cmath>
 #include <utility>
 #include <vector>
 
 #include "numlab/mechanisms/linkage/linkage_blocks.hpp"
 #include "numlab/mechanisms/linkage/linkage_model.hpp"
+#include "numlab/nonlinear/newton.hpp"
+#include "numlab/nonlinear/stopping_tests.hpp"
 
 namespace numlab::mechanisms::detail {
 
@@ -43,6 +46,40 @@ inline DyadParts dyad_parts(const LinkageModel& model, const LinkageBlock& block
 // The foot of the perpendicular from `point` onto a slider's line.
 inline Eigen::Vector2d foot_on_line(const Constraint& line, const Eigen::Vector2d& point) {
   return line.point + (point - line.point).dot(line.direction) * line.direction;
+}
+
+// (cos, sin)(t + offset) of the model's driving crank; zero when no crank drives.
+inline Eigen::Vector2d crank_direction(const LinkageModel& model, double t) {
+  for (const Constraint& c : model.constraints()) {
+    if (c.kind == ConstraintKind::crank) return {std::cos(t + c.offset), std::sin(t + c.offset)};
+  }
+  return Eigen::Vector2d::Zero();
+}
+
+// The closed form of one block, in place (a dyad takes, of its two solutions, the one nearer its
+// joint's place in q). False when the block has no closed form or cannot close. Allocates nothing.
+bool place_block(const LinkageModel& model, const LinkageBlock& block, double t, const Eigen::Vector2d& crank_direction,
+                 Eigen::VectorXd& q);
+
+// The verdict on an explicit block (placed_directly) from its rows evaluated at the placed joint:
+// no Newton iteration, one evaluation of its rows, converged only when they pass the residual test
+// (they are at rounding level unless the input is impossible: non-finite, or too large for the
+// tolerance).
+inline nonlinear::NewtonCounts placed_block_counts(const Eigen::Vector2d& rows, double residual_tolerance) {
+  nonlinear::NewtonCounts counts;
+  counts.function_evaluations = 1;
+  counts.residual_norm = rows.lpNorm<Eigen::Infinity>();
+  if (!rows.allFinite()) {
+    counts.status = Status::non_finite;
+    counts.reason = nonlinear::StopReason::non_finite;
+  } else if (nonlinear::residual_small(counts.residual_norm, residual_tolerance)) {
+    counts.status = Status::converged;
+    counts.reason = nonlinear::StopReason::residual_small;
+  } else {
+    counts.status = Status::no_progress;
+    counts.reason = nonlinear::StopReason::no_progress;
+  }
+  return counts;
 }
 
 // The closed form of every block in order, in place: q holds the start (a dyad takes, of its two

@@ -134,13 +134,15 @@ LinkageSolution LinkageSolver::solve_gsl(double t, const Eigen::VectorXd& q0) co
   return {Eigen::VectorXd(result.x - shift), static_cast<nonlinear::NewtonCounts>(result), -1};
 }
 
-// The blocks in order, each by Newton with every other unknown held: the 2x2 closed-form inverse
-// for a two-unknown block, GEPP for a bigger one.
+// The blocks in order. An explicit block (a crank, a body point, a driven slider) is placed
+// directly: no equation to solve. Any other block by Newton with every other unknown held: the 2x2
+// closed-form inverse for a two-unknown block, GEPP for a bigger one.
 LinkageSolution LinkageSolver::solve_sequential(double t, const Eigen::VectorXd& q0) const {
   const LinkageSystem whole(model_, t);
   LinkageSolution solution{q0, {}, -1};
   int evaluations = 0;
   nonlinear::BlockSystem block_system(whole, solution.q, evaluations);
+  const Eigen::Vector2d crank = detail::crank_direction(model_, t);
   solution.outcome.status = Status::converged;
   solution.outcome.reason = nonlinear::StopReason::residual_small;
   for (std::size_t b = 0; b < blocks_.size(); ++b) {
@@ -149,11 +151,24 @@ LinkageSolution LinkageSolver::solve_sequential(double t, const Eigen::VectorXd&
     const int n = static_cast<int>(block.unknowns.size());
     Eigen::VectorXd start(n);
     for (int i = 0; i < n; ++i) start(i) = solution.q(block.unknowns[static_cast<std::size_t>(i)]);
-    const auto method = n == 2 ? nonlinear::LinearMethod::inverse2x2 : nonlinear::LinearMethod::gepp;
-    nonlinear::Newton<nonlinear::BlockSystem, nonlinear::RuntimeLinearStep> newton(
-        block_system, options_.newton, nonlinear::RuntimeLinearStep(method, n));
-    const auto result = newton.solve(start);
-    for (int i = 0; i < n; ++i) solution.q(block.unknowns[static_cast<std::size_t>(i)]) = result.x(i);
+    nonlinear::NewtonCounts result;
+    if (blocks_[b].placed_directly()) {
+      // 1. A crank, body point or driven slider is placed directly: no equation to solve.
+      detail::place_block(model_, blocks_[b], t, crank, solution.q);
+      // 2. Its rows at the placed joint must still pass the residual test.
+      Eigen::VectorXd placed(n), rows;
+      for (int i = 0; i < n; ++i) placed(i) = solution.q(block.unknowns[static_cast<std::size_t>(i)]);
+      block_system.residual(placed, rows);
+      result = detail::placed_block_counts(rows, options_.newton.residual_tolerance);
+    } else {
+      // 3. Any other block: Newton on its rows, the joints solved before held.
+      const auto method = n == 2 ? nonlinear::LinearMethod::inverse2x2 : nonlinear::LinearMethod::gepp;
+      nonlinear::Newton<nonlinear::BlockSystem, nonlinear::RuntimeLinearStep> newton(
+          block_system, options_.newton, nonlinear::RuntimeLinearStep(method, n));
+      const auto newton_result = newton.solve(start);
+      for (int i = 0; i < n; ++i) solution.q(block.unknowns[static_cast<std::size_t>(i)]) = newton_result.x(i);
+      result = newton_result;
+    }
     solution.outcome.iterations += result.iterations;
     solution.outcome.jacobian_evaluations += result.jacobian_evaluations;
     solution.outcome.step_norm = result.step_norm;
@@ -189,50 +204,56 @@ LinkageSolution LinkageSolver::closed_form(double t, const Eigen::VectorXd& q0) 
 
 int detail::closed_form_in_place(const LinkageModel& model, const std::vector<LinkageBlock>& blocks, double t,
                                  Eigen::VectorXd& q) {
-  const auto at = [&](int joint) { return joint_at(model, q, joint); };
+  const Eigen::Vector2d crank = crank_direction(model, t);
   for (std::size_t b = 0; b < blocks.size(); ++b) {
-    const LinkageBlock& block = blocks[b];
-    if (block.kind == BlockKind::newton) return static_cast<int>(b);
-    const int joint = block.joints[0];
-    const Eigen::Vector2d was = at(joint);  // the start's place: q's entries of this joint are not written yet
-    const Constraint& c = model.constraints()[static_cast<std::size_t>(block.constraints[0])];
-    switch (block.kind) {
-      case BlockKind::crank:  // 1. p_A = p_O + r u(t)
-        set_joint(model, q, joint, at(c.joints[0]) + c.length * Eigen::Vector2d(std::cos(t + c.offset), std::sin(t + c.offset)));
-        break;
-      case BlockKind::body_point: {  // 2. p_c = p_b0 + a base + b perp(base)
-        const Eigen::Vector2d base = at(c.joints[1]) - at(c.joints[0]);
-        set_joint(model, q, joint, at(c.joints[0]) + c.coefficients.x() * base + c.coefficients.y() * Eigen::Vector2d(-base.y(), base.x()));
-        break;
-      }
-      case BlockKind::slider: {  // 3. p = P + s u
-        const Constraint& line = c.kind == ConstraintKind::slider_travel ? c : model.constraints()[static_cast<std::size_t>(block.constraints[1])];
-        set_joint(model, q, joint, line.point + t * line.direction);
-        break;
-      }
-      case BlockKind::circle_circle: {  // 4. two circles meet: the point nearer the start's (continuation)
-        const auto [first, second] = dyad_parts(model, block);
-        const Eigen::Vector2d c1 = at(centre_of(*first, joint)), c2 = at(centre_of(*second, joint));
-        const auto left = circle_intersection(c1, first->length, c2, second->length, 1);
-        const auto right = circle_intersection(c1, first->length, c2, second->length, -1);
-        if (!left || !right) return static_cast<int>(b);
-        set_joint(model, q, joint, nearer(*left, *right, was));
-        break;
-      }
-      case BlockKind::circle_line: {  // 5. a circle meets a line: the point nearer the start's
-        const auto [circle, line] = dyad_parts(model, block);
-        const Eigen::Vector2d centre = at(centre_of(*circle, joint)), foot = foot_on_line(*line, centre);
-        const double half_chord_squared = circle->length * circle->length - (centre - foot).squaredNorm();
-        if (!(half_chord_squared >= 0.0)) return static_cast<int>(b);
-        const Eigen::Vector2d along = std::sqrt(half_chord_squared) * line->direction;
-        set_joint(model, q, joint, nearer(foot + along, foot - along, was));
-        break;
-      }
-      case BlockKind::newton:
-        break;
-    }
+    if (!place_block(model, blocks[b], t, crank, q)) return static_cast<int>(b);
   }
   return -1;
+}
+
+bool detail::place_block(const LinkageModel& model, const LinkageBlock& block, double t, const Eigen::Vector2d& crank_direction,
+                         Eigen::VectorXd& q) {
+  const auto at = [&](int joint) { return joint_at(model, q, joint); };
+  if (block.kind == BlockKind::newton) return false;
+  const int joint = block.joints[0];
+  const Eigen::Vector2d was = at(joint);  // the start's place: q's entries of this joint are not written yet
+  const Constraint& c = model.constraints()[static_cast<std::size_t>(block.constraints[0])];
+  switch (block.kind) {
+    case BlockKind::crank:  // 1. p_A = p_O + r u(t)
+      set_joint(model, q, joint, at(c.joints[0]) + c.length * crank_direction);
+      break;
+    case BlockKind::body_point: {  // 2. p_c = p_b0 + a base + b perp(base)
+      const Eigen::Vector2d base = at(c.joints[1]) - at(c.joints[0]);
+      set_joint(model, q, joint, at(c.joints[0]) + c.coefficients.x() * base + c.coefficients.y() * Eigen::Vector2d(-base.y(), base.x()));
+      break;
+    }
+    case BlockKind::slider: {  // 3. p = P + s u
+      const Constraint& line = c.kind == ConstraintKind::slider_travel ? c : model.constraints()[static_cast<std::size_t>(block.constraints[1])];
+      set_joint(model, q, joint, line.point + t * line.direction);
+      break;
+    }
+    case BlockKind::circle_circle: {  // 4. two circles meet: the point nearer the start's (continuation)
+      const auto [first, second] = dyad_parts(model, block);
+      const Eigen::Vector2d c1 = at(centre_of(*first, joint)), c2 = at(centre_of(*second, joint));
+      const auto left = circle_intersection(c1, first->length, c2, second->length, 1);
+      const auto right = circle_intersection(c1, first->length, c2, second->length, -1);
+      if (!left || !right) return false;
+      set_joint(model, q, joint, nearer(*left, *right, was));
+      break;
+    }
+    case BlockKind::circle_line: {  // 5. a circle meets a line: the point nearer the start's
+      const auto [circle, line] = dyad_parts(model, block);
+      const Eigen::Vector2d centre = at(centre_of(*circle, joint)), foot = foot_on_line(*line, centre);
+      const double half_chord_squared = circle->length * circle->length - (centre - foot).squaredNorm();
+      if (!(half_chord_squared >= 0.0)) return false;
+      const Eigen::Vector2d along = std::sqrt(half_chord_squared) * line->direction;
+      set_joint(model, q, joint, nearer(foot + along, foot - along, was));
+      break;
+    }
+    case BlockKind::newton:
+      return false;
+  }
+  return true;
 }
 
 std::vector<int> LinkageSolver::signature(const Eigen::VectorXd& q, double t) const {

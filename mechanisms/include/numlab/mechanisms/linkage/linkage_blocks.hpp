@@ -33,6 +33,9 @@ struct LinkageBlock {
   std::vector<int> constraints;       // the constraints whose rows it holds
   std::vector<int> known_joints;      // joints outside the block its equations read (solved before)
   bool closed_form() const { return kind != BlockKind::newton; }
+  // A crank, body point or driven slider: its joint is a formula of joints already known, placed
+  // directly (no equation to solve, no Newton iteration) by every solver.
+  bool placed_directly() const { return kind == BlockKind::crank || kind == BlockKind::body_point || kind == BlockKind::slider; }
   bool dyad() const { return kind == BlockKind::circle_circle || kind == BlockKind::circle_line; }
 };
 

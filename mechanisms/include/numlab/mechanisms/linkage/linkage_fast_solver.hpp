@@ -7,8 +7,10 @@
 // Where the time goes instead:
 //   full        f and J into preallocated storage, J's nonzeros only, and GEPP in place that skips
 //               the row updates whose multiplier is zero (J is sparse)
-//   sequential  per block only that block's own rows and columns: a one-joint block by Newton on a
-//               fixed 2x2 system with the closed-form inverse, a bigger block by that GEPP
+//   sequential  per block only that block's own rows and columns: an explicit block (crank, body
+//               point, driven slider) placed by its formula as the generic solver does, a one-joint
+//               block by Newton on a fixed 2x2 system with the closed-form inverse, a bigger block
+//               by that GEPP
 //   analytic    the generic closed form itself, in place
 // and the crank's cos and sin once per solve, not at every residual.
 // and velocity() solves J qdot = -Phi_t block by block (J is block lower triangular in block order).
@@ -65,7 +67,6 @@ class LinkageFastSolver {
     std::vector<int> rows, columns;     // of the whole system
     std::vector<Part> parts;
     std::vector<int> joints;            // the block's joints, in column order (x, y each)
-    bool identity_jacobian = false;     // the block's J is I (a crank, a body point): dx = -f
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> work;  // bigger blocks: J, then U
     Eigen::VectorXd x, f, dx, rhs, inverse_pivots;
   };

@@ -2,8 +2,10 @@
 // Solving a derived linkage model at one driver value, with every solver numlab has:
 //
 //   full        Newton on the whole system, any inner linear solver (--linear)
-//   sequential  the blocks in order (linkage_blocks.hpp): Newton on each, the 2x2 closed-form
-//               inverse for two-unknown blocks, GEPP for bigger ones
+//   sequential  the blocks in order (linkage_blocks.hpp): an explicit block (crank, body point,
+//               driven slider) placed by its formula, no Newton iteration, its rows then checked;
+//               Newton on every other block, the 2x2 closed-form inverse for two-unknown blocks,
+//               GEPP for bigger ones
 //   analytic    the closed form of every block (circle-circle, circle-line, explicit); refused when
 //               a block needs Newton
 //   gsl-<type>  GSL's multiroot solver of that type on the whole system
