@@ -316,8 +316,9 @@ int run_linkage_lab(LabSession& session) {
   session.begin_step("Full, sequential, closed form and GSL over a crank cycle",
                      "360 poses, 1 degree apart from the seeds' crank angle 1.57 rad, Newton tolerance 1e-10; each "
                      "pose starts from the polynomial through the poses before it (as the seeds' models do in numlab "
-                     "bench jansen). Full Newton solves all 12 equations at once (GEPP inside); sequential Newton "
-                     "solves the blocks in order, each by Newton with the 2x2 closed-form inverse; the closed form "
+                     "bench jansen). Full Newton solves all 12 equations at once (GEPP inside); sequential places "
+                     "the crank and the body points by their formulas and solves each dyad by Newton with the 2x2 "
+                     "closed-form inverse; the closed form "
                      "intersects circles block by block; GSL's newton is the same method, GSL's code. Times are "
                      "medians of a few repeated runs; 'distance from seed 000' is the worst distance of any joint "
                      "from the hand-written leg's circle intersections over the cycle.");

@@ -51,9 +51,10 @@ std::string sequential_against_full_sentence(const SolverCost& sequential, const
                       full.iterations);
   text += per_sequential < per_full ? fmt::format("and each costs {:.1f}x less.", per_full / per_sequential)
                                     : fmt::format("and each costs {:.1f}x more.", per_sequential / per_full);
-  // 3. What one block iteration does in the generic solve.
-  text += fmt::format(" One block iteration evaluates the whole {0}-equation residual and {0}x{0} Jacobian and keeps "
-                      "its block's rows; what it saves is the elimination (a 2x2 inverse instead of GEPP on {0}x{0}).",
+  // 3. What one block iteration does.
+  text += fmt::format(" A block iteration evaluates only its own rows and their Jacobian entries and solves a system "
+                      "of the block's size (a dyad's 2x2 by the closed-form inverse) where full Newton runs GEPP on "
+                      "{0}x{0}; a crank or a body point is placed by its formula, with no iteration.",
                       unknowns);
   return text;
 }
