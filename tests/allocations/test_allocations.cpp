@@ -1,36 +1,12 @@
 // Heap allocations inside the solve loops, counted two ways:
 //  - Eigen's own (EIGEN_RUNTIME_NO_MALLOC: every Eigen heap allocation asks is_malloc_allowed());
-//  - everything else, through a counting global operator new (release build; see below for ASan).
+//  - everything else, through a counting global operator new (release build only; see
+//    counting_operator_new.hpp for ASan).
 // This file is its own executable and compiles inverse2x2.cpp (and the closures) itself, so that every Eigen function
 // it runs is built with the hook (the library is not linked); count_eigen_allocations.hpp is
 // force-included into both.
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<long> heap_allocations{0};  // outside Eigen: calls of operator new
-std::atomic<bool> counting{false};
-}  // namespace
-
-#if defined(__SANITIZE_ADDRESS__)
-// AddressSanitizer owns operator new (some allocations bind to its entry point whatever we define),
-// so under ASan only Eigen's allocations are counted; the release build counts operator new too.
-constexpr bool counts_operator_new = false;
-#else
-constexpr bool counts_operator_new = true;
-void* operator new(std::size_t size) {
-  if (counting) ++heap_allocations;
-  if (void* memory = std::malloc(size == 0 ? 1 : size)) return memory;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) { return operator new(size); }
-void operator delete(void* memory) noexcept { std::free(memory); }
-void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
-void operator delete[](void* memory) noexcept { std::free(memory); }
-void operator delete[](void* memory, std::size_t) noexcept { std::free(memory); }
-#endif
+#include "counting_operator_new.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -59,13 +35,13 @@ struct AllocationCount {
 template <typename Work>
 AllocationCount allocations_during(Work&& work) {
   refused_eigen_allocations = 0;
-  heap_allocations = 0;
+  numlab::testing::operator_new_calls = 0;
   Eigen::internal::set_is_malloc_allowed(false);
-  counting = true;
+  numlab::testing::counting_operator_new = true;
   work();
-  counting = false;
+  numlab::testing::counting_operator_new = false;
   Eigen::internal::set_is_malloc_allowed(true);
-  return {refused_eigen_allocations.load(), heap_allocations.load()};
+  return {refused_eigen_allocations.load(), numlab::testing::operator_new_calls.load()};
 }
 
 template <int N>

@@ -2,8 +2,8 @@
 // the heap, and so no Newton iteration in it does. Counted two ways, over the whole program:
 //  - malloc, calloc and realloc, wrapped at link time (-Wl,--wrap=...: every call from numlab's
 //    static libraries and this file goes through the wrappers below; Eigen's heap is malloc);
-//  - operator new, replaced (release build only: under AddressSanitizer, which owns operator new,
-//    that count is skipped, as in tests/allocations/test_allocations.cpp; the malloc count stays).
+//  - operator new, replaced (tests/allocations/counting_operator_new.hpp; release build only: under
+//    AddressSanitizer, which owns operator new, that count is skipped; the malloc count stays).
 // A positive control in each test shows that the counters see an allocation when there is one.
 
 #include <atomic>
@@ -13,7 +13,6 @@
 
 namespace {
 std::atomic<long> malloc_calls{0};
-std::atomic<long> new_calls{0};
 std::atomic<bool> counting{false};
 }  // namespace
 
@@ -35,21 +34,7 @@ void* __wrap_realloc(void* memory, std::size_t size) {
 }
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool counts_operator_new = false;
-#else
-constexpr bool counts_operator_new = true;
-void* operator new(std::size_t size) {
-  if (counting) ++new_calls;
-  if (void* memory = std::malloc(size == 0 ? 1 : size)) return memory;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) { return operator new(size); }
-void operator delete(void* memory) noexcept { std::free(memory); }
-void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
-void operator delete[](void* memory) noexcept { std::free(memory); }
-void operator delete[](void* memory, std::size_t) noexcept { std::free(memory); }
-#endif
+#include "counting_operator_new.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -73,11 +58,13 @@ struct Allocations {
 template <typename Work>
 Allocations allocations_during(Work&& work) {
   malloc_calls = 0;
-  new_calls = 0;
+  numlab::testing::operator_new_calls = 0;
   counting = true;
+  numlab::testing::counting_operator_new = true;
   work();
+  numlab::testing::counting_operator_new = false;
   counting = false;
-  return {malloc_calls.load(), new_calls.load()};
+  return {malloc_calls.load(), numlab::testing::operator_new_calls.load()};
 }
 
 // Keeps the compiler from removing an allocation whose memory is never read.
