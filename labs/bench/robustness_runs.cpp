@@ -142,9 +142,10 @@ std::vector<std::string> robustness_solvers() {
   for (const char* kind : {"newton-", "damped-"}) {
     for (const std::string& linear : nonlinear::newton_linear_methods()) solvers.push_back(kind + linear);
   }
-  solvers.push_back("dogleg");
-  solvers.push_back("sequential");
-  solvers.push_back("sequential-damped");
+  // Built in place (a moved temporary string here trips GCC 12's -Warray-bounds false positive).
+  solvers.emplace_back("dogleg");
+  solvers.emplace_back("sequential");
+  solvers.emplace_back("sequential-damped");
   for (const std::string& type : nonlinear::gsl_multiroot_types()) solvers.push_back("gsl-" + type);
   return solvers;
 }

@@ -345,7 +345,7 @@ std::string arrows_at(const Scene& scene, const JointPositions& now, const Eigen
                       Caption& caption) {
   const LinkageModel& model = scene.model;
   if (v.size() != model.unknown_count() || !v.allFinite()) {
-    caption.lines.push_back("arrows: the velocity at this pose is not finite (J is singular); none drawn");
+    caption.lines.emplace_back("arrows: the velocity at this pose is not finite (J is singular); none drawn");
     return {};
   }
   auto velocity_of = [&](std::size_t k) {
@@ -354,7 +354,7 @@ std::string arrows_at(const Scene& scene, const JointPositions& now, const Eigen
   double fastest = 0.0;
   for (std::size_t k = 0; k < model.moving().size(); ++k) fastest = std::max(fastest, velocity_of(k).norm());
   if (fastest == 0.0) {
-    caption.lines.push_back("arrows: every joint is at rest at this pose");
+    caption.lines.emplace_back("arrows: every joint is at rest at this pose");
     return {};
   }
   const double scale = arrow_share * larger_side(frame) / scene.zoom / fastest;  // model length per unit of velocity
