@@ -24,12 +24,18 @@ using detail::whole_residual;
 using nonlinear::NewtonCounts;
 using nonlinear::StopReason;
 
-// The whole system, for full Newton. J is put straight into the work matrix GEPP overwrites.
+// The whole system, for full Newton. J is put straight into the work matrix GEPP overwrites, with
+// row k at row_at[k] and column k at column_at[k]; f goes in, and dx comes out, through the same
+// layout.
 struct WholeProblem {
   const LinkageModel& model;
   double t;
   Eigen::Vector2d crank_direction;
+  const std::vector<int>& row_at;
+  const std::vector<int>& column_at;
   RowMajorMatrix& work;
+  Eigen::VectorXd& laid_out_f;
+  Eigen::VectorXd& laid_out_dx;
   Eigen::VectorXd& rhs;
   Eigen::VectorXd& inverse_pivots;
   void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const { whole_residual(model, x, t, crank_direction, f); }
@@ -37,15 +43,24 @@ struct WholeProblem {
     work.setZero();
     for (std::size_t k = 0; k < model.constraints().size(); ++k) {
       const Constraint& c = model.constraints()[k];
+      const int first_row = model.first_row(static_cast<int>(k));
       for (const int joint : c.joints) {
         if (joint < 0 || model.column_of(joint) < 0) continue;  // unused slot, or a ground joint
-        work.block(model.first_row(static_cast<int>(k)), model.column_of(joint), c.rows(), 2) =
-            partial_of(model, c, x, joint).topRows(c.rows());
+        const Eigen::Matrix2d d = partial_of(model, c, x, joint);
+        for (int r = 0; r < c.rows(); ++r) {
+          for (int xy = 0; xy < 2; ++xy) work(at(row_at, first_row + r), at(column_at, model.column_of(joint) + xy)) = d(r, xy);
+        }
       }
     }
     return linalg::all_finite(work);
   }
-  Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx) const { return sparse_gepp(work, f, rhs, inverse_pivots, dx); }
+  Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx) const {
+    for (Eigen::Index k = 0; k < f.size(); ++k) laid_out_f(at(row_at, k)) = f(k);
+    const Status status = sparse_gepp(work, laid_out_f, rhs, inverse_pivots, laid_out_dx);
+    for (Eigen::Index k = 0; k < dx.size(); ++k) dx(k) = laid_out_dx(at(column_at, k));
+    return status;
+  }
+  static Eigen::Index at(const std::vector<int>& layout, Eigen::Index k) { return layout[static_cast<std::size_t>(k)]; }
 };
 
 // A one-joint block: two rows, the joint's x and y, a fixed 2x2 system.
@@ -74,6 +89,27 @@ struct JointProblem {
         if (part.row[r] >= 0) J.row(part.row[r]) = d.row(r);
       }
     }
+    return J.allFinite();
+  }
+  Status solve(const Eigen::Vector2d& f, Eigen::Vector2d& dx) const {
+    const linalg::LinearResult<2> step = linalg::ClosedForm2x2().solve_prechecked(J, -f);
+    dx = step.x;
+    return step.status;
+  }
+};
+
+// A circle-circle dyad: the joint x on two circles whose centres a_r (joints of earlier blocks, or
+// ground) stay put while the block is solved. Rows and derivatives are those rows_of and partial_of
+// give for the two distance constraints, computed alike, from the centres read once.
+struct TwoCirclesProblem {
+  std::array<Eigen::Vector2d, 2> centre;
+  std::array<double, 2> radius;
+  Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+  void residual(const Eigen::Vector2d& x, Eigen::Vector2d& f) const {
+    for (int r = 0; r < 2; ++r) f(r) = ((x - centre[r]).squaredNorm() - radius[r] * radius[r]) / (2.0 * radius[r]);
+  }
+  bool jacobian(const Eigen::Vector2d& x) {
+    for (int r = 0; r < 2; ++r) J.row(r) = ((x - centre[r]) / radius[r]).transpose();
     return J.allFinite();
   }
   Status solve(const Eigen::Vector2d& f, Eigen::Vector2d& dx) const {
@@ -162,11 +198,42 @@ LinkageFastSolver::LinkageFastSolver(const LinkageSolver& solver) : solver_(solv
       }
       if (part.row[0] >= 0 || part.row[1] >= 0) block.parts.push_back(part);
     }
+    if (source.kind == BlockKind::circle_circle && block.parts.size() == 2) {
+      block.two_circles = true;
+      for (const Part& part : block.parts) {
+        const std::size_t r = static_cast<std::size_t>(part.row[0]);
+        block.centres[r] = detail::centre_of(*part.constraint, block.joints[0]);
+        block.radii[r] = part.constraint->length;
+      }
+    }
     block.work.setZero(block.size, block.size);
     block.x.setZero(block.size), block.f.setZero(block.size), block.dx.setZero(block.size);
     block.rhs.setZero(block.size), block.inverse_pivots.setZero(block.size);
     blocks_.push_back(std::move(block));
   }
+  lay_out_full_system(n);
+}
+
+// Full Newton's layout: the blocks from last to first, each block's rows and columns in its own
+// order. J is block lower triangular in block order (a block's rows read its own joints and those of
+// earlier blocks), so in reverse order it is block upper triangular: the entries below a pivot are
+// in the pivot's own block, and GEPP's row updates stay inside it. Rows or columns in no block
+// (none, for a model the blocks cover) keep their order after them.
+void LinkageFastSolver::lay_out_full_system(int n) {
+  full_row_at_.assign(static_cast<std::size_t>(n), -1);
+  full_column_at_.assign(static_cast<std::size_t>(n), -1);
+  int next_row = 0, next_column = 0;
+  for (auto block = blocks_.rbegin(); block != blocks_.rend(); ++block) {
+    for (const int row : block->rows) full_row_at_[static_cast<std::size_t>(row)] = next_row++;
+    for (const int column : block->columns) full_column_at_[static_cast<std::size_t>(column)] = next_column++;
+  }
+  for (int& at : full_row_at_) {
+    if (at < 0) at = next_row++;
+  }
+  for (int& at : full_column_at_) {
+    if (at < 0) at = next_column++;
+  }
+  full_f_.setZero(n), full_dx_.setZero(n);
 }
 
 LinkageFastOutcome LinkageFastSolver::solve(double t, Eigen::VectorXd& q) {
@@ -182,7 +249,8 @@ LinkageFastOutcome LinkageFastSolver::solve(double t, Eigen::VectorXd& q) {
 
 LinkageFastOutcome LinkageFastSolver::solve_full(double t, Eigen::VectorXd& q) {
   linalg::require_finite(q, "starting point");
-  WholeProblem whole{solver_.model(), t, crank_direction(t), work_, rhs_, inverse_pivots_};
+  WholeProblem whole{solver_.model(), t, crank_direction(t), full_row_at_, full_column_at_, work_, full_f_, full_dx_,
+                     rhs_, inverse_pivots_};
   return {newton_in_place(whole, q, f_, dx_, solver_.options().newton), -1};
 }
 
@@ -203,6 +271,13 @@ LinkageFastOutcome LinkageFastSolver::solve_sequential(double t, Eigen::VectorXd
       JointProblem problem{solver_.model(), block, t, direction, q, Eigen::Matrix2d::Zero()};
       problem.residual(q.segment<2>(block.columns[0]), f);
       counts = detail::placed_block_counts(f, options.residual_tolerance);
+    } else if (block.two_circles) {
+      Eigen::Vector2d x = q.segment<2>(block.columns[0]), f, dx;
+      linalg::require_finite(x, "starting point");
+      const auto centre = [&](int r) { return detail::joint_at(solver_.model(), q, block.centres[static_cast<std::size_t>(r)]); };
+      TwoCirclesProblem problem{{centre(0), centre(1)}, block.radii};
+      counts = newton_in_place(problem, x, f, dx, options);
+      q.segment<2>(block.columns[0]) = x;
     } else if (block.size == 2) {
       Eigen::Vector2d x = q.segment<2>(block.columns[0]), f, dx;
       linalg::require_finite(x, "starting point");

@@ -6,11 +6,13 @@
 //
 // Where the time goes instead:
 //   full        f and J into preallocated storage, J's nonzeros only, and GEPP in place that skips
-//               the row updates whose multiplier is zero (J is sparse)
+//               the row updates whose multiplier is zero (J is sparse); J's rows and columns laid
+//               out in reverse block order, so that J is block upper triangular and elimination
+//               stays inside each diagonal block (no fill-in below it)
 //   sequential  per block only that block's own rows and columns: an explicit block (crank, body
 //               point, driven slider) placed by its formula as the generic solver does, a one-joint
-//               block by Newton on a fixed 2x2 system with the closed-form inverse, a bigger block
-//               by that GEPP
+//               block by Newton on a fixed 2x2 system with the closed-form inverse (a circle-circle
+//               dyad's from its two centres, read once per solve), a bigger block by that GEPP
 //   analytic    the generic closed form itself, in place
 // and the crank's cos and sin once per solve, not at every residual.
 // and velocity() solves J qdot = -Phi_t block by block (J is block lower triangular in block order).
@@ -67,6 +69,9 @@ class LinkageFastSolver {
     std::vector<int> rows, columns;     // of the whole system
     std::vector<Part> parts;
     std::vector<int> joints;            // the block's joints, in column order (x, y each)
+    bool two_circles = false;           // a circle-circle dyad: its rows are two distance constraints
+    std::array<int, 2> centres{-1, -1}; //   to these joints (solved earlier, or ground), in row order,
+    std::array<double, 2> radii{};      //   with these lengths
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> work;  // bigger blocks: J, then U
     Eigen::VectorXd x, f, dx, rhs, inverse_pivots;
   };
@@ -75,12 +80,16 @@ class LinkageFastSolver {
   LinkageFastOutcome solve_full(double t, Eigen::VectorXd& q);
   LinkageFastOutcome solve_sequential(double t, Eigen::VectorXd& q);
   LinkageFastOutcome solve_analytic(double t, Eigen::VectorXd& q);
+  void lay_out_full_system(int n);
   double whole_residual_norm(const Eigen::VectorXd& q, double t);
   Eigen::Vector2d crank_direction(double t) const;  // (cos, sin)(t + offset), once per solve
 
   const LinkageSolver& solver_;
   const Constraint* crank_ = nullptr;  // the driving crank's constraint, if a crank drives
   std::vector<Block> blocks_;
+  // Full Newton's layout: where the model's row (column) k sits in the work matrix.
+  std::vector<int> full_row_at_, full_column_at_;
+  Eigen::VectorXd full_f_, full_dx_;  // f and dx in that layout
   Eigen::VectorXd f_, dx_, rhs_, inverse_pivots_, phi_t_, qdot_;
   Eigen::MatrixXd J_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> work_;
