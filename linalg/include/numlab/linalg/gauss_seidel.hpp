@@ -170,7 +170,13 @@ class GaussSeidel {
 
   // State between sweeps.
   double step_norm() const { return step_norm_; }
-  double residual_norm() const { return residual_inf_norm(original_matrix_, original_rhs_, x_); }
+  // ||b - A x||_inf, computed as b - (A x) in a workspace kept between sweeps: with a stop on the
+  // residual it is evaluated after every sweep, and a temporary would be a heap allocation each time.
+  double residual_norm() const {
+    residual_.noalias() = original_matrix_ * x_;
+    residual_ = original_rhs_ - residual_;
+    return residual_.template lpNorm<Eigen::Infinity>();
+  }
   const WorkMatrix& swept_matrix() const { return swept_matrix_; }
   const VectorType& swept_rhs() const { return swept_rhs_; }
 
@@ -203,6 +209,7 @@ class GaussSeidel {
   WorkMatrix swept_matrix_ = zero_or_empty<WorkMatrix>();  // M: A^T A or A
   VectorType swept_rhs_ = zero_or_empty<VectorType>();     // c: A^T b or b
   VectorType x_ = zero_or_empty<VectorType>();
+  mutable VectorType residual_ = zero_or_empty<VectorType>();  // residual_norm()'s workspace
   int sweep_ = 0;
   double step_norm_ = LinearResult<N>::not_applicable;
   double first_step_norm_ = 0.0;
