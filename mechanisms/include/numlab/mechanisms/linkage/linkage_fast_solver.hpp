@@ -2,13 +2,14 @@
 // The fast path beside LinkageSolver (linkage_solver.hpp), for sweeps and `numlab bench`: the same
 // full, sequential and analytic solves, with the same stop tests, statuses, iterations and residual
 // evaluations, on a workspace sized once when it is made. (Its jacobian_evaluations are one per
-// iteration: the generic Newton on a DynamicSystem evaluates J with every residual, the last unused.) A solve, and each Newton iteration in it, allocates nothing on the heap.
+// iteration: the generic Newton on a DynamicSystem evaluates J with every residual, the last
+// unused.) A solve, and each Newton iteration in it, allocates nothing on the heap.
 //
 // Where the time goes instead:
 //   full        f and J into preallocated storage, J's nonzeros only, and GEPP in place that skips
 //               the row updates whose multiplier is zero (J is sparse); J's rows and columns laid
 //               out in reverse block order, so that J is block upper triangular and elimination
-//               stays inside each diagonal block (no fill-in below it)
+//               stays inside each diagonal block (no fill-in outside it)
 //   sequential  per block only that block's own rows and columns: an explicit block (crank, body
 //               point, driven slider) placed by its formula as the generic solver does, a one-joint
 //               block by Newton on a fixed 2x2 system with the closed-form inverse (a circle-circle
