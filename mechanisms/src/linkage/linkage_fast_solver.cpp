@@ -63,6 +63,13 @@ struct WholeProblem {
   static Eigen::Index at(const std::vector<int>& layout, Eigen::Index k) { return layout[static_cast<std::size_t>(k)]; }
 };
 
+// J dx = -f for a one-joint block's fixed 2x2 J, by the closed-form inverse.
+Status closed_form_step(const Eigen::Matrix2d& J, const Eigen::Vector2d& f, Eigen::Vector2d& dx) {
+  const linalg::LinearResult<2> step = linalg::ClosedForm2x2().solve_prechecked(J, -f);
+  dx = step.x;
+  return step.status;
+}
+
 // A one-joint block: two rows, the joint's x and y, a fixed 2x2 system.
 struct JointProblem {
   const LinkageModel& model;
@@ -91,11 +98,7 @@ struct JointProblem {
     }
     return J.allFinite();
   }
-  Status solve(const Eigen::Vector2d& f, Eigen::Vector2d& dx) const {
-    const linalg::LinearResult<2> step = linalg::ClosedForm2x2().solve_prechecked(J, -f);
-    dx = step.x;
-    return step.status;
-  }
+  Status solve(const Eigen::Vector2d& f, Eigen::Vector2d& dx) const { return closed_form_step(J, f, dx); }
 };
 
 // A circle-circle dyad: the joint x on two circles whose centres a_r (joints of earlier blocks, or
@@ -112,11 +115,7 @@ struct TwoCirclesProblem {
     for (int r = 0; r < 2; ++r) J.row(r) = ((x - centre[r]) / radius[r]).transpose();
     return J.allFinite();
   }
-  Status solve(const Eigen::Vector2d& f, Eigen::Vector2d& dx) const {
-    const linalg::LinearResult<2> step = linalg::ClosedForm2x2().solve_prechecked(J, -f);
-    dx = step.x;
-    return step.status;
-  }
+  Status solve(const Eigen::Vector2d& f, Eigen::Vector2d& dx) const { return closed_form_step(J, f, dx); }
 };
 
 // A block of several joints: its rows and columns only, GEPP on its preallocated work matrix.
