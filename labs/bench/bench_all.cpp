@@ -1,7 +1,6 @@
 #include "bench/bench_all.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "bench/progress_line.hpp"
 #include "bench/bench_fit.hpp"
 #include "bench/bench_jansen.hpp"
 #include "bench/bench_linear.hpp"
@@ -27,10 +27,6 @@
 namespace numlab::cli {
 
 namespace {
-
-void progress(const std::string& message) {
-  if (isatty(STDERR_FILENO) != 0) std::cerr << "\r\033[K" << message << std::flush;
-}
 
 // --- Jansen and Mustang: work-precision diagrams ---
 
@@ -56,7 +52,7 @@ template <typename BenchAt>
 std::vector<WorkPrecisionPoint> work_precision_points(const std::string& what, bool quick, BenchAt bench_at) {
   std::vector<WorkPrecisionPoint> points;
   for (double tolerance : tolerance_sweep(quick)) {
-    progress(fmt::format("bench: {} at tolerance {:g}", what, tolerance));
+    show_progress(fmt::format("bench: {} at tolerance {:g}", what, tolerance));
     for (const auto& row : bench_at(tolerance)) {
       const bool repeat = row.solver == "analytic" &&
                           std::any_of(points.begin(), points.end(), [](const auto& p) { return p.solver == "analytic"; });
@@ -134,7 +130,7 @@ std::vector<SeidelRow> seidel_rows(bool quick) {
   std::vector<SeidelRow> rows;
   constexpr int n = 8;
   for (double kappa : {2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0}) {
-    progress(fmt::format("bench: Gauss-Seidel at kappa {:g}", kappa));
+    show_progress(fmt::format("bench: Gauss-Seidel at kappa {:g}", kappa));
     const Eigen::MatrixXd A = linalg::matrix_with_condition(n, kappa, 7);
     const Eigen::VectorXd exact = Eigen::VectorXd::Ones(n);
     const Eigen::VectorXd b = A * exact;
@@ -198,11 +194,11 @@ int run_bench_all(const CommonOptions& common, const std::string& chart, bool qu
   const std::vector<int> sizes = quick ? std::vector<int>{2, 8, 64} : std::vector<int>{2, 8, 64, 256, 512, 1024};
   const std::vector<BenchRow> linear = bench_linear(sizes, quick);
   const std::vector<SeidelRow> seidel = seidel_rows(quick);
-  progress("bench: fitting degree sweep on Wampler4");
+  show_progress("bench: fitting degree sweep on Wampler4");
   const std::vector<FitBenchRow> fits = bench_fit("Wampler4", wampler, 12, quick);
   std::vector<DegreeSweepRow> sweep;
   for (const FitBenchRow& row : fits) sweep.push_back(row.sweep);
-  progress("");
+  show_progress("");
 
   // 3. Draw.
   draw_work_precision(work_precision, "Jansen leg, 360-pose cycle", jansen);

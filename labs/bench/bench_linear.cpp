@@ -1,7 +1,6 @@
 #include "bench/bench_linear.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "bench/progress_line.hpp"
 #include "bench/bench_basins.hpp"
 #include "bench/bench_fit.hpp"
 #include "bench/bench_jansen.hpp"
@@ -31,15 +31,11 @@ namespace {
 
 const std::vector<std::string> solvers = {"gepp", "gsl-lu", "eigen-lu", "gauss-seidel", "gauss-seidel-plain"};
 
-void progress(const std::string& message) {
-  if (isatty(STDERR_FILENO) != 0) std::cerr << "\r\033[K" << message << std::flush;
-}
-
 // Times one solver object's solve(A, b); returns the row, or nothing when it did not converge.
 template <typename Solver, typename MatrixType, typename VectorType>
 void time_solver(std::vector<BenchRow>& rows, const std::string& name, Solver& solver, const MatrixType& A,
                  const VectorType& b, const TimingPlan& plan) {
-  progress(fmt::format("bench linear: {} at n = {}", name, A.rows()));
+  show_progress(fmt::format("bench linear: {} at n = {}", name, A.rows()));
   const auto result = solver.solve(A, b);
   if (result.status != Status::converged) return;  // Gauss-Seidel is timed only where it converges
   const double seconds = median_time([&] { solver.solve(A, b); }, plan);
@@ -150,7 +146,7 @@ std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick) {
       bench_size<Eigen::Dynamic>(rows, n, plan);
     }
   }
-  progress("");
+  show_progress("");
   return rows;
 }
 

@@ -1,7 +1,6 @@
 #include "bench/bench_robustness.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,17 +10,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "bench/progress_line.hpp"
 #include "bench/performance_profiles.hpp"
 
 namespace numlab::cli {
 
 namespace {
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
-
-void progress(const std::string& message) {
-  if (isatty(STDERR_FILENO) != 0) std::cerr << "\r\033[K" << message << std::flush;
-}
 
 std::string start_text(const nonlinear::MinpackCase& test_case) {
   return fmt::format("{}x0", static_cast<long>(test_case.factor));
@@ -35,7 +29,7 @@ CostTable cost_table(const RobustnessResults& results, Cost cost) {
     std::vector<double> row;
     for (const std::string& solver : profiled_solvers(results)) {
       const RobustnessRun& run = results.run(static_cast<int>(c), solver);
-      row.push_back(run.solved ? cost(run) : infinity);
+      row.push_back(run.solved ? cost(run) : not_solved);
     }
     table.push_back(row);
   }
@@ -203,8 +197,8 @@ void write_robustness_files(const RobustnessFiles& files, const RobustnessResult
 int run_bench_robustness(const CommonOptions& common, bool quick) {
   const RobustnessFiles files = robustness_files(common.out_dir);
   check_outputs(planned_files(files), {});
-  const RobustnessResults results = run_robustness(nonlinear::minpack_cases(), quick ? 1 : 5, progress);
-  progress("");
+  const RobustnessResults results = run_robustness(nonlinear::minpack_cases(), quick ? 1 : 5, show_progress);
+  show_progress("");
   write_robustness_files(files, results);
   const std::vector<std::string> written = {files.csv, files.text, files.markdown, files.time_chart.chart,
                                             files.evaluation_chart.chart, files.data_chart.chart};

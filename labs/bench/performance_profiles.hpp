@@ -17,11 +17,13 @@
 //      function evaluations and n_p the problem's number of unknowns: the fraction of problems s
 //      solves within kappa "simplex gradients" (n + 1 evaluations each).
 
+#include <limits>
 #include <vector>
 
 namespace numlab::cli {
 
 using CostTable = std::vector<std::vector<double>>;  // [problem][solver]; +infinity = not solved
+inline constexpr double not_solved = std::numeric_limits<double>::infinity();  // the cost of a failed run
 
 // r_{p,s}: same shape as costs. Throws std::invalid_argument for rows of different lengths or a
 // cost that is negative or NaN.
