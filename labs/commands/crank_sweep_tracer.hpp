@@ -16,9 +16,9 @@
 namespace numlab::cli {
 
 template <typename Sweep>
-class SweepTracer final : public mechanisms::SweepRecorder<Sweep> {
+class CrankSweepTracer final : public mechanisms::SweepRecorder<Sweep> {
  public:
-  SweepTracer(std::ostream* rows, bool step) : rows_(rows), step_(step) {}
+  CrankSweepTracer(std::ostream* rows, bool step) : rows_(rows), step_(step) {}
 
   void on_step(const Sweep& sweep, const mechanisms::SweepPoseRecord& record) override {
     mechanisms::SweepRecorder<Sweep>::on_step(sweep, record);

@@ -22,7 +22,7 @@
 #include "commands/mustang_command.hpp"
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
 #include "numlab/printable_text.hpp"
-#include "commands/sweep_tracer.hpp"
+#include "commands/crank_sweep_tracer.hpp"
 #include "output/table.hpp"
 
 namespace numlab::cli {
@@ -30,7 +30,7 @@ namespace numlab::cli {
 namespace {
 
 using mechanisms::JansenModel;
-using Tracer = SweepTracer<mechanisms::JansenSweepStepper>;
+using Tracer = CrankSweepTracer<mechanisms::JansenSweepStepper>;
 
 // |dF / d theta_i| at a pose, from the 8-equation model's rates (the 10-equation model's joints are
 // the same, so its 8 angles are read off them).

@@ -9,7 +9,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "commands/sweep_tracer.hpp"
+#include "commands/crank_sweep_tracer.hpp"
 #include "scenes/mustang_scene.hpp"
 #include "output/table.hpp"
 
@@ -20,7 +20,7 @@ namespace {
 using mechanisms::MustangLimit;
 using mechanisms::MustangSweep;
 using mechanisms::SweepAttempt;
-using Tracer = SweepTracer<mechanisms::MustangSweepStepper>;
+using Tracer = CrankSweepTracer<mechanisms::MustangSweepStepper>;
 
 constexpr double degrees = std::numbers::pi / 180.0;
 
