@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands/crank_sweep_tracer.hpp"
+#include "numlab/mechanisms/crank_angle.hpp"
 #include "scenes/mustang_scene.hpp"
 #include "output/table.hpp"
 
@@ -22,7 +23,7 @@ using mechanisms::MustangSweep;
 using mechanisms::SweepAttempt;
 using Tracer = CrankSweepTracer<mechanisms::MustangSweepStepper>;
 
-constexpr double degrees = std::numbers::pi / 180.0;
+using mechanisms::degrees;
 
 // kappa_2 of J and the smallest loop margin where an attempt ended (NaN where it ended at no point).
 double condition_of(const SweepAttempt& attempt) {

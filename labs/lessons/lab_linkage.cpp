@@ -16,6 +16,7 @@
 #include "lessons/lab.hpp"
 #include "lessons/linkage_cycle.hpp"
 #include "lessons/linkage_sentences.hpp"
+#include "numlab/mechanisms/crank_angle.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
@@ -26,7 +27,7 @@ namespace numlab::cli {
 namespace {
 
 using namespace mechanisms;
-constexpr double degrees = std::numbers::pi / 180.0;
+using mechanisms::degrees;
 constexpr double cycle_tolerance = 1e-10;      // every cycle's Newton tolerance (as `numlab bench jansen`)
 constexpr int cycle_poses = 360;               // one turn, 1 degree apart
 const TimingPlan lab_timing{5, 200, 0.03};     // at least 5 runs and 30 ms per median; `numlab bench` measures longer

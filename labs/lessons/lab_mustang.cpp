@@ -11,6 +11,7 @@
 #include "lessons/lab.hpp"
 #include "lessons/lab_sentences.hpp"
 #include "scenes/mustang_scene.hpp"
+#include "numlab/mechanisms/crank_angle.hpp"
 #include "numlab/mechanisms/mustang_seed_method.hpp"
 #include "numlab/mechanisms/mustang_sweep.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
@@ -21,7 +22,7 @@ namespace numlab::cli {
 namespace {
 
 using namespace mechanisms;
-constexpr double degrees = std::numbers::pi / 180.0;
+using mechanisms::degrees;
 
 std::string write_lab_file(LabSession& session, const std::string& name, const std::string& contents) {
   ensure_directory(session.folder());

@@ -23,7 +23,6 @@ constexpr std::pair<JansenJoint, JansenJoint> bars[] = {
     {JansenJoint::A, JansenJoint::D},  {JansenJoint::P1, JansenJoint::D}, {JansenJoint::D, JansenJoint::E},
     {JansenJoint::D, JansenJoint::F},  {JansenJoint::E, JansenJoint::F}};
 
-std::size_t at(JansenJoint joint) { return static_cast<std::size_t>(joint); }
 
 std::string foot_path(const std::vector<Point>& feet, const std::string& colour) {
   std::string points;

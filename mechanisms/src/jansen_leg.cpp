@@ -5,20 +5,16 @@
 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/mechanisms/circle_intersection.hpp"
+#include "plane_angles.hpp"
 
 namespace numlab::mechanisms {
 
 namespace {
-Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
-double direction(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
-  return std::atan2(to.y() - from.y(), to.x() - from.x());
-}
 // `angle` shifted by a multiple of 2 pi to lie within pi of `near`.
-double nearest_turn(double angle, double near) {
+double within_half_turn(double angle, double near) {
   constexpr double turn = 2.0 * std::numbers::pi;
   return angle + turn * std::round((near - angle) / turn);
 }
-std::size_t at(JansenJoint joint) { return static_cast<std::size_t>(joint); }
 }  // namespace
 
 JansenLeg::JansenLeg(JansenLengths lengths, JansenFootLengths foot)
@@ -85,7 +81,7 @@ JansenAngles JansenLeg::angles_of(const JansenJoints& p, const JansenAngles& nea
                                                  {J::C, J::E}, {J::A, J::D}, {J::P1, J::D}, {J::D, J::E}}};
   JansenAngles theta;
   for (int k = 0; k < 8; ++k) {
-    theta(k) = nearest_turn(direction(p[at(ends[k].first)], p[at(ends[k].second)]), near(k));
+    theta(k) = within_half_turn(direction(p[at(ends[k].first)], p[at(ends[k].second)]), near(k));
   }
   return theta;
 }

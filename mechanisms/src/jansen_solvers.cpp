@@ -18,15 +18,11 @@
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/sequential_newton.hpp"
+#include "plane_angles.hpp"
 
 namespace numlab::mechanisms {
 
 namespace {
-
-constexpr double degrees = std::numbers::pi / 180.0;
-std::size_t at(JansenJoint joint) { return static_cast<std::size_t>(joint); }
-Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
-double direction(const Eigen::Vector2d& from, const Eigen::Vector2d& to) { return std::atan2(to.y() - from.y(), to.x() - from.x()); }
 
 // Seed 000's sequential solve: the dyads (theta1, theta2), (theta3, theta4), (theta6, theta7),
 // (theta5, theta8), each by its own Newton with the closed-form 2x2 inverse (dyad_newton.hpp). A

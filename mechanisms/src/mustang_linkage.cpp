@@ -5,14 +5,13 @@
 #include <numbers>
 
 #include "numlab/mechanisms/circle_intersection.hpp"
+#include "plane_angles.hpp"
 
 namespace numlab::mechanisms {
 
 namespace {
 
 constexpr double pi = std::numbers::pi;
-Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
-double direction(const Eigen::Vector2d& from, const Eigen::Vector2d& to) { return std::atan2(to.y() - from.y(), to.x() - from.x()); }
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 const Eigen::Vector2d fixed_P0(std::sqrt(0.5), 0.0), fixed_P1(0.0, std::sqrt(0.5)), fixed_P2(0.0, 1.0 + std::sqrt(0.5));

@@ -13,7 +13,6 @@ namespace numlab::mechanisms {
 
 namespace {
 
-constexpr double degrees = std::numbers::pi / 180.0;
 
 double smallest_margin(const MustangLinkage& linkage, const MustangJoints& p) {
   double margin = linkage.loop_margin(0, p);

@@ -5,6 +5,7 @@
 #include <random>
 #include <string>
 
+#include "numlab/mechanisms/crank_angle.hpp"
 #include "numlab/mechanisms/anchored_sincos.hpp"
 #include "numlab/mechanisms/circle_intersection.hpp"
 #include "numlab/mechanisms/crank_angle.hpp"
@@ -22,7 +23,6 @@ using namespace numlab;
 using namespace numlab::mechanisms;
 
 namespace {
-constexpr double degrees = std::numbers::pi / 180.0;
 
 nonlinear::NewtonOptions tight() {
   nonlinear::NewtonOptions options;

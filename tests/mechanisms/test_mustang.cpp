@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string>
 
+#include "numlab/mechanisms/crank_angle.hpp"
 #include "numlab/mechanisms/mustang_linkage.hpp"
 #include "numlab/mechanisms/mustang_seed_method.hpp"
 #include "numlab/mechanisms/mustang_solvers.hpp"
@@ -18,7 +19,6 @@ using namespace numlab;
 using namespace numlab::mechanisms;
 
 namespace {
-constexpr double degrees = std::numbers::pi / 180.0;
 
 // A sweep with Newton stopping at ||f||_inf <= 1e-12 (the CLI's default).
 MustangSweep sweep_with(const std::string& solver, double start, double stop, double step) {

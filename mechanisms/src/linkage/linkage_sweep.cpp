@@ -17,7 +17,7 @@ namespace numlab::mechanisms {
 
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr double not_computed = std::numeric_limits<double>::quiet_NaN();  // a figure left out
 constexpr int max_halvings = 8;          // a continuation step is halved at most this often
 constexpr double crank_walk_deg = 2.0;   // the walk from the reference pose to the sweep's start
 constexpr int slider_walk_steps = 50;
@@ -146,9 +146,9 @@ LinkagePose make_pose(const LinkageSolver& solver, double user, double t, Linkag
   pose.q = std::move(solution.q);
   pose.outcome = solution.outcome;
   pose.failed_block = solution.failed_block;
-  pose.condition = nan;
-  pose.closed_form_distance = nan;
-  pose.closed_form_bound = nan;
+  pose.condition = not_computed;
+  pose.closed_form_distance = not_computed;
+  pose.closed_form_bound = not_computed;
   if (converged(solution)) {
     linkage_kinematics(model, t, pose.q, pose.velocity, pose.acceleration);
     const LinkageConditioning conditioning = linkage_conditioning(model, t, pose.q);
@@ -208,7 +208,7 @@ LinkageLimit bisect_limit(PoseSolver& poses, double good, Eigen::VectorXd q, dou
   limit.upper = upper;
   limit.block = failing_block(solver, bad, q);
   const auto angles = solver.transmission_angles(q);
-  limit.transmission_deg = limit.block >= 0 ? angles[static_cast<std::size_t>(limit.block)] : nan;
+  limit.transmission_deg = limit.block >= 0 ? angles[static_cast<std::size_t>(limit.block)] : not_computed;
   return limit;
 }
 

@@ -11,8 +11,11 @@
 
 namespace numlab::mechanisms {
 
+// One degree in radians: 45.0 * degrees is 45 degrees in radians, theta / degrees is theta in degrees.
+inline constexpr double degrees = std::numbers::pi / 180.0;
+
 // deg reduced to (-360, 360) by whole turns, in radians. deg itself when |deg| < 360.
-inline double crank_radians(double deg) { return std::fmod(deg, 360.0) * (std::numbers::pi / 180.0); }
+inline double crank_radians(double deg) { return std::fmod(deg, 360.0) * degrees; }
 
 // The angle a whole number of turns from deg that lies within half a turn of centre (degrees):
 // deg itself when it already lies there and |deg| < 360.

@@ -19,7 +19,8 @@ enum class JansenJoint { O, P1, A, B, C, D, E, F };
 inline constexpr int jansen_joint_count = 8;
 inline constexpr std::array<std::string_view, 8> jansen_joint_names = {"O", "P1", "A", "B", "C", "D", "E", "F"};
 
-using JansenJoints = std::array<Eigen::Vector2d, 8>;  // indexed by JansenJoint
+using JansenJoints = std::array<Eigen::Vector2d, 8>;  // indexed by JansenJoint: joints[at(JansenJoint::A)]
+inline constexpr std::size_t at(JansenJoint joint) { return static_cast<std::size_t>(joint); }
 using JansenAngles = JansenClosure::Vector;           // theta1 ... theta8
 
 struct JansenFootLengths {

@@ -1,0 +1,18 @@
+#pragma once
+// Internal to the closed-form linkage solutions (jansen_leg.cpp, jansen_solvers.cpp,
+// mustang_linkage.cpp): unit vectors and directions in the plane, angles in radians.
+
+#include <Eigen/Core>
+#include <cmath>
+
+namespace numlab::mechanisms {
+
+// The unit vector at `angle` from the x axis.
+inline Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
+
+// The angle of the direction from `from` to `to`, in (-pi, pi].
+inline double direction(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  return std::atan2(to.y() - from.y(), to.x() - from.x());
+}
+
+}  // namespace numlab::mechanisms
