@@ -4,15 +4,12 @@
 
 #include "numlab/mechanisms/circle_intersection.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
+#include "numlab/mechanisms/plane_angles.hpp"
 
 namespace numlab::basins {
 
-namespace {
-Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
-double direction(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
-  return std::atan2(to.y() - from.y(), to.x() - from.x());
-}
-}  // namespace
+using mechanisms::direction;
+using mechanisms::unit;
 
 // ---- z^3 - 1
 

@@ -18,7 +18,7 @@
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/sequential_newton.hpp"
-#include "plane_angles.hpp"
+#include "numlab/mechanisms/plane_angles.hpp"
 
 namespace numlab::mechanisms {
 

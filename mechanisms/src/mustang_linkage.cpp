@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "numlab/mechanisms/circle_intersection.hpp"
-#include "plane_angles.hpp"
+#include "numlab/mechanisms/plane_angles.hpp"
 
 namespace numlab::mechanisms {
 

@@ -4,14 +4,13 @@
 #include <numbers>
 
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
+#include "numlab/mechanisms/plane_angles.hpp"
 
 namespace numlab::mechanisms {
 
 namespace {
 
 Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
-
-Eigen::Vector2d unit_at(double angle_rad) { return {std::cos(angle_rad), std::sin(angle_rad)}; }
 
 std::string pair_name(const LinkageDescription& d, int i, int j) { return d.joints[static_cast<std::size_t>(i)].name + "-" + d.joints[static_cast<std::size_t>(j)].name; }
 
@@ -98,7 +97,7 @@ void LinkageModel::derive() {
     c.kind = ConstraintKind::slider_line;
     c.joints = {slider.joint, -1, -1};
     c.point = slider.through;
-    c.direction = unit_at(slider.angle_deg * std::numbers::pi / 180.0);
+    c.direction = unit(slider.angle_deg * std::numbers::pi / 180.0);
     c.name = "slider " + d.joints[static_cast<std::size_t>(slider.joint)].name;
     c.place = slider.place;
     add(std::move(c));
@@ -115,7 +114,7 @@ void LinkageModel::derive() {
     const SliderSpec& slider = d.sliders[static_cast<std::size_t>(driver.slider)];
     c.joints = {driver.joint, -1, -1};
     c.point = slider.through;
-    c.direction = unit_at(slider.angle_deg * std::numbers::pi / 180.0);
+    c.direction = unit(slider.angle_deg * std::numbers::pi / 180.0);
     c.name = "slider driver " + d.joints[static_cast<std::size_t>(driver.joint)].name;
   }
   add(std::move(c));
@@ -205,7 +204,7 @@ void LinkageModel::residual(const Eigen::VectorXd& q, double t, Eigen::VectorXd&
         break;
       }
       case ConstraintKind::crank:
-        f.segment<2>(row) = p(c.joints[1]) - p(c.joints[0]) - c.length * unit_at(t + c.offset);
+        f.segment<2>(row) = p(c.joints[1]) - p(c.joints[0]) - c.length * unit(t + c.offset);
         break;
       case ConstraintKind::slider_travel:
         f(row) = c.direction.dot(p(c.joints[0]) - c.point) - t;
@@ -256,7 +255,7 @@ void LinkageModel::driver_derivative(const Eigen::VectorXd& /*q*/, double t, Eig
   phi_t.setZero(equation_count_);
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const Constraint& c = constraints_[k];
-    if (c.kind == ConstraintKind::crank) phi_t.segment<2>(first_row_[k]) = -c.length * perp(unit_at(t + c.offset));
+    if (c.kind == ConstraintKind::crank) phi_t.segment<2>(first_row_[k]) = -c.length * perp(unit(t + c.offset));
     if (c.kind == ConstraintKind::slider_travel) phi_t(first_row_[k]) = -1.0;
   }
 }
@@ -275,7 +274,7 @@ void LinkageModel::acceleration_rhs(const Eigen::VectorXd& /*q*/, const Eigen::V
     if (c.kind == ConstraintKind::distance) {
       gamma(row) = -(velocity(c.joints[0]) - velocity(c.joints[1])).squaredNorm() / c.length;
     } else if (c.kind == ConstraintKind::crank) {
-      gamma.segment<2>(row) = -c.length * unit_at(t + c.offset);
+      gamma.segment<2>(row) = -c.length * unit(t + c.offset);
     }
   }
 }

@@ -1,6 +1,6 @@
 #pragma once
-// Internal to the closed-form linkage solutions (jansen_leg.cpp, jansen_solvers.cpp,
-// mustang_linkage.cpp): unit vectors and directions in the plane, angles in radians.
+// Unit vectors and directions in the plane, angles in radians: what the closed-form linkage
+// solutions, the linkage model and the basin maps' linkage systems build poses from.
 
 #include <Eigen/Core>
 #include <cmath>
