@@ -195,6 +195,45 @@ TEST_CASE("Linkage files: TOML syntax errors give toml++'s place", "[linkage-fil
   CHECK_THAT(drivers.problem(), StartsWith("TOML syntax error"));
 }
 
+namespace {
+
+std::string repeated(const std::string& piece, int times) {
+  std::string text;
+  for (int k = 0; k < times; ++k) text += piece;
+  return text;
+}
+
+const std::string too_deep = "keys, tables and arrays nested deeper than 64 levels";
+
+}  // namespace
+
+TEST_CASE("Linkage files: nesting deeper than 64 levels is refused before toml++ recurses into it",
+          "[linkage-file][bad-input]") {
+  const std::string start = lines({"# the root table: its keys are at level 1"});
+  // 200,000 levels overflowed toml++'s stack; the 65th key part, header part or bracket is named.
+  check_refused(start + "a" + repeated(".a", 199'999) + " = 1\n", 2, 129, too_deep);
+  check_refused(start + "[a" + repeated(".a", 199'999) + "]\n", 2, 130, too_deep);
+  check_refused(start + "[[a" + repeated(". \"a\"", 199'999) + "]]\n", 2, 321, too_deep);
+  check_refused(start + "x = " + repeated("[", 200'000) + "\n", 2, 4 + 64, too_deep);
+  check_refused(start + "x = " + repeated("{a = ", 200'000) + "\n", 2, 4 + 63 * 5 + 2, too_deep);
+  check_refused(start + "x = [" + repeated("{a = [", 200'000) + "\n", 2, 5 + 31 * 6 + 2, too_deep);
+  // Levels add up: a header's parts, a key's parts, arrays, inline tables in arrays.
+  check_refused(start + "[t.u]\n" + "a" + repeated(".a", 62) + " = 1\n", 3, 125, too_deep);
+  check_refused(start + "[t]\n" + "a" + repeated(".a", 61) + " = [[1]]\n", 3, 128, too_deep);
+  // 64 levels reach toml++ (here: no [linkage] table); dots and brackets in strings, comments and
+  // numbers count for nothing, nor do arrays already closed.
+  CHECK(error_of(start + "a" + repeated(".a", 63) + " = 1\n").problem() != too_deep);
+  CHECK(error_of(start + "x = " + repeated("[", 63) + repeated("]", 63) + "\n").problem() != too_deep);
+  CHECK(error_of(start + "x = " + repeated("[[]", 100) + repeated("]", 100) + "\n").problem() == too_deep);
+  CHECK(error_of(start + "x = " + repeated("[[], ", 100) + "[]" + repeated("]", 100) + "\n").problem() == too_deep);
+  CHECK(error_of(start + "x = [" + repeated("[], ", 100) + "[]]\n").problem() != too_deep);
+  const std::string busy = lines({"[linkage]", "name = \"t\"", "title = \"" + repeated("[a.", 60) + "\\\"\"",
+                                  "# " + repeated("[a.", 100)}) +
+                           head.substr(head.find("[ground]")) + crank +
+                           lines({"", "[[link]]", "joints = ['B', '''P''']", "length = 1." + repeated("5", 70)});
+  CHECK(parse_linkage_description(busy, "t.toml").links.size() == 2);
+}
+
 TEST_CASE("Linkage files: something that is not a linkage", "[linkage-file][bad-input]") {
   check_refused_without_place("", "not a linkage description: no [linkage] table");
   check_refused_without_place("# only a comment\n", "not a linkage description: no [linkage] table");

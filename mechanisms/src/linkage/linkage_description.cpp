@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "numlab/linalg/matrix_file.hpp"
 #include "numlab/printable_text.hpp"
@@ -142,6 +143,169 @@ std::string code_point_text(char32_t code) {
   for (int shift = 12; shift >= 0; shift -= 4) digits += hex[(code >> shift) & 0xFu];
   return digits;
 }
+
+// toml++ 3.3 parses dotted keys ("a.a.a... = 1") and table headers ("[a.a.a...]") by recursion with no
+// limit of its own: nested 200,000 deep they overflow the stack. So the raw text is scanned first and
+// refused at the first key part or array bracket deeper than this: far beyond any linkage file.
+constexpr int max_nesting = 64;
+
+// A small TOML lexer, just enough to count nesting: strings and comments are skipped (a dot or a bracket
+// in them counts for nothing), the parts of each key are counted, and arrays and inline tables are
+// tracked. A level is a key part or an array: under "[t.u]", "a.b = [[1]]" puts the 1 at level 6.
+class NestingScan {
+ public:
+  explicit NestingScan(std::string_view text) : text_(text) {
+    if (text_.starts_with("\xEF\xBB\xBF")) index_ = 3;  // a byte-order mark: not a column
+  }
+
+  // The place of the first key part or array bracket nested deeper than max_nesting, or nothing.
+  std::optional<SourcePlace> first_too_deep() {
+    while (!too_deep_ && index_ < text_.size()) step();
+    return too_deep_;
+  }
+
+ private:
+  struct Frame {
+    char bracket;  // '[' an array, '{' an inline table
+    int depth;     // an array: the level of its items; an inline table: the level of the table itself
+  };
+
+  char peek(std::size_t ahead = 0) const { return index_ + ahead < text_.size() ? text_[index_ + ahead] : '\0'; }
+
+  void advance() {
+    if (text_[index_] == '\n') {
+      ++line_;
+      column_ = 0;
+    }
+    ++index_;
+    // Columns count code points: a UTF-8 continuation byte is part of the character before it.
+    if (index_ < text_.size() && (static_cast<unsigned char>(text_[index_]) & 0xC0u) != 0x80u) ++column_;
+  }
+
+  SourcePlace place() const { return {line_, column_}; }
+
+  void check_level(int level) {
+    if (level > max_nesting && !too_deep_) too_deep_ = place();
+  }
+
+  void step() {
+    const char c = peek();
+    if (c == ' ' || c == '\t' || c == '\r') return advance();
+    if (c == '\n') {
+      advance();
+      if (frames_.empty()) expecting_key_ = true;  // a new line of the root table: a key or a header
+      return;
+    }
+    if (c == '#') return skip_comment();
+    if (expecting_key_) return step_in_key_position(c);
+    step_in_value(c);
+  }
+
+  void step_in_key_position(char c) {
+    expecting_key_ = false;
+    if (frames_.empty() && c == '[') return read_header();
+    if (!frames_.empty() && c == '}') return close_bracket();
+    const int base = frames_.empty() ? header_depth_ : frames_.back().depth;
+    value_depth_ = base + read_key_parts(base, '=');
+  }
+
+  void step_in_value(char c) {
+    if (c == '"' || c == '\'') return skip_string();
+    if (c == '[') {
+      const int items = (frames_.empty() || frames_.back().bracket == '{' ? value_depth_ : frames_.back().depth) + 1;
+      check_level(items);
+      frames_.push_back({'[', items});
+    } else if (c == '{') {
+      const int table = frames_.empty() || frames_.back().bracket == '{' ? value_depth_ : frames_.back().depth;
+      frames_.push_back({'{', table});
+      expecting_key_ = true;
+    } else if (c == ']' || c == '}') {
+      return close_bracket();
+    } else if (c == ',' && !frames_.empty() && frames_.back().bracket == '{') {
+      expecting_key_ = true;
+    }
+    advance();
+  }
+
+  void close_bracket() {
+    if (!frames_.empty()) {
+      value_depth_ = frames_.back().bracket == '[' ? frames_.back().depth - 1 : frames_.back().depth;
+      frames_.pop_back();
+    }
+    advance();
+  }
+
+  // "[a.b]" or "[[a.b]]" at the start of a line: the keys below it start at its number of parts.
+  void read_header() {
+    advance();
+    if (peek() == '[') advance();
+    header_depth_ = read_key_parts(0, ']');
+  }
+
+  // The parts of a key (bare, quoted, separated by dots), up to the end character (consumed) or the
+  // end of the line; each part checked at its first character, on top of the base level.
+  int read_key_parts(int base, char end) {
+    int parts = 0;
+    bool part_expected = true;
+    while (!too_deep_ && index_ < text_.size() && peek() != '\n') {
+      const char c = peek();
+      if (c == end) {
+        advance();
+        break;
+      }
+      if (c == '.') {
+        part_expected = true;
+        advance();
+        continue;
+      }
+      if (c != ' ' && c != '\t' && part_expected) {
+        part_expected = false;
+        check_level(base + ++parts);
+      }
+      if (c == '"' || c == '\'') skip_string();
+      else advance();
+    }
+    return std::max(parts, 1);
+  }
+
+  void skip_comment() {
+    while (index_ < text_.size() && peek() != '\n') advance();
+  }
+
+  // A string from its opening quote: '...' and "..." end at the line's end at the latest; '''...''' and
+  // """...""" may span lines. In basic strings (") a backslash escapes the next character.
+  void skip_string() {
+    const char quote = peek();
+    const bool multi_line = peek(1) == quote && peek(2) == quote;
+    for (int k = 0; k < (multi_line ? 3 : 1); ++k) advance();
+    while (index_ < text_.size()) {
+      const char c = peek();
+      if (c == '\n' && !multi_line) return;
+      if (c == '\\' && quote == '"' && index_ + 1 < text_.size() && (multi_line || peek(1) != '\n')) {
+        advance();
+      } else if (c == quote && (!multi_line || (peek(1) == quote && peek(2) == quote))) {
+        return close_string(quote, multi_line);
+      }
+      advance();
+    }
+  }
+
+  // The closing quote or quotes; a multi-line string may end in up to two more, part of its text.
+  void close_string(char quote, bool multi_line) {
+    for (int k = 0; k < (multi_line ? 3 : 1); ++k) advance();
+    for (int k = 0; multi_line && k < 2 && peek() == quote; ++k) advance();
+  }
+
+  std::string_view text_;
+  std::size_t index_ = 0;
+  int line_ = 1;
+  int column_ = 1;
+  bool expecting_key_ = true;
+  int header_depth_ = 0;  // the number of parts of the last table header
+  int value_depth_ = 0;   // the level of the value after the last key
+  std::vector<Frame> frames_;
+  std::optional<SourcePlace> too_deep_;
+};
 
 class Reader {
  public:
@@ -539,6 +703,10 @@ LinkageDescription parse_linkage_description(std::string_view toml_text, const s
     constexpr std::string_view prefix = "Error while parsing ";
     const std::string detail = printable(description.starts_with(prefix)
                                              ? " in " + std::string(description.substr(prefix.size(), 160))
+  if (const auto too_deep = NestingScan(toml_text).first_too_deep()) {
+    throw LinkageFileError(file, *too_deep,
+                           "keys, tables and arrays nested deeper than " + std::to_string(max_nesting) + " levels");
+  }
                                              : ": " + std::string(description.substr(0, 160)));
     throw LinkageFileError(file, place_of(error.source()),
                            mentions_linkage_table(toml_text)
