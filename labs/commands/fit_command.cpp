@@ -190,7 +190,14 @@ int FitCommand::run() const {
   const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const FitRun run{data, options, fit, certified_for(data, options.degree), time_s};
 
-  // 3. Report.
+  // 3. The chart first: a chart that cannot be written is an error (exit 2) with nothing on stdout.
+  const bool drawn = chart && fit.coefficients.size() > 0;
+  if (drawn) {
+    draw_fit_chart(*chart, fmt::format("{}: degree-{} fit ({})", data.name, fit.degree, to_string(fit.method)),
+                   {{data.name, data.x, data.y, fit.coefficients}});
+  }
+
+  // 4. Report.
   if (common.trace && normal) {
     print_normal_equations(common.format == Format::text ? std::cout : std::cerr, fitter.normal_equations(), options);
   }
@@ -201,11 +208,7 @@ int FitCommand::run() const {
   } else {
     print_text(std::cout, run);
   }
-  if (chart && fit.coefficients.size() > 0) {
-    draw_fit_chart(*chart, fmt::format("{}: degree-{} fit ({})", data.name, fit.degree, to_string(fit.method)),
-                   {{data.name, data.x, data.y, fit.coefficients}});
-    if (common.format == Format::text) std::cout << "chart: " << chart->chart << '\n';
-  }
+  if (drawn && common.format == Format::text) std::cout << "chart: " << chart->chart << '\n';
   return exit_code_for(fit.status);
 }
 
