@@ -13,6 +13,7 @@
 #include "cli/argument_parsing.hpp"
 #include "cli/data_dir.hpp"
 #include "commands/linkage_report.hpp"
+#include "numlab/mechanisms/linkage/linkage_authoring_checks.hpp"
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
 #include "numlab/nonlinear/jacobian_check.hpp"
 #include "output/table.hpp"
@@ -113,12 +114,28 @@ Status overall_status(const LinkageSweep& sweep) {
   return sweep.branch_kept && sweep.closed_form_verified ? Status::converged : Status::no_progress;
 }
 
+// The authoring checks at the reference pose (docs/linkage-files.md, "Authoring checks"): each
+// warning as "FILE:LINE: text" on stderr, or with --strict the first one as bad input.
+std::vector<std::string> authoring_check_lines(const LinkageSolver& solver, bool strict) {
+  const LinkageModel& model = solver.model();
+  const std::string& file = model.description().file;
+  const auto warnings = authoring_warnings(model, polished_reference(model, solver.reference()));
+  if (strict && !warnings.empty()) throw LinkageFileError(file, warnings.front().place, warnings.front().text);
+  std::vector<std::string> lines;
+  for (const AuthoringWarning& warning : warnings) {
+    lines.push_back(warning_line(file, warning));
+    std::cerr << "numlab: warning: " << lines.back() << '\n';
+  }
+  return lines;
+}
+
 }  // namespace
 
 int run_linkage(const LinkageRun& run) {
   // 1. The description, the derived model (mobility and structure checked), and the solver with
   // its reference pose: each is bad input when it fails.
   const LinkageModel model(read_linkage_description(run.file));
+  check_driver_angles(model.description());
   if (run.explain) {
     print_explanation(std::cout, model, run.common.format);
     return exit_success;
@@ -129,6 +146,7 @@ int run_linkage(const LinkageRun& run) {
   if (run.common.tolerance) options.newton.residual_tolerance = *run.common.tolerance;
   if (run.common.max_iterations) options.newton.max_iterations = *run.common.max_iterations;
   const LinkageSolver solver(model, options);
+  std::vector<std::string> warnings = authoring_check_lines(solver, run.strict);
   const DegreeRange range = run.driver ? DegreeRange{*run.driver, *run.driver, 1.0}
                                        : parse_degree_range(run.sweep, "--sweep");
 
@@ -148,7 +166,7 @@ int run_linkage(const LinkageRun& run) {
                         (paused_seconds() - paused_before);
 
   // 3. The checks that read the sweep, the files, then the report.
-  LinkageReport report{model, solver, sweep, time_s, {}, std::nullopt, Status::converged};
+  LinkageReport report{model, solver, sweep, time_s, {}, std::nullopt, Status::converged, std::move(warnings)};
   report.derivatives = check_poses(solver, sweep);
   if (run.check_jacobian) report.jacobian = check_jacobians(model, sweep);
   report.status = overall_status(sweep);

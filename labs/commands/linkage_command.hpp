@@ -21,6 +21,7 @@ struct LinkageRun {
   bool explain = false;            // print the derived model and stop
   bool check_jacobian = false;     // compare J with finite differences at every solved pose
   bool arrows = false;             // --svg draws velocity arrows
+  bool strict = false;             // --strict: an authoring warning is bad input (exit 2)
   CommonOptions common;
   std::string svg, animate;        // already placed inside --out
 };

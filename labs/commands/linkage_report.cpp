@@ -250,6 +250,7 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
                              {"at_driver", r.jacobian->driver},
                              {"agrees", r.jacobian->worst.agrees}};
   }
+  out["warnings"] = r.warnings;
   out["time_s"] = r.time_s;
   if (trace != nullptr) out["trace"] = *trace;
   return out;

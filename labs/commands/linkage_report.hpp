@@ -6,6 +6,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "cli/cli_common.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
@@ -35,6 +36,7 @@ struct LinkageReport {
   DerivativeReport derivatives;
   std::optional<JacobianReport> jacobian;
   Status status = Status::converged;  // the sweep's, or no_progress when the branch flipped
+  std::vector<std::string> warnings{};  // the authoring checks' "FILE:LINE: text" lines
 };
 
 // The transmission-angle window: a dyad outside it transmits force poorly.

@@ -172,6 +172,9 @@ MechanismCommand::MechanismCommand(CLI::App& app) {
   command_->add_flag("--check-jacobian", check_jacobian_, "A description file: compare the exact Jacobian with "
                                                           "finite differences at every solved pose");
   command_->add_flag("--arrows", arrows_, "A description file: --svg draws each joint's velocity as an arrow");
+  command_->add_flag("--strict", strict_, "A description file: an authoring warning (a joint solved far from its "
+                                          "rough position, a link length or body shape that disagrees with it) "
+                                          "is an error");
   add_common_options(*command_, common_);
 }
 
@@ -190,7 +193,7 @@ int MechanismCommand::run() const {
                                 ": not jansen, jansen10, mustang, a shipped model (numlab models) or a file");
   }
   const bool from_file = !file.empty();
-  for (const auto* flag : {"--explain", "--check-jacobian", "--arrows"}) {
+  for (const auto* flag : {"--explain", "--check-jacobian", "--arrows", "--strict"}) {
     require_applies(given(*command_, flag), from_file, flag, "a linkage description file or shipped model");
   }
   require_applies(given(*command_, "--arrows"), svg_.empty() == false, "--arrows", "--svg FILE");
@@ -208,7 +211,7 @@ int MechanismCommand::run() const {
     throw std::invalid_argument("--beest-animated: the stride time must be a positive number of seconds");
   }
   if (explain_) {
-    for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian"}) {
+    for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--strict"}) {
       require_applies(given(*command_, flag), false, flag, "a solve, not --explain");
     }
     for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
@@ -242,6 +245,7 @@ int MechanismCommand::run() const {
     run.linear_given = given(*command_, "--linear");
     run.check_jacobian = check_jacobian_;
     run.arrows = arrows_;
+    run.strict = strict_;
     run.common = common;
     run.svg = svg;
     run.animate = animate;

@@ -30,6 +30,7 @@ class MechanismCommand {
   bool explain_ = false;
   bool check_jacobian_ = false;
   bool arrows_ = false;
+  bool strict_ = false;
 };
 
 struct SweepRange {

@@ -26,7 +26,7 @@ std::string four_bar(const std::vector<std::pair<std::string, std::string>>& cha
   std::string text =
       "[linkage]\nname = \"four-bar\"\n\n"
       "[ground]\nO = [0.0, 0.0]\nQ = [4.0, 0.0]\n\n"
-      "[joints]\nA = [0.87, 0.5]\nB = [4.9, 2.8]\n\n"
+      "[joints]\nA = [0.87, 0.5]\nB = [3.4, 2.9]\n\n"
       "[[link]]\njoints = [\"O\", \"A\"]\nlength = 1.0\n\n"
       "[[link]]\njoints = [\"A\", \"B\"]\nlength = 3.5\n\n"
       "[[link]]\njoints = [\"Q\", \"B\"]\nlength = 3.0\n\n"
@@ -46,7 +46,7 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
       {"lk-four-bar.toml", four_bar()},
       {"lk-syntax.toml", four_bar({{"length = 3.5", "length = = 3.5"}})},
       {"lk-unknown-joint.toml", four_bar({{"[\"Q\", \"B\"]", "[\"Q\", \"X\"]"}})},
-      {"lk-duplicate-joint.toml", four_bar({{"B = [4.9, 2.8]", "B = [4.9, 2.8]\nO = [1.0, 1.0]"}})},
+      {"lk-duplicate-joint.toml", four_bar({{"B = [3.4, 2.9]", "B = [3.4, 2.9]\nO = [1.0, 1.0]"}})},
       {"lk-self-link.toml", four_bar({{"[\"A\", \"B\"]", "[\"A\", \"A\"]"}})},
       {"lk-zero-length.toml", four_bar({{"length = 3.5", "length = 0.0"}})},
       {"lk-negative-length.toml", four_bar({{"length = 3.5", "length = -3.5"}})},
@@ -54,11 +54,19 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
       {"lk-inf-length.toml", four_bar({{"length = 3.5", "length = inf"}})},
       {"lk-body-two-joints.toml", four_bar() + "\n[[body]]\njoints = [\"A\", \"B\"]\nlocal = [[0.0, 0.0], [3.5, 0.0]]\n"},
       {"lk-body-collinear.toml",
-       four_bar({{"B = [4.9, 2.8]", "B = [4.9, 2.8]\nC = [2.0, 2.0]"}}) + body + "local = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]]\n"},
+       four_bar({{"B = [3.4, 2.9]", "B = [3.4, 2.9]\nC = [2.0, 2.0]"}}) + body + "local = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]]\n"},
       {"lk-driver-not-ground.toml", four_bar({{"pivot = \"O\"", "pivot = \"B\""}})},
       {"lk-not-assembling.toml", four_bar({{"length = 3.5", "length = 0.05"}})},  // A-B + B-Q < |AQ| at 30 deg
       {"lk-mobility-2.toml", four_bar({{"[[link]]\njoints = [\"Q\", \"B\"]\nlength = 3.0\n", ""}})},
       {"lk-over-constrained.toml", four_bar() + "\n[[link]]\njoints = [\"O\", \"B\"]\nlength = 3.6\n"},
+      // The authoring checks (docs/linkage-files.md): valid files that do not say what they mean.
+      {"lk-warn-length.toml", four_bar({{"length = 3.5", "length = 3.0"}})},
+      {"lk-crank-radians.toml", four_bar({{"angle = 30.0", "angle = 0.5236"}})},
+      {"lk-redundant.toml", four_bar({{"B = [3.4, 2.9]", "B = [3.4, 2.9]\nC = [1.43, 2.44]"}}) + body +
+                                "local = [[0.0, 0.0], [3.5, 0.0], [1.75, 1.0]]\n"},
+      {"lk-mirrored-body.toml", four_bar({{"B = [3.4, 2.9]", "B = [3.4, 2.9]\nC = [1.43, 2.44]"},
+                                          {"[[link]]\njoints = [\"A\", \"B\"]\nlength = 3.5\n", ""}}) +
+                                    body + "local = [[0.0, 0.0], [3.5, 0.0], [1.75, -1.0]]\n"},
       {"lk-not-a-linkage.toml", "[table]\nkey = 1\n"},
       {"lk-empty.toml", ""},
   };

@@ -591,7 +591,11 @@ class Reader {
       }
     }
     spec.through = point_of(required(slider, "through", "[[slider]]"), "a slider's 'through' point");
-    if (const toml::node* angle = slider.get("angle")) spec.angle_deg = number_of(*angle, "a slider's angle");
+    spec.angle_place = spec.place;
+    if (const toml::node* angle = slider.get("angle")) {
+      spec.angle_deg = number_of(*angle, "a slider's angle");
+      spec.angle_place = place_of(*angle);
+    }
     description_.sliders.push_back(spec);
   }
 
@@ -629,7 +633,9 @@ class Reader {
       fail(place_of(joint_node), "the crank's joint " + joint_name(spec.joint) + " is on no [[link]] or [[body]] with pivot " +
                                      joint_name(spec.pivot));
     }
-    spec.reference = number_of(required(driver, "angle", "[driver]"), "the crank's angle");
+    const toml::node& angle_node = required(driver, "angle", "[driver]");
+    spec.reference = number_of(angle_node, "the crank's angle");
+    spec.reference_place = place_of(angle_node);
   }
 
   // Is there a link or a body with both joints?
@@ -654,7 +660,9 @@ class Reader {
       fail(place_of(joint_node), "joint " + joint_name(spec.joint) + " has no [[slider]] for the slider driver to move");
     }
     spec.slider = static_cast<int>(slider - sliders.begin());
-    spec.reference = number_of(required(driver, "travel", "[driver]"), "the slider's travel");
+    const toml::node& travel_node = required(driver, "travel", "[driver]");
+    spec.reference = number_of(travel_node, "the slider's travel");
+    spec.reference_place = place_of(travel_node);
   }
 
   const toml::table& root_;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <set>
 
@@ -131,6 +133,74 @@ SourcePlace first_place(const LinkageModel& model, const std::set<int>& rows, co
   return {};
 }
 
+std::size_t matched_count(const Matching& m) {
+  return static_cast<std::size_t>(std::count_if(m.column_of.begin(), m.column_of.end(), [](int c) { return c >= 0; }));
+}
+
+bool same_place(SourcePlace a, SourcePlace b) { return a.line == b.line && a.column == b.column; }
+
+// The pattern without the rows of the item at `place` (a body gives several constraints, all at
+// its place).
+Pattern without_item(const LinkageModel& model, const Pattern& pattern, SourcePlace place) {
+  Pattern out = pattern;
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    if (!same_place(model.constraints()[k].place, place)) continue;
+    out.middleRows(model.first_row(static_cast<int>(k)), model.constraints()[k].rows()).setConstant(false);
+  }
+  return out;
+}
+
+// The numerical rank of J at the rough positions without the rows of the item at `place` (J's rows
+// are dimensionless gradients, so the threshold does not depend on the file's unit).
+int rank_without_item(const LinkageModel& model, const Eigen::MatrixXd& jacobian, SourcePlace place) {
+  Eigen::MatrixXd J = jacobian;
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    if (same_place(model.constraints()[k].place, place)) {
+      J.middleRows(model.first_row(static_cast<int>(k)), model.constraints()[k].rows()).setZero();
+    }
+  }
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J);
+  qr.setThreshold(1e-9);
+  return static_cast<int>(qr.rank());
+}
+
+// Of the items with rows in the over-constrained part (`rows`), the one the others do not need:
+// without it the matching is as large and, at the rough positions, J's rank too (a link beside a
+// body that already holds its two joints: not the rocker that makes the body's pair redundant).
+// The last such item in the file; -1 when no single item is.
+int redundant_item(const LinkageModel& model, const Pattern& pattern, std::size_t matched, const std::set<int>& rows) {
+  Eigen::MatrixXd J;
+  model.jacobian(model.unknowns(model.rough_positions()), model.driver_from_user(model.description().driver.reference), J);
+  const int rank = rank_without_item(model, J, SourcePlace{-1, -1});
+  int found = -1;
+  bool found_keeps_rank = false;
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    const Constraint& c = model.constraints()[k];
+    const int first = model.first_row(static_cast<int>(k));
+    if (rows.lower_bound(first) == rows.lower_bound(first + c.rows())) continue;  // no row of it in the part
+    if (matched_count(maximum_matching(without_item(model, pattern, c.place))) != matched) continue;
+    const bool keeps_rank = rank_without_item(model, J, c.place) == rank;
+    if (found < 0 || keeps_rank > found_keeps_rank ||
+        (keeps_rank == found_keeps_rank && c.place.line >= model.constraints()[static_cast<std::size_t>(found)].place.line)) {
+      found = static_cast<int>(k);
+      found_keeps_rank = keeps_rank;
+    }
+  }
+  return found;
+}
+
+// "link A-B is redundant: with it, joints A, B have 5 equations for 4 unknowns; ..." at the item's
+// place (a body is named as a whole: "body plate").
+StructuralProblem redundancy(const LinkageModel& model, int item, const std::set<int>& rows, const std::set<int>& columns,
+                             const std::string& count) {
+  const Constraint& c = model.constraints()[static_cast<std::size_t>(item)];
+  const std::string joints = who(model, rows, columns);
+  return {fmt::format("{} is redundant: with it, {} {} {}; the other items already hold them",
+                      c.name.substr(0, c.name.find(':')), joints, joints.find(',') == std::string::npos ? "has" : "have",
+                      count),
+          c.place};
+}
+
 }  // namespace
 
 StructuralProblem structural_problem(const LinkageModel& model) {
@@ -138,9 +208,15 @@ StructuralProblem structural_problem(const LinkageModel& model) {
   const Matching m = maximum_matching(pattern);
   std::set<int> rows, columns;
   reach_from_free(pattern, m.row_of, m.column_of, rows, columns);
-  if (columns.empty()) reach_from_free(pattern.transpose(), m.column_of, m.row_of, columns, rows);
+  const bool over = columns.empty();
+  if (over) reach_from_free(pattern.transpose(), m.column_of, m.row_of, columns, rows);
   if (rows.empty() && columns.empty()) return {};
   const std::string count = fmt::format("{} for {}", plural(rows.size(), "equation"), plural(columns.size(), "unknown"));
+  if (over && !columns.empty()) {
+    if (const int item = redundant_item(model, pattern, matched_count(m), rows); item >= 0) {
+      return redundancy(model, item, rows, columns, count);
+    }
+  }
   return {who(model, rows, columns) + ": " + count, first_place(model, rows, columns)};
 }
 

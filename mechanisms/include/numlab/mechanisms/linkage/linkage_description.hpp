@@ -48,6 +48,7 @@ struct SliderSpec {
   Eigen::Vector2d through = Eigen::Vector2d::Zero();
   double angle_deg = 0.0;
   SourcePlace place;
+  SourcePlace angle_place{};  // of `angle`; the slider's place when the file leaves it out
 };
 
 enum class DriverKind { crank, slider };
@@ -62,6 +63,7 @@ struct DriverSpec {
   int slider = -1;     // slider driver: index into LinkageDescription::sliders
   double reference = 0.0;  // the driver's value at the reference pose (degrees or length)
   SourcePlace place;
+  SourcePlace reference_place{};  // of `angle` (crank) or `travel` (slider)
 };
 
 struct LinkageDescription {
