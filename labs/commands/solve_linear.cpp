@@ -91,6 +91,17 @@ std::string warning_for(const DynamicResult& result, double condition_estimate) 
   return warning;
 }
 
+// Why Gauss-Seidel's sweeps stopped without a solution (no_progress): the numbers behind the status.
+std::string unsolved_warning(const LoadedSystem& system, const DynamicResult& result) {
+  const double b_norm = system.b.lpNorm<Eigen::Infinity>();
+  const double scale = system.A.cwiseAbs().rowwise().sum().maxCoeff() * result.x.lpNorm<Eigen::Infinity>() + b_norm;
+  return fmt::format(
+      "The sweeps settled (last step {:.3g}) on an x that does not solve A x = b: ||b - A x||_inf = {:.3g} "
+      "({:.3g} of ||b||_inf; backward error {:.3g}). On the normal equations the sweeps settle at a "
+      "least-squares solution: the system may be inconsistent (no x solves it). ",
+      result.step_norm, result.residual_norm, result.residual_norm / b_norm, result.residual_norm / scale);
+}
+
 std::string vector_text(const Eigen::VectorXd& x) {
   constexpr Eigen::Index shown = 8;
   std::string text;
@@ -122,6 +133,9 @@ SolveReport measure(const std::string& method, const LoadedSystem& system, const
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   const bool has_answer = result.x.allFinite();
   const double condition = linalg::condition_estimate(system.A);
+  const bool unsolved = method.starts_with("gauss-seidel") && result.status == Status::no_progress && has_answer;
+  std::string warning = (unsolved ? unsolved_warning(system, result) : "") + warning_for(result, condition);
+  while (!warning.empty() && warning.back() == ' ') warning.pop_back();
   return {method,
           system,
           result,
@@ -131,7 +145,7 @@ SolveReport measure(const std::string& method, const LoadedSystem& system, const
           has_answer ? linalg::relative_residual(system.A, system.b, result.x) : nan,
           has_answer && system.exact_solution ? linalg::forward_error(result.x, *system.exact_solution) : nan,
           condition,
-          warning_for(result, condition)};
+          warning};
 }
 
 nlohmann::ordered_json json_report(const SolveReport& report) {

@@ -122,6 +122,29 @@ TEST_CASE("Gauss-Seidel reports max_iterations, non_finite and singular", "[gaus
   CHECK(GaussSeidel<Eigen::Dynamic>().solve(swap, Eigen::Vector2d(1, 2)).status == Status::converged);
 }
 
+// The normal equations' sweeps settle at a least-squares solution whether or not A x = b has one:
+// on x1 + x2 = 1, x1 + x2 = 2 they settle at once (x = (1.5, 0)), and the update test passes.
+TEST_CASE("Gauss-Seidel that settles on a least-squares solution of an inconsistent system is not converged",
+          "[gauss-seidel][honesty]") {
+  Eigen::MatrixXd A(2, 2);
+  A << 1, 1, 1, 1;
+  const auto inconsistent = GaussSeidel<Eigen::Dynamic>().solve(A, Eigen::Vector2d(1, 2));
+  CHECK(inconsistent.status == Status::no_progress);
+  CHECK(inconsistent.step_norm <= 1e-9);                       // the update test passed ...
+  CHECK(inconsistent.residual_norm == Approx(0.5).margin(1e-12));  // ... but ||b - A x||_inf is half of ||b||
+  CHECK(std::abs(inconsistent.x.sum() - 1.5) <= 1e-12);        // the least-squares line x1 + x2 = 1.5
+  // The same singular A with a consistent b: the sweeps settle on one of its solutions, converged.
+  const auto consistent = GaussSeidel<Eigen::Dynamic>().solve(A, Eigen::Vector2d(2, 2));
+  CHECK(consistent.status == Status::converged);
+  CHECK(consistent.residual_norm <= 1e-12);
+  // Plain sweeps on the inconsistent system never settle: x2 grows by 1 a sweep.
+  const auto plain = GaussSeidel<Eigen::Dynamic>(plain_options()).solve(A, Eigen::Vector2d(1, 2));
+  CHECK(plain.status != Status::converged);
+  // A slightly inconsistent b (backward error below sqrt(tol)) is a solution of a nearby system.
+  const auto nearly = GaussSeidel<Eigen::Dynamic>().solve(A, Eigen::Vector2d(1, 1 + 1e-7));
+  CHECK(nearly.status == Status::converged);
+}
+
 TEST_CASE("Fixed-size Gauss-Seidel agrees with the dynamic-size one", "[gauss-seidel][fixed]") {
   const GeneratedSystem system = generate_system("diag-dominant", 8, 3);
   GaussSeidelOptions options;

@@ -18,6 +18,14 @@
 // update does not mean a small residual, and a small absolute update says nothing about a small dx.
 // The residual reported is that of the ORIGINAL system, ||b - A x||_inf, never only of M x = c.
 //
+// The update test alone does not say x solves A x = b: on an inconsistent system (no exact
+// solution) the normal equations' sweeps settle at a least-squares solution, whose residual is not
+// small. So when the update test passes, x is `converged` only if its normwise backward error
+//   ||b - A x||_inf / (||A||_inf ||x||_inf + ||b||_inf) <= sqrt(max(tolerance, eps))
+// (x then solves a system that near A x = b; the square root leaves room for the error a slowly
+// converging iteration still carries when its update passes); otherwise Status::no_progress: the
+// iterates stopped moving without reaching a solution. (With rtol the stop test is the residual.)
+//
 // Other endings: Status::diverged when the update has grown by divergence_factor over the first
 // sweep's, Status::non_finite when an infinity or NaN appears, Status::max_iterations at the limit,
 // Status::singular when some m_ii = 0 (the sweep cannot divide by it).
@@ -94,6 +102,8 @@ class GaussSeidel {
     original_matrix_ = A;
     original_rhs_ = b;
     rhs_norm_ = b.template lpNorm<Eigen::Infinity>();
+    matrix_norm_ = 0.0;
+    for (Eigen::Index i = 0; i < A.rows(); ++i) matrix_norm_ = std::max(matrix_norm_, A.row(i).cwiseAbs().sum());
     if (options_.system == GaussSeidelOptions::System::normal_equations) {
       swept_matrix_.noalias() = A.transpose() * A;
       swept_rhs_.noalias() = A.transpose() * b;
@@ -133,7 +143,7 @@ class GaussSeidel {
     if (!x_.allFinite() || !std::isfinite(step_norm_)) {
       finish(Status::non_finite);
     } else if (small_enough()) {
-      finish(Status::converged);
+      finish(solves_original_system() ? Status::converged : Status::no_progress);
     } else if (step_norm_ > options_.divergence_factor * std::max(first_step_norm_, options_.tolerance)) {
       finish(Status::diverged);
     } else if (sweep_ >= options_.max_iterations) {
@@ -195,6 +205,13 @@ class GaussSeidel {
     return step_norm_ <= options_.tolerance * std::max(1.0, x_.template lpNorm<Eigen::Infinity>());
   }
 
+  // Whether x, settled by the update test, solves A x = b: the backward-error test above.
+  bool solves_original_system() const {
+    if (options_.relative_residual_tolerance > 0.0) return true;  // the stop test was the residual
+    const double allowed = std::sqrt(std::max(options_.tolerance, std::numeric_limits<double>::epsilon()));
+    return residual_norm() <= allowed * (matrix_norm_ * x_.template lpNorm<Eigen::Infinity>() + rhs_norm_);
+  }
+
   void finish(Status status) {
     status_ = status;
     running_ = false;
@@ -206,6 +223,7 @@ class GaussSeidel {
   MatrixType original_matrix_ = zero_or_empty<MatrixType>();
   VectorType original_rhs_ = zero_or_empty<VectorType>();
   double rhs_norm_ = 0.0;  // ||b||_inf
+  double matrix_norm_ = 0.0;  // ||A||_inf
   WorkMatrix swept_matrix_ = zero_or_empty<WorkMatrix>();  // M: A^T A or A
   VectorType swept_rhs_ = zero_or_empty<VectorType>();     // c: A^T b or b
   VectorType x_ = zero_or_empty<VectorType>();
