@@ -1,6 +1,7 @@
 // polyfit: the student's least-squares polynomial fit, against GSL's gsl_multifit_linear and NIST's
 // certified coefficients, to the accuracy the data's conditioning allows.
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -75,6 +76,36 @@ std::string fit_hint(const Eigen::VectorXd& got, const FitCase& fit, const Accur
          "normal equations square kappa";
 }
 
+// The words a polyfit reply's status may be: "converged" (with coefficients; the same as no status)
+// and "singular" (the fit is not determined). Any other word is a failure, never a pass.
+const std::vector<std::string> status_words = {"converged", "singular"};
+
+std::string listed_status_words() {
+  std::string listed;
+  for (const std::string& word : status_words) listed += (listed.empty() ? "\"" : ", \"") + word + "\"";
+  return listed;
+}
+
+bool known_status_word(const std::string& word) {
+  return std::find(status_words.begin(), status_words.end(), word) != status_words.end();
+}
+
+// "" or the sentence saying that `status` is not one of polyfit's status words.
+std::string unknown_status_note(const std::optional<std::string>& status) {
+  if (!status || known_status_word(*status)) return "";
+  return fmt::format("; \"{}\" is not a status word of polyfit (the words: {})", *status, listed_status_words());
+}
+
+// A determined fit's reply gives coefficients, with no status or "converged"; else a failed Verdict.
+std::optional<Verdict> wrong_status(const nlohmann::json& reply, const FitCase& fit) {
+  const auto status = optional_status(reply);
+  if (!status || *status == "converged") return std::nullopt;
+  return Verdict::fail(fmt::format("{} (degree {}, {} points): the reply gives status \"{}\"{}; this fit is "
+                                   "determined, so expected coefficients with status \"converged\" (or no status)",
+                                   fit.name, fit.degree, fit.x.size(), *status, unknown_status_note(status)),
+                       "reply \"singular\" only when fewer distinct x than degree + 1 leave the fit undetermined");
+}
+
 // The coefficients of a reply, or a failed Verdict for a wrong count (a wrong degree is the
 // student's mistake, not a broken reply).
 std::optional<Verdict> wrong_count(const nlohmann::json& reply, const FitCase& fit) {
@@ -90,6 +121,7 @@ std::optional<Verdict> wrong_count(const nlohmann::json& reply, const FitCase& f
 Verdict check_fits(Session& session, const std::vector<FitCase>& cases) {
   for (const FitCase& fit : cases) {
     const nlohmann::json reply = session.ask(request_for(fit));
+    if (auto verdict = wrong_status(reply, fit)) return *verdict;
     if (auto verdict = wrong_count(reply, fit)) return *verdict;
     const Eigen::VectorXd got = vector_field(reply, "coefficients", fit.degree + 1);
     const Accuracy a = accuracy_of(fit);
@@ -151,12 +183,12 @@ Verdict undetermined(Session& session) {
     const std::size_t distinct = std::set<double>(xs.begin(), xs.end()).size();
     const nlohmann::json reply = session.ask({{"x", to_json(x)}, {"y", to_json(y)}, {"degree", degree}});
     const auto status = optional_status(reply);
-    if (!status || *status == "converged") {
-      return Verdict::fail(fmt::format("{} points with {} distinct x, degree {}: the reply gives status \"{}\"; {} "
+    if (status != "singular") {
+      return Verdict::fail(fmt::format("{} points with {} distinct x, degree {}: the reply gives status \"{}\"{}; {} "
                                        "coefficients are not determined by {} distinct x (V has rank {}); expected a "
-                                       "status such as \"singular\"",
-                                       xs.size(), distinct, degree, status.value_or("(none)"), degree + 1, distinct,
-                                       distinct),
+                                       "status saying so: \"singular\"",
+                                       xs.size(), distinct, degree, status.value_or("(none)"),
+                                       unknown_status_note(status), degree + 1, distinct, distinct),
                            "check the rank of V (or the count of distinct x) before solving; a least-squares solver "
                            "returns some answer even when infinitely many fit equally well");
     }
@@ -178,6 +210,7 @@ that minimises sum_i (y_i - p(x_i))^2.
 - **Request:** `x`, `y` (lists of the same length m), `degree` D.
 - **Reply:** `coefficients` (D + 1 numbers, **lowest power first**: b0, b1, ..., bD); or, when the
   fit is not determined (fewer distinct x than D + 1), `status: "singular"` and no coefficients.
+  A `status`, when given, is `"converged"` (with the coefficients) or `"singular"`: any other word fails.
 
 The least-squares problem is min |V b - y| with the Vandermonde matrix V (row i: 1, x_i, ...,
 x_i^D). Solve it stably: QR or SVD of V with each column scaled to unit length, then divide b_k by

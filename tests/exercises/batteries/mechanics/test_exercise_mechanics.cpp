@@ -82,6 +82,31 @@ TEST_CASE("polyfit: powers reversed are caught by the small fits") {
   }, "Small fits", "powers reversed");
 }
 
+TEST_CASE("polyfit: only the status words pass the undetermined fits; others are named as not status words") {
+  for (const std::string word : {"ok", "", "passed", "Singular", "converged"}) {
+    INFO("status \"" << word << "\"");
+    require_caught("polyfit", [word](const nlohmann::json& request) {
+      nlohmann::json reply = polyfit_reference::solve(request);
+      if (reply.contains("status")) reply = {{"status", word}};
+      return reply;
+    }, "fewer distinct x", "expected a status saying so: \"singular\"");
+    if (word == "converged") continue;
+    require_caught("polyfit", [word](const nlohmann::json& request) {
+      nlohmann::json reply = polyfit_reference::solve(request);
+      if (reply.contains("status")) reply = {{"status", word}};
+      return reply;
+    }, "fewer distinct x", "is not a status word of polyfit (the words: \"converged\", \"singular\")");
+  }
+}
+
+TEST_CASE("polyfit: a status other than \"converged\" on a determined fit fails, even with coefficients") {
+  require_caught("polyfit", [](const nlohmann::json& request) {
+    nlohmann::json reply = polyfit_reference::solve(request);
+    reply["status"] = reply.contains("coefficients") ? "ok" : "singular";
+    return reply;
+  }, "Small fits", "the reply gives status \"ok\"; \"ok\" is not a status word of polyfit");
+}
+
 TEST_CASE("jansen-jacobian: a mistyped length (69.1 for l6 = 61.9) is named by its entry") {
   require_caught("jansen-jacobian", [](const nlohmann::json& request) {
     nlohmann::json reply = jansen_jacobian_reference::solve(request);
