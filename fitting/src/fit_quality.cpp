@@ -8,17 +8,33 @@
 
 namespace numlab::fitting {
 
+namespace {
+
+// A power of two near max |y| (1 when every y is 0): dividing by it is exact, and leaves values
+// whose squares do not overflow even when y is near the largest doubles.
+double scale_of(const Eigen::VectorXd& y) {
+  const double largest = y.cwiseAbs().maxCoeff();
+  return largest > 0.0 && std::isfinite(largest) ? std::ldexp(1.0, std::ilogb(largest)) : 1.0;
+}
+
+}  // namespace
+
+// The sums are of y / s and r / s (s = scale_of(y)): with y = 1e300 the squares of y and r would
+// overflow to inf, and R^2 = 1 - inf / inf would be NaN. The scaling is by a power of two, so for
+// ordinary data the statistics are the same to the last bit.
 FitStatistics fit_statistics(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const Eigen::VectorXd& coefficients) {
   const Eigen::Index n = x.size();
   const Eigen::Index parameters = coefficients.size();
-  double rss = 0.0;
+  const double s = scale_of(y);
+  double rss = 0.0;  // of r / s
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double r = y(i) - evaluate_polynomial(coefficients, x(i));
+    const double r = y(i) / s - evaluate_polynomial(coefficients, x(i)) / s;
     rss += r * r;
   }
-  const double tss = (y.array() - y.mean()).square().sum();
+  const Eigen::ArrayXd scaled = y.array() / s;
+  const double tss = (scaled - scaled.mean()).square().sum();  // of y / s
   FitStatistics statistics;
-  statistics.residual_sd = n > parameters ? std::sqrt(rss / static_cast<double>(n - parameters)) : 0.0;
+  statistics.residual_sd = n > parameters ? s * std::sqrt(rss / static_cast<double>(n - parameters)) : 0.0;
   statistics.r_squared = tss > 0.0 ? 1.0 - rss / tss : std::numeric_limits<double>::quiet_NaN();
   return statistics;
 }

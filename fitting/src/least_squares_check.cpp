@@ -42,8 +42,10 @@ LeastSquaresCheck check_least_squares(const Eigen::VectorXd& x, const Eigen::Vec
     g_power = g_power.cwiseProduct(g);
   }
   check.orthogonal = check.worst_ratio <= 1.0;
-  // RSS <= TSS up to rounding: R^2 >= 0 less a few eps per point (NaN: every y equal).
-  check.r_squared_in_range = std::isnan(r_squared) || (r_squared >= -gamma && r_squared <= 1.0 + gamma);
+  // RSS <= TSS up to rounding: R^2 >= 0 less a few eps per point. NaN only when every y is equal
+  // (TSS = 0, R^2 undefined); a NaN from anything else is a failure, not an undefined statistic.
+  const bool all_y_equal = y.size() > 0 && (y.array() == y(0)).all();
+  check.r_squared_in_range = std::isnan(r_squared) ? all_y_equal : (r_squared >= -gamma && r_squared <= 1.0 + gamma);
   return check;
 }
 

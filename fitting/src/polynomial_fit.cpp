@@ -78,6 +78,25 @@ std::string failure_warning(const linalg::LinearResult<Eigen::Dynamic>& result) 
   }
 }
 
+// The first entry of the normal equations [V^T V | V^T y] that overflowed (a power sum of large
+// values to a high power), with its numbers; empty when every entry is finite. `variable`: x or t.
+std::string overflow_in(const NormalEquations& system, const char* variable) {
+  const Eigen::MatrixXd& M = system.matrix;
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    for (Eigen::Index j = 0; j < M.cols(); ++j) {
+      if (std::isfinite(M(i, j))) continue;
+      return message("The normal equations overflow: entry (", i + 1, ", ", j + 1, ") of V^T V, the sum of ", variable,
+                     "^", i + j, " over the points, is ", M(i, j), ", so there are no coefficients.");
+    }
+  }
+  for (Eigen::Index i = 0; i < system.rhs.size(); ++i) {
+    if (std::isfinite(system.rhs(i))) continue;
+    return message("The normal equations overflow: entry ", i + 1, " of V^T y, the sum of ", variable, "^", i,
+                   " y over the points, is ", system.rhs(i), ", so there are no coefficients.");
+  }
+  return "";
+}
+
 bool is_normal_equations(FitMethod method) {
   return method == FitMethod::normal || method == FitMethod::normal_scaled;
 }
@@ -187,14 +206,21 @@ void PolynomialFitter::solve_system() {
     return;
   }
 
-  const linalg::LinearResult<Eigen::Dynamic> solved = solve_normal_equations(system_, options_);
   const bool scaled = options_.method == FitMethod::normal_scaled;
-  fit_.status = solved.status;
-  fit_.iterations = solved.iterations;
-  fit_.condition_estimate = equilibrated_condition(system_.matrix);
-  fit_.condition_unscaled = linalg::condition_estimate(system_.matrix);
   fit_.condition_of = scaled ? "normal matrix of the scaled variable t" : "normal matrix V^T V";
   fit_.condition_measure = "kappa_1 estimate, rows and columns scaled to a unit diagonal";
+  const bool matrix_finite = system_.matrix.allFinite();
+  fit_.condition_estimate = matrix_finite ? equilibrated_condition(system_.matrix) : std::numeric_limits<double>::infinity();
+  fit_.condition_unscaled = matrix_finite ? linalg::condition_estimate(system_.matrix) : fit_.condition_estimate;
+  // Overflowed sums are the method's failure on this data, not bad input: a status and the numbers.
+  if (const std::string overflow = overflow_in(system_, scaled ? "t" : "x"); !overflow.empty()) {
+    fit_.status = Status::non_finite;
+    fit_.warning = overflow;
+    return;  // no coefficients
+  }
+  const linalg::LinearResult<Eigen::Dynamic> solved = solve_normal_equations(system_, options_);
+  fit_.status = solved.status;
+  fit_.iterations = solved.iterations;
   const std::string failure = failure_warning(solved);
   coefficients_ = solved.x;
   if (solved.status == Status::singular || solved.status == Status::non_finite || !solved.x.allFinite()) {

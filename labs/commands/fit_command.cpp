@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 
 #include "output/fit_charts.hpp"
@@ -129,7 +130,8 @@ void print_text(std::ostream& out, const FitRun& run) {
     out << "no coefficients.\n";
     return;
   }
-  out << fmt::format("residual sd {:.6g}; R^2 {:.9g}\n", fit.residual_sd, fit.r_squared);
+  const std::string r_squared = std::isnan(fit.r_squared) ? "undefined (every y is equal)" : fmt::format("{:.9g}", fit.r_squared);
+  out << fmt::format("residual sd {:.6g}; R^2 {}\n", fit.residual_sd, r_squared);
   out << (fit.warning.empty() ? "coefficients, increasing powers of x:\n"
                               : "coefficients, increasing powers of x (NOT to be trusted, see the warning):\n");
   coefficient_table(run).print(out);

@@ -222,3 +222,35 @@ TEST_CASE("a fit whose coefficients in powers of x are beyond the doubles is not
   CHECK(tame.r_squared >= 0.0);
   CHECK(tame.r_squared <= 1.0);
 }
+
+// y near the largest doubles: the squares in RSS and TSS overflow unless the sums are scaled, and
+// R^2 = 1 - inf / inf was NaN, passed off as a statistic of a converged fit.
+TEST_CASE("R^2 and the residual sd of data near 1e300 are finite and right", "[fitting][honesty]") {
+  Eigen::VectorXd x(4), y(4);
+  x << 0, 1, 2, 3;
+  y << 1e300, -1e300, 1e300, -1e300;
+  const PolynomialFit line = fit_with(x, y, FitMethod::normal_scaled, 1);
+  CHECK(line.status == numlab::Status::converged);
+  // The same data in units of 1e300: the statistics scale exactly (R^2 not at all).
+  const PolynomialFit unit = fit_with(x, y / 1e300, FitMethod::normal_scaled, 1);
+  REQUIRE(std::isfinite(line.r_squared));
+  CHECK(line.r_squared == Approx(unit.r_squared).epsilon(1e-12));
+  CHECK(line.residual_sd == Approx(unit.residual_sd * 1e300).epsilon(1e-12));
+  // Every y equal: R^2 is undefined (NaN), and that is not a failure of the fit.
+  const PolynomialFit flat = fit_with(x, Eigen::VectorXd::Constant(4, 2.0), FitMethod::normal_scaled, 1);
+  CHECK(flat.status == numlab::Status::converged);
+  CHECK(std::isnan(flat.r_squared));
+}
+
+// Power sums of x up to 999 to the power 2 * 60 overflow: the fit's failure, not bad input.
+TEST_CASE("Normal equations that overflow give status non_finite and the entry, not an exception", "[fitting][failure]") {
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(1000, 0.0, 999.0);
+  const PolynomialFit fit = fit_with(x, x.array().sqrt().matrix(), FitMethod::normal, 60);
+  CHECK(fit.status == numlab::Status::non_finite);
+  CHECK(fit.coefficients.size() == 0);
+  CHECK_THAT(fit.warning, Catch::Contains("The normal equations overflow: entry ("));
+  CHECK_THAT(fit.warning, Catch::Contains("is inf"));
+  // Scaled to t in [-1, 1] the sums stay finite: no overflow to report.
+  const PolynomialFit scaled = fit_with(x, x.array().sqrt().matrix(), FitMethod::normal_scaled, 60);
+  CHECK_THAT(scaled.warning, !Catch::Contains("overflow"));
+}
