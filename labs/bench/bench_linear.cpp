@@ -7,11 +7,13 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "bench/progress_line.hpp"
 #include "bench/bench_basins.hpp"
 #include "bench/bench_fit.hpp"
 #include "bench/bench_jansen.hpp"
+#include "bench/bench_linkage_scaling.hpp"
 #include "bench/bench_mustang.hpp"
 #include "bench/bench_robustness.hpp"
 #include "output/chart.hpp"
@@ -167,6 +169,11 @@ int BenchCommand::run() const {
   require_applies(given(*command_, "--chart"), what_ == "all" || what_ == "linear" || what_ == "fit", "--chart",
                   "bench all, bench linear and bench fit");
   require_applies(given(*command_, "--sizes"), what_ == "linear", "--sizes", "bench linear");
+  // Newton stops on ||f||_inf <= --tol: at 0 rounding never lets it stop, so there is nothing to time.
+  if (common.tolerance && *common.tolerance == 0.0) {
+    throw std::invalid_argument("--tol 0: bench " + what_ +
+                                " times Newton to a residual tolerance, which must be above 0 (e.g. --tol 1e-10)");
+  }
   const std::string chart = output_path(common, chart_);
   if (what_ == "all") return run_bench_all(common, chart, quick_);
   if (what_ == "jansen") return run_jansen(common);

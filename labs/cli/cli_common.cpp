@@ -66,6 +66,29 @@ std::string names_honouring(bool CommonFlagUse::*flag) {
 
 double paused_total_s = 0.0;
 
+// "" when a file can be made in `folder`, else why not (strerror). Tried, not guessed from the mode
+// bits: root ignores them, and a read-only file system or /proc refuses root too. The probe file is
+// removed at once.
+std::string cannot_make_files_in(const fs::path& folder) {
+  std::string probe = (folder / ".numlab-write-probe-XXXXXX").string();
+  const int descriptor = mkstemp(probe.data());
+  if (descriptor < 0) return std::strerror(errno);
+  ::close(descriptor);
+  ::unlink(probe.c_str());
+  return "";
+}
+
+// The folder a file at `path` would be written into, or the nearest of its parents that exists
+// (the folders between are made then).
+fs::path nearest_existing_folder(const fs::path& path) {
+  std::error_code error;
+  fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  while (!fs::exists(folder, error) && folder.has_parent_path() && folder.parent_path() != folder) {
+    folder = folder.parent_path();
+  }
+  return folder;
+}
+
 }  // namespace
 
 CLI::Validator finite_non_negative() { return CLI::Validator(tolerance_problem, "T>=0"); }
@@ -205,6 +228,8 @@ void ensure_directory(const std::string& path) {
   if (path.empty()) throw std::invalid_argument("an output folder needs a name");
   fs::create_directories(path, error);
   if (error || !fs::is_directory(path)) throw std::invalid_argument("cannot create output folder '" + path + "'");
+  const std::string refused = cannot_make_files_in(path);
+  if (!refused.empty()) throw std::invalid_argument("the output folder '" + path + "' takes no new files (" + refused + ")");
 }
 
 void write_file_atomically(const std::string& path, const std::string& contents) {
@@ -255,6 +280,13 @@ void check_outputs(const std::vector<PlannedFile>& outputs, const std::vector<st
     for (const std::string& input : inputs) {
       if (fs::exists(path, error) && fs::equivalent(path, input, error)) {
         throw std::invalid_argument(named + " is the input file '" + input + "'; numlab does not overwrite its input");
+      }
+    }
+    const fs::path folder = nearest_existing_folder(path);
+    if (fs::is_directory(folder, error)) {
+      const std::string refused = cannot_make_files_in(folder);
+      if (!refused.empty()) {
+        throw std::invalid_argument(named + ": the folder '" + folder.string() + "' takes no new files (" + refused + ")");
       }
     }
     const fs::path canonical = fs::weakly_canonical(fs::absolute(path), error);

@@ -87,7 +87,8 @@ int report_stopped(const CommonOptions& options, nlohmann::ordered_json partial,
 // A number for JSON output, or null when it is NaN or infinite (JSON has no such numbers).
 nlohmann::ordered_json number_or_null(double value);
 
-// Creates the output folder (and parents); throws std::invalid_argument naming it on failure.
+// Creates the output folder (and parents) and tries making a file in it; throws
+// std::invalid_argument naming it on failure (so a read-only folder is refused before any work).
 void ensure_directory(const std::string& path);
 
 // Writes a file whole or not at all: to a unique temporary in the same folder, then renamed into
@@ -99,8 +100,9 @@ void write_file_atomically(const std::string& path, const std::string& contents)
 std::string output_path(const CommonOptions& options, const std::string& path);
 
 // Checks, before any work, every file a command will write (`flag` names who asked for it):
-// not empty, not an existing folder, not the same file as an input, not twice among the outputs.
-// Throws std::invalid_argument naming the first conflict.
+// not empty, not an existing folder, in a folder that accepts files (the nearest existing one is
+// tried), not the same file as an input, not twice among the outputs. Throws
+// std::invalid_argument naming the first conflict.
 struct PlannedFile {
   std::string path;
   std::string flag;

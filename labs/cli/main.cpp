@@ -2,10 +2,14 @@
 // Exit codes: 0 the method succeeded, 1 it ran but did not succeed, 2 bad usage or bad input.
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <iostream>
+#include <regex>
 #include <string>
 #include <stdexcept>
+#include <vector>
 
 #include "bench/bench_linear.hpp"
 #include "cli/cli_common.hpp"
@@ -51,6 +55,85 @@ std::string shorten_long_words(const std::string& text, std::size_t max_word = 8
   return shortened;
 }
 
+// The deepest sub-command given (solve linear: linear), or the program itself.
+const CLI::App& deepest_command(const CLI::App& app) {
+  const CLI::App* command = &app;
+  while (!command->get_subcommands().empty()) command = command->get_subcommands().front();
+  return *command;
+}
+
+// "numlab solve linear": the program and the sub-commands given.
+std::string command_words(const CLI::App& app) {
+  std::string words;
+  for (const CLI::App* command = &deepest_command(app); command != nullptr; command = command->get_parent()) {
+    words = (command->get_parent() == nullptr ? std::string("numlab") : command->get_name()) +
+            (words.empty() ? "" : " ") + words;
+  }
+  return words;
+}
+
+// "a whole number" or "a number", as the option `name` of the deepest command expects.
+std::string kind_of_number(const CLI::App& app, const std::string& name) {
+  const CLI::Option* option = deepest_command(app).get_option_no_throw(name);
+  const std::string type = option != nullptr ? option->get_type_name() : "";
+  if (type.starts_with("UINT")) return "a whole number >= 0";
+  return type.starts_with("INT") ? "a whole number" : "a number";
+}
+
+std::string quoted_words(const std::vector<std::string>& words) {
+  std::string listed;
+  for (const std::string& word : words) listed += (listed.empty() ? "'" : ", '") + word + "'";
+  return listed;
+}
+
+// "{a,b,c}" -> "a, b, c"
+std::string listed_set(std::string set) {
+  if (set.size() >= 2 && set.front() == '{' && set.back() == '}') set = set.substr(1, set.size() - 2);
+  std::string listed;
+  for (const char c : set) listed += c == ',' ? std::string(", ") : std::string(1, c);
+  return listed;
+}
+
+// A CLI11 parse error in numlab's words. CLI11's own phrasing ("At Most 1 required but received 2",
+// "1 required TEXT:{...} missing", "The following arguments were not expected: json --format", which
+// lists the words in reverse) is replaced case by case; a message numlab's validators wrote passes.
+std::string parse_error_in_own_words(const CLI::ParseError& error, const CLI::App& app) {
+  const std::string text = error.what();
+  const std::string command = command_words(app);
+  std::smatch part;
+  if (dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr) {
+    const std::vector<std::string> extra = app.remaining(true);
+    const bool flag_first = !extra.empty() && extra.front().starts_with('-') && command == "numlab";
+    return fmt::format("unexpected {} {} for {} ({} --help lists what it takes{})",
+                       extra.size() == 1 ? "argument" : "arguments", quoted_words(extra), command, command,
+                       flag_first ? "; flags go after the command they are for" : "");
+  }
+  if (std::regex_match(text, part, std::regex("(\\S+): At Most 1 required but received (\\d+)"))) {
+    return fmt::format("{} is given {} times; give it once", part[1].str(), part[2].str());
+  }
+  if (std::regex_match(text, part, std::regex("(\\S+): \\d+ required .* missing"))) {
+    return fmt::format("{} needs a value ({} --help says which)", part[1].str(), command);
+  }
+  if (std::regex_match(text, part, std::regex("(\\S+): Value (.*) not in range (\\S+) to (\\S+)"))) {
+    return fmt::format("{} must be a whole number from {} to {}, got '{}'", part[1].str(), part[3].str(), part[4].str(),
+                       part[2].str());
+  }
+  if (std::regex_match(text, part, std::regex("(\\S+): (.*) not in (\\{.*\\})"))) {
+    const std::string who = part[1].str().starts_with('-') ? part[1].str() : command + ":";  // a flag, or a word
+    return fmt::format("{} '{}' is not one of: {}", who, part[2].str(), listed_set(part[3].str()));
+  }
+  if (std::regex_match(text, part, std::regex("([^-\\s]\\S*) is required"))) {
+    return fmt::format("{} needs its {} argument ({} --help)", command, part[1].str(), command);
+  }
+  if (std::regex_match(text, part, std::regex("Could not convert: (\\S+) = (.*)"))) {
+    return fmt::format("{} must be {}, got '{}'", part[1].str(), kind_of_number(app, part[1].str()), part[2].str());
+  }
+  if (std::regex_match(text, part, std::regex("(\\S+) excludes (\\S+)"))) {
+    return fmt::format("{} excludes {}: give one of them, not both", part[1].str(), part[2].str());
+  }
+  return text;
+}
+
 // Bad input: one short line on stderr, whatever bytes the message quotes from outside.
 int bad_input(const std::string& message) {
   std::cerr << "numlab: error: " << shorten_long_words(numlab::printable(message)) << '\n';
@@ -82,7 +165,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
-    return bad_input(error.what());
+    return bad_input(parse_error_in_own_words(error, app));
   }
 
   try {

@@ -31,11 +31,17 @@ std::string timeout_problem(const std::string& text) {
   return fmt::format("must be a number of seconds above 0 and at most {:g}, got '{}'", max_timeout_seconds, text);
 }
 
+// "mydir/" and "mydir//" name the folder "mydir" (whose parent is ".", not "mydir"); "/" stays "/".
+fs::path without_trailing_slashes(std::string folder) {
+  while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
+  return folder;
+}
+
 // The starter's files go into `folder`: a new folder is made whole (written beside it, then
 // renamed into place); in an existing folder no file is overwritten.
 void write_starter(const std::string& folder, const std::vector<exercises::StarterFile>& files) {
   if (folder.empty()) throw std::invalid_argument("exercise init: the folder name is empty");
-  const fs::path target(folder);
+  const fs::path target = without_trailing_slashes(folder);
   std::error_code error;
   const bool exists = fs::exists(target, error);
   if (exists && !fs::is_directory(target, error)) {
@@ -136,7 +142,9 @@ int ExerciseCommand::init() const {
   const auto files = exercises::starter_files(exercise, language);
   // 2. The files, whole or not at all.
   write_starter(folder_, files);
-  std::cout << fmt::format("Wrote the {} starter for '{}' in {}/:\n", language_, exercise.name, folder_);
+  const std::string folder = without_trailing_slashes(folder_).string();
+  std::cout << fmt::format("Wrote the {} starter for '{}' in {}{}:\n", language_, exercise.name, folder,
+                           folder.ends_with('/') ? "" : "/");
   for (const auto& file : files) std::cout << "  " << file.path << '\n';
   std::cout << "Read TASK.md; it ends with the command that checks your solution.\n";
   return exit_success;

@@ -432,7 +432,8 @@ class Reader {
     if (const toml::node* title_node = linkage.get("title")) {
       const std::string_view title = string_of(*title_node, "the linkage's title");
       if (title.size() > max_title) fail(place_of(*title_node), "title longer than " + std::to_string(max_title) + " bytes");
-      if (std::any_of(title.begin(), title.end(), [](char c) { return (c >= 0 && c < 0x20) || c == 0x7F; })) {
+      // printable() escapes C0 and C1 controls, DEL, the bidi controls (overrides, isolates), invisible marks.
+      if (printable(title) != title) {
         fail(place_of(*title_node), "title has a control character: " + quoted(title));
       }
       description_.title = title;
