@@ -5,6 +5,7 @@
 #include <charconv>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <cmath>
 #include <thread>
 
 #include "basins/basin_chart.hpp"
@@ -72,6 +73,9 @@ std::pair<double, double> parse_slice_range(const std::string& text, const std::
     throw std::invalid_argument(option + " '" + shown + "': " + error.what());
   }
   if (!(low < high)) throw std::invalid_argument(option + " '" + shown + "': MIN must be below MAX");
+  if (!std::isfinite(high - low)) {
+    throw std::invalid_argument(option + " '" + shown + "': the width MAX - MIN overflows the doubles");
+  }
   return {low, high};
 }
 

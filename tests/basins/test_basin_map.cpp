@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <stdexcept>
 
 #include "basins/basin_run.hpp"
 #include "basins/basin_systems.hpp"
@@ -196,4 +197,32 @@ TEST_CASE("Bad slices and requests are refused, naming the problem", "[basins][i
   r.u_min = 1.0;
   r.u_max = -1.0;
   CHECK_THROWS_WITH(run_basins(r), Catch::Contains("min < max"));
+}
+
+TEST_CASE("A range whose width overflows is refused before any worker starts", "[basins][input]") {
+  BasinRequest r = request("fractal", 10, 3);
+  r.u_min = -1e308;
+  r.u_max = 1e308;  // each finite, but u_max - u_min = inf: every start would be inf
+  CHECK_THROWS_WITH(run_basins(r), Catch::Contains("finite width"));
+  r = request("jansen", 10, 3);
+  r.v_min = -1e308;
+  r.v_max = 1e308;
+  CHECK_THROWS_WITH(run_basins(r), Catch::Contains("finite width"));
+}
+
+TEST_CASE("An exception in a worker thread reaches the caller, whatever the thread count", "[basins][threads]") {
+  nonlinear::BasinSlice slice;
+  slice.columns = slice.rows = 9;
+  // The classifier throws for the roots of one mode, met by starts in several rows, so in the
+  // workers as well as in the calling thread.
+  const auto classify = [](const Vector<2>& z) {
+    if (z(1) > 0.5) throw std::runtime_error("classifier failed");
+    return CubeRoots::mode_of(z);
+  };
+  for (const int threads : {1, 2, 4}) {
+    INFO(threads << " threads");
+    CHECK_THROWS_WITH(nonlinear::basin_map(CubeRoots{}, Vector<2>(0.0, 0.0), slice, nonlinear::NewtonOptions{}, classify,
+                                           threads),
+                      "classifier failed");
+  }
 }

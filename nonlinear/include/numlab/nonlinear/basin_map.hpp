@@ -16,7 +16,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
+#include <exception>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -59,9 +62,10 @@ inline void check_slice(const BasinSlice& slice, int unknowns) {
       slice.axis_u == slice.axis_v) {
     throw std::invalid_argument("a basin slice needs two different unknowns of the " + std::to_string(unknowns));
   }
-  const auto increasing = [](double low, double high) { return std::isfinite(low) && std::isfinite(high) && low < high; };
+  // The width too: u_max - u_min must not overflow (-1e308:1e308), or every start would be inf.
+  const auto increasing = [](double low, double high) { return std::isfinite(high - low) && low < high; };
   if (!increasing(slice.u_min, slice.u_max) || !increasing(slice.v_min, slice.v_max)) {
-    throw std::invalid_argument("a basin slice's ranges must be finite with min < max");
+    throw std::invalid_argument("a basin slice's ranges must be finite with min < max and a finite width");
   }
 }
 
@@ -93,18 +97,35 @@ BasinMap basin_map(const S& system, const Vector<S::size>& base, const BasinSlic
   Newton<S> checked(system, options);  // bad options throw here, not inside a worker thread
   BasinMap map{slice, std::vector<BasinPoint>(static_cast<std::size_t>(slice.columns) * slice.rows)};
   std::atomic<int> next_row{0};
+  // An exception never leaves a worker (it would end the program): the first one is kept, the
+  // other workers stop taking rows, and it is rethrown here once every worker has been joined.
+  std::exception_ptr failure;
+  std::mutex failure_lock;
   const auto work = [&] {
-    Newton<S> newton(system, options);  // this worker's own Newton and vectors
-    for (int j = next_row++; j < slice.rows; j = next_row++) {
-      for (int i = 0; i < slice.columns; ++i) {
-        map.points[static_cast<std::size_t>(j) * slice.columns + i] = basin_point(newton, base, slice, i, j, classify);
+    try {
+      Newton<S> newton(system, options);  // this worker's own Newton and vectors
+      for (int j = next_row++; j < slice.rows; j = next_row++) {
+        for (int i = 0; i < slice.columns; ++i) {
+          map.points[static_cast<std::size_t>(j) * slice.columns + i] = basin_point(newton, base, slice, i, j, classify);
+        }
       }
+    } catch (...) {
+      next_row = slice.rows;
+      const std::lock_guard<std::mutex> hold(failure_lock);
+      if (!failure) failure = std::current_exception();
     }
   };
   std::vector<std::thread> workers;
-  for (int t = 1; t < std::min(threads, slice.rows); ++t) workers.emplace_back(work);
+  try {
+    for (int t = 1; t < std::min(threads, slice.rows); ++t) workers.emplace_back(work);
+  } catch (...) {  // a thread that cannot start: stop and join the ones that did
+    next_row = slice.rows;
+    for (std::thread& worker : workers) worker.join();
+    throw;
+  }
   work();  // this thread is a worker too
   for (std::thread& worker : workers) worker.join();
+  if (failure) std::rethrow_exception(failure);
   return map;
 }
 
