@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -40,6 +41,13 @@ std::string four_bar(const std::vector<std::pair<std::string, std::string>>& cha
 }
 
 // Linkage description files (issue 17's bad-input list), each named for what is wrong with it.
+// A key or table header of 200,000 parts, "a.a.a...": toml++ overflowed its stack on them.
+std::string deeply_nested(const std::string& first, const std::string& last) {
+  std::string text = first;
+  for (int k = 1; k < 200'000; ++k) text += ".a";
+  return text + last;
+}
+
 std::vector<std::pair<std::string, std::string>> linkage_inputs() {
   const std::string body = "\n[[body]]\nname = \"plate\"\njoints = [\"A\", \"B\", \"C\"]\n";
   return {
@@ -69,7 +77,20 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
                                     body + "local = [[0.0, 0.0], [3.5, 0.0], [1.75, -1.0]]\n"},
       {"lk-not-a-linkage.toml", "[table]\nkey = 1\n"},
       {"lk-empty.toml", ""},
+      {"lk-deep-key.toml", deeply_nested("a", " = 1\n")},
+      {"lk-deep-header.toml", deeply_nested("[a", "]\n")},
+      // Titles with a C1 control (U+009B, a CSI), a direction override (U+202E), an isolate (U+2066).
+      {"lk-title-c1.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ntitle = \"a\xc2\x9b" "2Jb\""}})},
+      {"lk-title-bidi.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ntitle = \"a\xe2\x80\xae" "cba\""}})},
+      {"lk-title-isolate.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ntitle = \"a\xe2\x81\xa6" "b\""}})},
   };
+}
+
+// x = 0, 1, ..., 999 and y = sqrt(x): power sums of x to high powers overflow.
+std::string wide_x_csv() {
+  std::string text = "x,y\n";
+  for (int i = 0; i < 1000; ++i) text += std::to_string(i) + "," + std::to_string(std::sqrt(i)) + "\n";
+  return text;
 }
 
 std::vector<std::pair<std::string, std::string>> text_inputs() {
@@ -93,6 +114,7 @@ std::vector<std::pair<std::string, std::string>> text_inputs() {
       {"huge.txt", "1e300 0\n0 1e300\n"},
       {"tiny.txt", "1e-320 0\n0 1e-320\n"},
       {"singular.txt", "1 2\n2 4\n"},
+      {"inconsistent.txt", "1 1 1\n1 1 2\n"},  // [A | b]: x1 + x2 = 1 and x1 + x2 = 2
       {"nonsquare.txt", "1 2 3\n4 5 6\n7 8 9\n10 11 12\n"},
       {"ragged.txt", "1 2\n3\n"},
       {"empty.txt", ""},
@@ -110,6 +132,8 @@ std::vector<std::pair<std::string, std::string>> text_inputs() {
       {"nocols.csv", "a,b\n1,2\n3,4\n"},
       {"header.csv", "x,y\n"},
       {"samex.csv", "x,y\n1,1\n1,2\n1,3\n"},
+      {"hugey.csv", "x,y\n0,1e300\n1,-1e300\n2,1e300\n3,-1e300\n"},
+      {"widex.csv", wide_x_csv()},
       {"bigx.csv", "x,y\n1e200,2.1\n2e200,2.9\n3e200,4.2\n4e200,4.8\n5e200,6.1\n6e200,7.0\n7e200,7.9\n"},
       // Not a NIST file, though named like one.
       {"noheader.dat", "hello\n"},
