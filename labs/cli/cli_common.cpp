@@ -16,6 +16,8 @@
 #include <filesystem>
 #include <iostream>
 
+#include "numlab/printable_text.hpp"
+
 namespace numlab::cli {
 
 namespace {
@@ -112,8 +114,10 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
       ->check(CLI::Validator(
           [](std::string& text) {
             if (text.empty()) return std::string("must name a folder, got an empty name");
-            const bool odd = std::any_of(text.begin(), text.end(), [](unsigned char c) { return c == '\'' || c < 0x20 || c == 0x7f; });
-            return odd ? "'" + text + "': a folder name without quotes or control characters, please" : std::string();
+            // printable() escapes control bytes (C0, DEL, C1), bidi controls and invisible marks.
+            const bool odd = text.find('\'') != std::string::npos || printable(text) != text;
+            return odd ? "'" + text + "': a folder name without quotes, control or invisible characters, please"
+                       : std::string();
           },
           "DIR"));
 }

@@ -6,9 +6,10 @@
 
 #include <algorithm>
 #include <iostream>
-#include <regex>
+#include <optional>
 #include <string>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "bench/bench_linear.hpp"
@@ -94,13 +95,53 @@ std::string listed_set(std::string set) {
   return listed;
 }
 
+// `text` split at the first `marker` (before, after), or nothing when it has none. (Not std::regex:
+// its matcher recurses per character, and a 100 kB argument overflows the stack.)
+std::optional<std::pair<std::string, std::string>> split_at(const std::string& text, const std::string& marker) {
+  const std::size_t at = text.find(marker);
+  if (at == std::string::npos) return std::nullopt;
+  return std::pair{text.substr(0, at), text.substr(at + marker.size())};
+}
+
+// CLI11's validators: "NAME: Value V not in range A to B" (CLI::Range), "NAME: V not in {a,b}"
+// (CLI::IsMember); numlab's own validators' messages pass as they are.
+std::string validation_in_own_words(const std::string& text, const std::string& command) {
+  const auto named = split_at(text, ": ");
+  if (!named) return text;
+  const auto& [name, rest] = *named;
+  if (const auto range = split_at(rest, " not in range "); range && range->first.starts_with("Value ")) {
+    const auto bounds = split_at(range->second, " to ");
+    if (bounds) {
+      return fmt::format("{} must be a whole number from {} to {}, got '{}'", name, bounds->first, bounds->second,
+                         range->first.substr(6));
+    }
+  }
+  const std::size_t set = rest.rfind(" not in {");
+  if (set != std::string::npos && rest.ends_with('}')) {
+    const std::string who = name.starts_with('-') ? name : command + ":";  // a flag, or a positional word
+    return fmt::format("{} '{}' is not one of: {}", who, rest.substr(0, set), listed_set(rest.substr(set + 8)));
+  }
+  return text;
+}
+
+// CLI11's counts: "NAME: At Most 1 required but received 2", "NAME: 1 required TYPE missing".
+std::string mismatch_in_own_words(const std::string& text, const std::string& command) {
+  if (const auto most = split_at(text, ": At Most 1 required but received ")) {
+    return fmt::format("{} is given {} times; give it once", most->first, most->second);
+  }
+  if (const auto named = split_at(text, ": "); named && named->second.find(" required ") != std::string::npos &&
+                                               named->second.ends_with(" missing")) {
+    return fmt::format("{} needs a value ({} --help says which)", named->first, command);
+  }
+  return text;
+}
+
 // A CLI11 parse error in numlab's words. CLI11's own phrasing ("At Most 1 required but received 2",
 // "1 required TEXT:{...} missing", "The following arguments were not expected: json --format", which
 // lists the words in reverse) is replaced case by case; a message numlab's validators wrote passes.
 std::string parse_error_in_own_words(const CLI::ParseError& error, const CLI::App& app) {
   const std::string text = error.what();
   const std::string command = command_words(app);
-  std::smatch part;
   if (dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr) {
     const std::vector<std::string> extra = app.remaining(true);
     const bool flag_first = !extra.empty() && extra.front().starts_with('-') && command == "numlab";
@@ -108,28 +149,20 @@ std::string parse_error_in_own_words(const CLI::ParseError& error, const CLI::Ap
                        extra.size() == 1 ? "argument" : "arguments", quoted_words(extra), command, command,
                        flag_first ? "; flags go after the command they are for" : "");
   }
-  if (std::regex_match(text, part, std::regex("(\\S+): At Most 1 required but received (\\d+)"))) {
-    return fmt::format("{} is given {} times; give it once", part[1].str(), part[2].str());
+  if (dynamic_cast<const CLI::ValidationError*>(&error) != nullptr) return validation_in_own_words(text, command);
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) != nullptr) return mismatch_in_own_words(text, command);
+  if (dynamic_cast<const CLI::ConversionError*>(&error) != nullptr) {
+    if (const auto converted = split_at(text, "Could not convert: ")) {
+      if (const auto value = split_at(converted->second, " = ")) {
+        return fmt::format("{} must be {}, got '{}'", value->first, kind_of_number(app, value->first), value->second);
+      }
+    }
   }
-  if (std::regex_match(text, part, std::regex("(\\S+): \\d+ required .* missing"))) {
-    return fmt::format("{} needs a value ({} --help says which)", part[1].str(), command);
-  }
-  if (std::regex_match(text, part, std::regex("(\\S+): Value (.*) not in range (\\S+) to (\\S+)"))) {
-    return fmt::format("{} must be a whole number from {} to {}, got '{}'", part[1].str(), part[3].str(), part[4].str(),
-                       part[2].str());
-  }
-  if (std::regex_match(text, part, std::regex("(\\S+): (.*) not in (\\{.*\\})"))) {
-    const std::string who = part[1].str().starts_with('-') ? part[1].str() : command + ":";  // a flag, or a word
-    return fmt::format("{} '{}' is not one of: {}", who, part[2].str(), listed_set(part[3].str()));
-  }
-  if (std::regex_match(text, part, std::regex("([^-\\s]\\S*) is required"))) {
-    return fmt::format("{} needs its {} argument ({} --help)", command, part[1].str(), command);
-  }
-  if (std::regex_match(text, part, std::regex("Could not convert: (\\S+) = (.*)"))) {
-    return fmt::format("{} must be {}, got '{}'", part[1].str(), kind_of_number(app, part[1].str()), part[2].str());
-  }
-  if (std::regex_match(text, part, std::regex("(\\S+) excludes (\\S+)"))) {
-    return fmt::format("{} excludes {}: give one of them, not both", part[1].str(), part[2].str());
+  if (dynamic_cast<const CLI::ExcludesError*>(&error) != nullptr) return text + ": give one of them, not both";
+  if (dynamic_cast<const CLI::RequiredError*>(&error) != nullptr && !text.starts_with("-")) {
+    if (const auto word = split_at(text, " is required"); word && word->second.empty()) {
+      return fmt::format("{} needs its {} argument ({} --help)", command, word->first, command);
+    }
   }
   return text;
 }
