@@ -1,5 +1,7 @@
 #include "exercises/child_process.hpp"
 
+#include "exercises/descendants.hpp"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
@@ -179,6 +181,7 @@ ChildProcess::ChildProcess(const std::string& program, const std::vector<std::st
     status_ = child_status;
     throw StartError(start_failure_reason(failure));
   }
+  register_running_program(pid_);
   stdin_ = in.release(1);
   stdout_ = out.release(0);
   stderr_ = err.release(0);
@@ -311,12 +314,15 @@ int ChildProcess::stop(Clock::duration grace, CappedText& errors) {
   while (waitpid(pid_, &leader_status, 0) < 0 && errno == EINTR) {
   }
   status_ = leader_status;
+  unregister_running_program(pid_);
   // Group members whose parents died came to numlab (a child subreaper, see ChildSession).
   for (;;) {
     if (waitpid(-pid_, nullptr, 0) > 0) continue;
     if (errno == EINTR) continue;
     break;
   }
+  // So did those that left the group (setsid) or were double-forked: numlab's other children.
+  end_adopted_children(true);
   // What the program wrote before it ended; bounded in case something outside the group holds
   // the pipe open and keeps writing.
   for (int round = 0; round < 64 && (stderr_ >= 0 || stdout_ >= 0); ++round) drain(0, errors);

@@ -71,8 +71,9 @@ class ChildProcess {
   bool wait_for_exit(Clock::time_point deadline, CappedText& errors);
 
   // Closes the child's stdin, gives it until `grace` to exit, then kills its whole process group
-  // and reaps it (and the group members that were reparented to numlab). Returns the leader's
-  // waitpid status. Safe to call again.
+  // and reaps it, the group members that were reparented to numlab, and every other process that
+  // came to numlab (one that left the group with setsid or was double-forked: descendants.hpp).
+  // Returns the leader's waitpid status. Safe to call again.
   int stop(Clock::duration grace, CappedText& errors);
 
  private:

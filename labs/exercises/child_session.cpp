@@ -1,6 +1,9 @@
 #include "exercises/child_session.hpp"
 
+#include "exercises/descendants.hpp"
+
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -85,51 +88,70 @@ std::string make_temporary_directory() {
   return pattern;
 }
 
+void forget_running_directory();
+
 void remove_directory(std::string& directory) {
   if (directory.empty()) return;
+  forget_running_directory();
   std::error_code ignored;
   fs::remove_all(directory, ignored);
   directory.clear();
 }
 
 // ---------------------------------------------------------------------------------------------
-// numlab interrupted during a check: end the program's group first, then die as asked.
+// numlab interrupted during a check (SIGINT, SIGTERM, SIGHUP, SIGQUIT): end the program's group and
+// every process it left, remove its folder, then die as asked.
 
+constexpr int ending_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
 volatile std::sig_atomic_t running_group = 0;
-char running_directory[4096] = "";  // read only while running_group is set
-struct sigaction previous_interrupt {};
-struct sigaction previous_terminate {};
+volatile std::sig_atomic_t directory_known = 0;
+char running_directory[4096] = "";  // read only while directory_known is set
+struct sigaction previous_action[NSIG] {};
 
-extern "C" void end_group_and_reraise(int signal) {
+void remember_running_directory(const std::string& directory) {
+  directory_known = 0;
+  if (directory.size() >= sizeof running_directory) return;  // then removed only by the destructor
+  std::copy(directory.c_str(), directory.c_str() + directory.size() + 1, running_directory);
+  directory_known = 1;
+}
+
+void forget_running_directory() { directory_known = 0; }
+
+extern "C" void end_program_and_reraise(int signal) {
   const pid_t group = running_group;
-  if (group > 0) {
-    kill(-group, SIGKILL);
-    rmdir(running_directory);  // only when the program left it empty: removing files is not signal-safe
+  if (group > 0) kill(-group, SIGKILL);
+  end_adopted_children(false);
+  if (directory_known) remove_tree(running_directory);
+  directory_known = 0;
+  running_group = 0;
+  if (signal == SIGQUIT) {
+    const rlimit no_core{0, 0};
+    setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT's default dumps core: not into the user's folder
   }
-  sigaction(signal, signal == SIGINT ? &previous_interrupt : &previous_terminate, nullptr);
+  sigaction(signal, &previous_action[signal], nullptr);
   raise(signal);  // delivered with the previous disposition once this handler returns
 }
 
 void ignore_sigpipe_and_adopt_orphans() {
   static std::once_flag once;
-  std::call_once(once, [] {
-    // A write to a program that died is EPIPE, not the end of numlab.
-    std::signal(SIGPIPE, SIG_IGN);
-    // Group members whose parent dies come to numlab, so stopping a program reaps all of them.
-    prctl(PR_SET_CHILD_SUBREAPER, 1);
-  });
+  // A write to a program that died is EPIPE, not the end of numlab.
+  std::call_once(once, [] { std::signal(SIGPIPE, SIG_IGN); });
+  // Processes whose parent dies come to numlab, so stopping a program ends all of them. Set each
+  // time: a forked copy of numlab (a test's checker) does not inherit it.
+  prctl(PR_SET_CHILD_SUBREAPER, 1);
 }
 
 // Checked at every start, since others (a test framework) may have set their own handlers since.
 void end_group_on_interrupt() {
   struct sigaction action {};
-  action.sa_handler = end_group_and_reraise;
+  action.sa_handler = end_program_and_reraise;
   sigemptyset(&action.sa_mask);
-  for (auto [signal, previous] : {std::pair{SIGINT, &previous_interrupt}, std::pair{SIGTERM, &previous_terminate}}) {
+  for (const int signal : ending_signals) sigaddset(&action.sa_mask, signal);  // one cleanup at a time
+  for (const int signal : ending_signals) {
     struct sigaction current {};
     sigaction(signal, nullptr, &current);
-    if (current.sa_handler == end_group_and_reraise || current.sa_handler == SIG_IGN) continue;  // ignored stays so
-    *previous = current;
+    if (current.sa_handler == end_program_and_reraise || current.sa_handler == SIG_IGN) continue;  // ignored stays so
+    previous_action[signal] = current;
     sigaction(signal, &action, nullptr);
   }
 }
@@ -205,12 +227,9 @@ void ChildSession::start() {
   directory_ = make_temporary_directory();
   process_.reset();
   end_group_on_interrupt();
+  remember_running_directory(directory_);
   process_ = std::make_unique<ChildProcess>(command_[0], std::vector<std::string>(command_.begin() + 1, command_.end()),
                                             directory_);
-  if (directory_.size() < sizeof running_directory)
-    std::copy(directory_.c_str(), directory_.c_str() + directory_.size() + 1, running_directory);
-  else
-    running_directory[0] = '\0';
   running_group = process_->process_group();
 }
 
