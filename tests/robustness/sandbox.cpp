@@ -205,6 +205,9 @@ void prepare_inputs(const std::string& folder, const std::string& nist_dir) {
   fs::create_directory(fs::path(folder) / "adir");
   fs::create_directory(fs::path(folder) / "svgdir.svg");
   if (mkfifo((fs::path(folder) / "fifo").c_str(), 0600) != 0) throw std::runtime_error("mkfifo failed");
+  // 5. A lab's folder that exists but takes no files, even for root: closed/lab-gauss -> /proc/self.
+  fs::create_directory(fs::path(folder) / "closed");
+  fs::create_directory_symlink("/proc/self", fs::path(folder) / "closed" / "lab-gauss");
 }
 
 std::map<std::string, std::string> snapshot_tree(const std::string& folder) {
