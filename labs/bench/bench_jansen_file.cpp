@@ -23,6 +23,7 @@ std::vector<JansenBenchRow> bench_jansen_file(double tolerance, bool quick) {
   for (const std::string solver : {"full", "sequential", "analytic"}) {
     mechanisms::LinkageSolverOptions options{solver, "gepp", {}};
     options.newton.residual_tolerance = tolerance;
+    options.tolerance_relative_to_size = false;  // the hand-coded rows' absolute tolerance
     options.newton.max_iterations = 100;
     const mechanisms::LinkageSolver linkage(model, options);
     const auto cycle = [&] { return mechanisms::solve_linkage_cycle(linkage, start, start + 359.0, 1.0); };

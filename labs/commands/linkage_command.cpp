@@ -85,7 +85,10 @@ JacobianReport check_jacobians(const LinkageModel& model, const LinkageSweep& sw
   return report;
 }
 
-// The velocity and acceleration checks at up to eight converged poses spread over the sweep.
+// The velocity and acceleration checks at up to eight converged poses spread over the sweep; the
+// first pose whose kinematics disagree with differences of solved positions beyond the tolerance
+// is named (a pose on a crossing is not checked: J gives no velocity there, the sweep took its
+// kinematics from such differences already).
 DerivativeReport check_poses(const LinkageSolver& solver, const LinkageSweep& sweep) {
   DerivativeReport report;
   std::vector<const LinkagePose*> converged;
@@ -100,18 +103,31 @@ DerivativeReport check_poses(const LinkageSolver& solver, const LinkageSweep& sw
       ++report.unsolved;
       continue;
     }
+    if (check.singular) {
+      ++report.singular;
+      continue;
+    }
     ++report.poses;
-    report.velocity = std::max(report.velocity, check.velocity_difference / std::max(1.0, check.velocity_scale));
-    report.acceleration = std::max(report.acceleration, check.acceleration_difference / std::max(1.0, check.acceleration_scale));
+    const double velocity = check.velocity_relative(), acceleration = check.acceleration_relative();
+    report.velocity = std::max(report.velocity, velocity);
+    report.acceleration = std::max(report.acceleration, acceleration);
+    if (report.failure.empty() && !check.agrees()) {
+      report.failure = fmt::format("at {:g} the velocity and acceleration from J disagree with differences of solved "
+                                   "positions: {:.1e} and {:.1e} (relative; kappa(J) {:.3g} allows {:.1e} and {:.1e})",
+                                   pose.driver, velocity, acceleration, check.condition, check.velocity_allowed(),
+                                   check.acceleration_allowed());
+    }
   }
   return report;
 }
 
-// A sweep succeeds when every pose converged, on the reference branch, and (where the model has a
-// closed form) within the distance of it that its residual allows.
-Status overall_status(const LinkageSweep& sweep) {
+// A sweep succeeds when every pose converged, on the reference branch (crossings allowed, no
+// jump), within the distance of the closed form that its residual allows (where the model has
+// one), and with kinematics that agree with differences of its positions.
+Status overall_status(const LinkageSweep& sweep, const DerivativeReport& derivatives) {
   if (sweep.status != Status::converged) return sweep.status;
-  return sweep.branch_kept && sweep.closed_form_verified ? Status::converged : Status::no_progress;
+  return sweep.branch_kept && sweep.closed_form_verified && derivatives.failure.empty() ? Status::converged
+                                                                                        : Status::no_progress;
 }
 
 // The authoring checks at the reference pose (docs/linkage-files.md, "Authoring checks"): each
@@ -157,7 +173,8 @@ int run_linkage(const LinkageRun& run) {
   std::optional<LinkageSweep> swept;
   try {
     swept = linkage_sweep(solver, range.start, range.stop, range.step,
-                          run.common.trace ? LinkagePoseObserver(std::ref(tracer)) : LinkagePoseObserver());
+                          run.common.trace ? LinkagePoseObserver(std::ref(tracer)) : LinkagePoseObserver(),
+                          run.switch_at_crossing ? AtCrossing::switch_branch : AtCrossing::smooth);
   } catch (const StoppedByUser&) {
     return report_stopped(run.common, {{"mechanism", model.description().name}, {"solver", run.solver}}, tracer.rows());
   }
@@ -169,7 +186,7 @@ int run_linkage(const LinkageRun& run) {
   LinkageReport report{model, solver, sweep, time_s, {}, std::nullopt, Status::converged, std::move(warnings)};
   report.derivatives = check_poses(solver, sweep);
   if (run.check_jacobian) report.jacobian = check_jacobians(model, sweep);
-  report.status = overall_status(sweep);
+  report.status = overall_status(sweep, report.derivatives);
   const bool drawable = std::any_of(sweep.poses.begin(), sweep.poses.end(),
                                     [](const LinkagePose& p) { return p.outcome.status == Status::converged; });
   if (drawable) {

@@ -22,6 +22,7 @@ struct LinkageRun {
   bool check_jacobian = false;     // compare J with finite differences at every solved pose
   bool arrows = false;             // --svg draws velocity arrows
   bool strict = false;             // --strict: an authoring warning is bad input (exit 2)
+  bool switch_at_crossing = false; // --at-crossing switch: take the other branch where two cross
   CommonOptions common;
   std::string svg, animate;        // already placed inside --out
 };

@@ -232,6 +232,17 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
   out["worst_closed_form_bound"] = number(worst_closed_form(r.sweep).bound);
   out["flips"] = r.sweep.flips;
   out["change_points"] = r.sweep.change_points;
+  out["crossings"] = nlohmann::ordered_json::array();
+  for (const auto& c : r.sweep.crossings) {
+    const std::size_t b = static_cast<std::size_t>(c.block);
+    out["crossings"].push_back({{"kind", c.tangency ? "tangency" : "crossing"},
+                                {"driver", c.driver},
+                                {"block", describe_block(r.model, r.solver.blocks()[b])},
+                                {"side_before", c.side_before},
+                                {"side_after", c.side_after},
+                                {"followed", c.switched ? "other" : "smooth"}});
+  }
+  out["jumps"] = r.sweep.jumps;
   out["limits"] = nlohmann::ordered_json::array();
   for (const auto& limit : r.sweep.limits) {
     out["limits"].push_back({{"driver", limit.driver},
@@ -242,8 +253,11 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
                              {"text", limit_text(r, limit)}});
   }
   out["derivative_check"] = {{"poses", r.derivatives.poses},
+                             {"singular_poses", r.derivatives.singular},
                              {"velocity_relative", r.derivatives.velocity},
-                             {"acceleration_relative", r.derivatives.acceleration}};
+                             {"acceleration_relative", r.derivatives.acceleration},
+                             {"agrees", r.derivatives.failure.empty()},
+                             {"failure", r.derivatives.failure}};
   if (r.jacobian) {
     out["jacobian_check"] = {{"poses", r.jacobian->poses},
                              {"worst_relative_error", number(r.jacobian->worst.worst_error)},
@@ -286,10 +300,11 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
                    scientific(pose.outcome.residual_norm), std::string(to_string(pose.outcome.status))});
   }
   table.print(out);
-  out << fmt::format("branch             {}\n", r.sweep.branch_kept ? "kept (no block's signature changed but at a change point)"
+  out << fmt::format("branch             {}\n", r.sweep.branch_kept ? "kept (no block's side changed but at a crossing)"
                                                                       : "FLIPPED");
   for (const auto& flip : r.sweep.flips) out << "                   " << flip << '\n';
-  for (const auto& change : r.sweep.change_points) out << "change point       " << change << '\n';
+  for (const auto& jump : r.sweep.jumps) out << "                   " << jump << '\n';
+  for (const auto& change : r.sweep.change_points) out << "crossing           " << change << '\n';
   const ClosedFormWorst worst = worst_closed_form(r.sweep);
   if (!std::isnan(worst.distance)) {
     out << fmt::format("closed form        worst joint distance {:.2g} (the residual allows {:.2g}): {}\n", worst.distance,
@@ -305,8 +320,14 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
   if (std::isfinite(low)) out << fmt::format("kappa(J)           {:.3g} .. {:.3g} (largest at {:g})\n", low, high, at);
   for (std::size_t b : dyads(r.solver)) out << "transmission       " << transmission_summary(r, b) << '\n';
   out << fmt::format("derivatives        at {} pose{}, against finite differences of positions: velocity {:.1e}, "
-                     "acceleration {:.1e} (relative)\n",
-                     r.derivatives.poses, r.derivatives.poses == 1 ? "" : "s", r.derivatives.velocity, r.derivatives.acceleration);
+                     "acceleration {:.1e} (relative): {}\n",
+                     r.derivatives.poses, r.derivatives.poses == 1 ? "" : "s", r.derivatives.velocity, r.derivatives.acceleration,
+                     r.derivatives.failure.empty() ? "agree" : "DISAGREE " + r.derivatives.failure);
+  if (r.derivatives.singular > 0) {
+    out << fmt::format("                   {} pose{} on a crossing not checked: J is singular there, and their velocity "
+                       "and acceleration are differences of positions solved along the branch\n",
+                       r.derivatives.singular, r.derivatives.singular == 1 ? "" : "s");
+  }
   if (r.jacobian) {
     out << fmt::format("jacobian           exact J against finite differences at {} solved poses: worst relative error "
                        "{:.1e} at {:g}: {}\n",

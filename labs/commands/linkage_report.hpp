@@ -24,8 +24,10 @@ struct JacobianReport {
 // Velocities and accelerations against finite differences of positions at a few poses.
 struct DerivativeReport {
   int poses = 0, unsolved = 0;
-  double velocity = 0.0;       // worst |qdot - central difference| / max(1, |qdot|)
-  double acceleration = 0.0;   // worst |qddot - 7-point stencil| / max(1, |qddot|)
+  int singular = 0;            // poses on a crossing: not checked (their kinematics are differences already)
+  double velocity = 0.0;       // worst |qdot - central difference| / (|qdot| + size)
+  double acceleration = 0.0;   // worst |qddot - 7-point stencil| / (|qddot| + size)
+  std::string failure;         // the first pose beyond the tolerance, in words; empty when none
 };
 
 struct LinkageReport {

@@ -175,6 +175,9 @@ MechanismCommand::MechanismCommand(CLI::App& app) {
   command_->add_flag("--strict", strict_, "A description file: an authoring warning (a joint solved far from its "
                                           "rough position, a link length or body shape that disagrees with it) "
                                           "is an error");
+  command_->add_option("--at-crossing", at_crossing_, "A description file: where two assembly branches cross, "
+                                                      "follow the smooth one (default) or switch to the other")
+      ->check(CLI::IsMember({"smooth", "switch"}));
   add_common_options(*command_, common_);
 }
 
@@ -193,7 +196,7 @@ int MechanismCommand::run() const {
                                 ": not jansen, jansen10, mustang, a shipped model (numlab models) or a file");
   }
   const bool from_file = !file.empty();
-  for (const auto* flag : {"--explain", "--check-jacobian", "--arrows", "--strict"}) {
+  for (const auto* flag : {"--explain", "--check-jacobian", "--arrows", "--strict", "--at-crossing"}) {
     require_applies(given(*command_, flag), from_file, flag, "a linkage description file or shipped model");
   }
   require_applies(given(*command_, "--arrows"), svg_.empty() == false, "--arrows", "--svg FILE");
@@ -211,7 +214,8 @@ int MechanismCommand::run() const {
     throw std::invalid_argument("--beest-animated: the stride time must be a positive number of seconds");
   }
   if (explain_) {
-    for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--strict"}) {
+    for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--strict",
+                             "--at-crossing"}) {
       require_applies(given(*command_, flag), false, flag, "a solve, not --explain");
     }
     for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
@@ -246,6 +250,7 @@ int MechanismCommand::run() const {
     run.check_jacobian = check_jacobian_;
     run.arrows = arrows_;
     run.strict = strict_;
+    run.switch_at_crossing = at_crossing_ == "switch";
     run.common = common;
     run.svg = svg;
     run.animate = animate;

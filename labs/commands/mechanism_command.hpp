@@ -31,6 +31,7 @@ class MechanismCommand {
   bool check_jacobian_ = false;
   bool arrows_ = false;
   bool strict_ = false;
+  std::string at_crossing_ = "smooth";
 };
 
 struct SweepRange {

@@ -74,6 +74,7 @@ LinkageSolver make_solver(const LinkageModel& model, const std::string& solver) 
   LinkageSolverOptions options;
   options.solver = solver;
   options.newton.residual_tolerance = cycle_tolerance;
+  options.tolerance_relative_to_size = false;  // the seeds' models' absolute tolerance
   options.newton.max_iterations = 100;
   return LinkageSolver(model, options);
 }

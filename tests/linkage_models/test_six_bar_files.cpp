@@ -59,6 +59,7 @@ void check_solvers_agree(const LinkageModel& model, const std::vector<std::strin
   const double tolerance = residual_tolerance_for(1e-10, worst_inverse, model.unknown_count());
   LinkageSolverOptions options{solvers.front(), "gepp", {}};
   options.newton.residual_tolerance = tolerance;
+  options.tolerance_relative_to_size = false;  // derived from the conditioning, in length units
   options.newton.max_iterations = 50;
   const LinkageSweep reference = linkage_sweep(LinkageSolver(model, options), 0.0, 359.0, 1.0);
   REQUIRE(reference.status == Status::converged);

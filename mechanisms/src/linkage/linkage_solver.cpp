@@ -66,6 +66,16 @@ LinkageSolver::LinkageSolver(const LinkageModel& model, LinkageSolverOptions opt
       }
     }
   }
+  // The size tolerances are relative to: the longest link.
+  double longest = 0.0;
+  for (const Constraint& c : model_.constraints()) {
+    if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) longest = std::max(longest, c.length);
+  }
+  if (longest > 0.0 && std::isfinite(longest)) size_ = longest;
+  if (options_.tolerance_relative_to_size) {
+    options_.newton.residual_tolerance *= size_;
+    options_.tolerance_relative_to_size = false;  // applied: options() holds the absolute tolerance
+  }
   // The reference pose: damped Newton from the file's rough positions.
   reference_driver_ = model_.driver_from_user(model_.description().driver.reference);
   nonlinear::NewtonOptions newton = options_.newton;
@@ -244,7 +254,10 @@ bool detail::place_block(const LinkageModel& model, const LinkageBlock& block, d
     case BlockKind::circle_line: {  // 5. a circle meets a line: the point nearer the start's
       const auto [circle, line] = dyad_parts(model, block);
       const Eigen::Vector2d centre = at(centre_of(*circle, joint)), foot = foot_on_line(*line, centre);
-      const double half_chord_squared = circle->length * circle->length - (centre - foot).squaredNorm();
+      double half_chord_squared = circle->length * circle->length - (centre - foot).squaredNorm();
+      // A circle that touches the line gives zero less rounding: that is zero.
+      const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * (circle->length * circle->length + (centre - foot).squaredNorm());
+      if (half_chord_squared < 0.0 && half_chord_squared >= -rounding) half_chord_squared = 0.0;
       if (!(half_chord_squared >= 0.0)) return false;
       const Eigen::Vector2d along = std::sqrt(half_chord_squared) * line->direction;
       set_joint(model, q, joint, nearer(foot + along, foot - along, was));

@@ -1,6 +1,8 @@
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 
 #include "numlab/mechanisms/linkage/linkage_fast_solver.hpp"
+#include "branch_predictor.hpp"
+#include "linkage_crossings.hpp"
 
 #include <fmt/format.h>
 
@@ -33,11 +35,20 @@ Eigen::VectorXd predicted(const LinkageModel& model, double at, const Eigen::Vec
 }
 
 // The pose solves of a continuation: the fast path (linkage_fast_solver.hpp) where it applies, else
-// the generic solver; both predict and solve in place.
+// the generic solver; both solve in place. The prediction is the quadratic through the last solved
+// poses where there are three (branch_predictor.hpp: it carries the branch through singular poses),
+// else the first-order tangent; a solved pose further from the quadratic's prediction than its
+// error allows has jumped to another branch and is not accepted.
 class PoseSolver {
  public:
   PoseSolver(const LinkageSolver& solver, bool fast) : solver_(solver) {
     if (fast && LinkageFastSolver::applies(solver.options())) fast_.emplace(solver);
+    const Eigen::Index n = solver.model().unknown_count();
+    history_.reset(n);
+    prediction_.resize(n);
+    for (const Constraint& c : solver.model().constraints()) {
+      if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) length_ = std::max(length_, c.length);
+    }
   }
   const LinkageSolver& solver() const { return solver_; }
   LinkageFastOutcome solve(double t, Eigen::VectorXd& q) {
@@ -46,21 +57,72 @@ class PoseSolver {
     q = std::move(solution.q);
     return {solution.outcome, solution.failed_block};
   }
+  // Starts the history at (t, q) unless its newest pose is that one already.
+  void follow(double t, const Eigen::VectorXd& q) {
+    if (!history_.newest_at(t)) {
+      history_.clear();
+      history_.push(t, q);
+    }
+  }
+  void record(double t, const Eigen::VectorXd& q) { history_.push(t, q); }
+  // The history's poses, solved at `from`, re-labelled as at `to` (a crank a whole number of turns on).
+  void relabel(double from, double to) {
+    if (history_.newest_at(from)) history_.shift(to - from);
+  }
+  void forget() { history_.clear(); }
+  // Where the branch of the pose (t, q) is expected at s: the quadratic through the history when
+  // its newest pose is this one, else the tangent.
+  Eigen::VectorXd guess(double t, const Eigen::VectorXd& q, double s) {
+    Eigen::VectorXd g = q;
+    double error = 0.0, motion = 0.0;
+    if (history_.newest_at(t) && history_.predict(s, g, error, motion)) return g;
+    return predicted(solver_.model(), t, q, s);
+  }
+  // The start for a solve at `next`, from the pose q at `at`, in place.
   void predict(double at, Eigen::VectorXd& q, double next) {
+    line_error_ = -1.0;
+    if (history_.newest_at(at) && history_.predict(next, q, line_error_, motion_)) {
+      prediction_ = q;
+      return;
+    }
+    line_error_ = -1.0;  // the tangent: no error estimate, no jump test
     if (fast_) fast_->predict(at, q, next);
     else q = predicted(solver_.model(), at, q, next);
   }
+  // How far the solved q is from the quadratic's prediction, and how far it may be: eight times the
+  // line's error estimate plus a twentieth of the step's motion (two branches that cross part at a
+  // rate that differs by about their tangents' difference, a good part of the motion), and never
+  // less than a millionth of the longest link (branches that close are one to rounding in every
+  // figure the sweep reports).
+  double jump(const Eigen::VectorXd& q) const {
+    return line_error_ < 0.0 || q.size() == 0 ? 0.0 : (q - prediction_).lpNorm<Eigen::Infinity>();
+  }
+  double allowed_jump() const { return line_error_ < 0.0 ? 0.0 : 8.0 * line_error_ + 0.05 * motion_ + 1e-6 * length_; }
+  bool jumped(const Eigen::VectorXd& q) const { return line_error_ >= 0.0 && jump(q) > allowed_jump(); }
 
  private:
   const LinkageSolver& solver_;
   std::optional<LinkageFastSolver> fast_;
+  detail::BranchPredictor history_;
+  Eigen::VectorXd prediction_;
+  double line_error_ = -1.0;  // < 0: the last prediction was the tangent's
+  double motion_ = 0.0;
+  double length_ = 0.0;       // the longest link
+};
+
+// A pose that jumped from its prediction even at the shortest sub-step: what the sweep reports.
+struct Jump {
+  double distance = 0.0;
+  double allowed = 0.0;
 };
 
 // From q at driver `from` to driver `to` (model units) in steps no longer than `longest`, each
-// solve started from the predictor; a step that fails is halved. q becomes the last solution
-// (failed or not); `trial` is scratch of q's size.
+// solve started from the predictor; a step that fails, or lands on another branch, is halved. q
+// becomes the last solution (failed or not); `trial` is scratch of q's size. A solution that still
+// jumps at the last halving is returned with status no_progress, and `jump` (if given) says how far.
 LinkageFastOutcome continue_in_place(PoseSolver& poses, double from, double to, Eigen::VectorXd& q, Eigen::VectorXd& trial,
-                                     double longest, int* halvings = nullptr) {
+                                     double longest, int* halvings = nullptr, Jump* jump = nullptr) {
+  poses.follow(from, q);
   if (from == to) return poses.solve(to, q);  // measured, never assumed
   LinkageFastOutcome last;
   last.outcome.status = Status::converged;
@@ -69,19 +131,28 @@ LinkageFastOutcome continue_in_place(PoseSolver& poses, double from, double to, 
   int halved = 0;
   int iterations = 0;  // over every sub-step
   while (at != to) {
-    const double next = std::abs(to - at) <= std::abs(step) ? to : at + step;
+    // The last sub-step ends on `to` itself (a remainder of rounding is no sub-step of its own).
+    const double next = std::abs(to - at) <= std::abs(step) * (1.0 + 1e-9) ? to : at + step;
     trial = q;
     poses.predict(at, trial, next);
     LinkageFastOutcome outcome = poses.solve(next, trial);
     iterations += outcome.outcome.iterations;
-    if (outcome.outcome.status == Status::converged) {
+    const bool jumped = outcome.outcome.status == Status::converged && poses.jumped(trial);
+    if (outcome.outcome.status == Status::converged && !jumped) {
       q.swap(trial);
+      poses.record(next, q);
       last = outcome;
       at = next;
       continue;
     }
     if (halved == max_halvings) {
+      if (jumped) {
+        outcome.outcome.status = Status::no_progress;
+        outcome.outcome.reason = nonlinear::StopReason::no_progress;
+        if (jump != nullptr) *jump = {poses.jump(trial), poses.allowed_jump()};
+      }
       q.swap(trial);
+      poses.forget();
       outcome.outcome.iterations = iterations;
       return outcome;
     }
@@ -95,10 +166,10 @@ LinkageFastOutcome continue_in_place(PoseSolver& poses, double from, double to, 
 
 // The same, as a LinkageSolution.
 LinkageSolution continue_to(PoseSolver& poses, double from, double to, const Eigen::VectorXd& q, double longest,
-                            int* halvings = nullptr) {
+                            int* halvings = nullptr, Jump* jump = nullptr) {
   LinkageSolution solution{q, {}, -1};
   Eigen::VectorXd trial(q.size());
-  const LinkageFastOutcome outcome = continue_in_place(poses, from, to, solution.q, trial, longest, halvings);
+  const LinkageFastOutcome outcome = continue_in_place(poses, from, to, solution.q, trial, longest, halvings, jump);
   solution.outcome = outcome.outcome;
   solution.failed_block = outcome.failed_block;
   return solution;
@@ -128,7 +199,52 @@ void linkage_kinematics(const LinkageModel& model, double t, const Eigen::Vector
 
 namespace {
 
-LinkagePose make_pose(const LinkageSolver& solver, double user, double t, LinkageSolution solution) {
+bool all_blocks_closed(const LinkageSolver& solver) {
+  return std::all_of(solver.blocks().begin(), solver.blocks().end(), [](const LinkageBlock& b) { return b.closed_form(); });
+}
+
+// How far from the closed form a pose with residual Phi may be: 10 ||J^-1|| r, r = ||Phi||_2 plus
+// the rounding of q, from the first-order model J e = Phi; and where J is (nearly) singular, from
+// the second-order one: along J's null direction the distance rows (|d|^2 - L^2) / (2L) grow as
+// e^2 / (2L), so e <= sqrt(2 L r) with L the longest link. The smaller of the two.
+double closed_form_bound(const LinkageSolver& solver, double t, const Eigen::VectorXd& q, double inverse_norm) {
+  const LinkageModel& model = solver.model();
+  Eigen::VectorXd f;
+  model.residual(q, t, f);
+  double longest = 0.0;
+  for (const Constraint& c : model.constraints()) {
+    if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) longest = std::max(longest, c.length);
+  }
+  const double n = static_cast<double>(q.size());
+  const double size = (q.size() == 0 ? 0.0 : q.lpNorm<Eigen::Infinity>()) + longest;
+  const double r = f.norm() + n * std::numeric_limits<double>::epsilon() * size;
+  return 10.0 * std::min(inverse_norm * r, std::sqrt(2.0 * longest * r));
+}
+
+// Velocity and acceleration of a converged pose: from J (J qdot = -Phi_t, J qddot = gamma) at the
+// pose, first solved to rounding where J is ill-conditioned; where J is singular (a crossing), the
+// 7-point stencils of positions solved along the pose's branch (guess).
+void pose_kinematics(const LinkageSolver& solver, double t, const detail::BranchGuess& guess, LinkagePose& pose,
+                     const LinkageConditioning& conditioning) {
+  const LinkageModel& model = solver.model();
+  Eigen::VectorXd q = pose.q;
+  double condition = conditioning.condition;
+  if (condition > detail::ill_condition) {
+    if (auto polished = detail::solve_to_rounding(solver, t, q)) {
+      q = std::move(*polished);
+      condition = linkage_conditioning(model, t, q).condition;
+    }
+  }
+  linkage_kinematics(model, t, q, pose.velocity, pose.acceleration);
+  const bool singular = !(condition <= detail::singular_condition) || !pose.velocity.allFinite() || !pose.acceleration.allFinite();
+  if (singular && guess) {
+    const double h = model.crank_driven() ? 1e-2 : 1e-3 * solver.size();
+    pose.kinematics_by_differences = detail::branch_kinematics(solver, t, h, guess, pose.velocity, pose.acceleration);
+  }
+}
+
+LinkagePose make_pose(const LinkageSolver& solver, double user, double t, LinkageSolution solution,
+                      const detail::BranchGuess& guess = {}) {
   const LinkageModel& model = solver.model();
   LinkagePose pose;
   pose.driver = user;
@@ -139,24 +255,20 @@ LinkagePose make_pose(const LinkageSolver& solver, double user, double t, Linkag
   pose.closed_form_distance = not_computed;
   pose.closed_form_bound = not_computed;
   if (converged(solution)) {
-    linkage_kinematics(model, t, pose.q, pose.velocity, pose.acceleration);
     const LinkageConditioning conditioning = linkage_conditioning(model, t, pose.q);
+    pose_kinematics(solver, t, guess, pose, conditioning);
     pose.condition = conditioning.condition;
     pose.signature = solver.signature(pose.q, t);
     pose.transmission_deg = solver.transmission_angles(pose.q);
-    // The closed form, where every block has one, as an independent check of the solved pose.
-    const bool all_closed = std::all_of(solver.blocks().begin(), solver.blocks().end(),
-                                        [](const LinkageBlock& b) { return b.closed_form(); });
-    if (all_closed) {
+    // The closed form, where every block has one, as an independent check of the solved pose; where
+    // it does not exist (a pose past a limit that a loose tolerance let through), the distance is
+    // infinite: a missing reference is never a pass.
+    if (all_blocks_closed(solver)) {
       const LinkageSolution closed = solver.closed_form(t, pose.q);
+      pose.closed_form_distance = std::numeric_limits<double>::infinity();
       if (closed.failed_block < 0) {
-        Eigen::VectorXd f;
-        model.residual(pose.q, t, f);
-        const double n = static_cast<double>(pose.q.size());
-        const double scale = pose.q.size() == 0 ? 0.0 : pose.q.lpNorm<Eigen::Infinity>();
         pose.closed_form_distance = (pose.q - closed.q).lpNorm<Eigen::Infinity>();
-        pose.closed_form_bound =
-            10.0 * conditioning.inverse_norm * (f.norm() + n * std::numeric_limits<double>::epsilon() * std::max(scale, 1.0));
+        pose.closed_form_bound = closed_form_bound(solver, t, pose.q, conditioning.inverse_norm);
       }
     }
   }
@@ -203,34 +315,112 @@ LinkageLimit bisect_limit(PoseSolver& poses, double good, Eigen::VectorXd q, dou
 
 }  // namespace
 
-// Where, between t0 (pose q0) and t1, dyad block b's two solutions meet (its margin reaches zero
-// without going below: a change point), or NaN. The margin along the way comes from the closed
-// form continued from q0; its smallest value is found by golden-section search.
-double change_point(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t1) {
-  if (!solver.blocks()[b].dyad()) return std::numeric_limits<double>::quiet_NaN();
-  const auto margin_at = [&](double t) {
-    // The margin reads only the dyad's centres, which the blocks before it placed: it is defined even
-    // where rounding makes this dyad itself fail at the meeting point.
-    const LinkageSolution closed = solver.closed_form(t, predicted(solver.model(), t0, q0, t));
-    const bool earlier_failed = closed.failed_block >= 0 && closed.failed_block < static_cast<int>(b);
-    return earlier_failed ? -1.0 : solver.dyad_margins(closed.q)[b];
-  };
-  constexpr double golden = 0.6180339887498949;
-  double a = t0, c = t1;
-  for (int i = 0; i < 80 && std::abs(c - a) > 1e-12 * (1.0 + std::abs(t0)); ++i) {
-    const double x1 = c - golden * (c - a), x2 = a + golden * (c - a);
-    if (margin_at(x1) < margin_at(x2)) c = x2;
-    else a = x1;
-  }
-  const double meet = 0.5 * (a + c);
-  const double margin = margin_at(meet);
-  const double scale = std::max(1.0, q0.size() == 0 ? 0.0 : q0.lpNorm<Eigen::Infinity>());
-  // Zero to rounding (a little below zero is rounding too), and no further below: below is a limit.
-  return margin >= -1e-12 * scale && margin <= 1e-6 * scale ? meet : std::numeric_limits<double>::quiet_NaN();
+namespace {
+
+// The state of step 4 (the branch) between poses: per block, the side it last had where its side is
+// defined (a dyad on its meeting point has none).
+struct BranchWatch {
+  std::vector<int> side;
+  AtCrossing at_crossing = AtCrossing::smooth;
+};
+
+std::string crossing_words(const LinkageSolver& solver, const LinkageCrossing& c) {
+  const LinkageModel& model = solver.model();
+  const std::size_t b = static_cast<std::size_t>(c.block);
+  const std::string where = model.crank_driven() ? fmt::format("crank {:.3f} deg", c.driver) : fmt::format("slider {:.6g}", c.driver);
+  const std::string what = fmt::format("block {} ({})", b + 1, describe_block(model, solver.blocks()[b]));
+  if (c.tangency) return fmt::format("two branches touch at {} without crossing: {} stays {}", where, what,
+                                     detail::side_word(solver, b, c.side_after));
+  return fmt::format("two branches cross at {}; followed the {} branch; {} {}", where, c.switched ? "other" : "smooth", what,
+                     c.side_before == c.side_after
+                         ? fmt::format("stays {}", detail::side_word(solver, b, c.side_after))
+                         : fmt::format("changes side from {} to {}", detail::side_word(solver, b, c.side_before),
+                                       detail::side_word(solver, b, c.side_after)));
 }
 
+// At a crossing, the other branch at t: the dyad's joint mirrored, the blocks after it by their
+// closed form nearest the pose, then solved. False when the solve does not keep the side wanted.
+bool switch_branch(PoseSolver& poses, std::size_t b, double t, LinkagePose& pose, int wanted_side) {
+  const LinkageSolver& solver = poses.solver();
+  Eigen::VectorXd q = pose.q;
+  if (!detail::mirror_dyad(solver, b, q)) return false;
+  const LinkageSolution closed = solver.closed_form(t, q);
+  if (closed.failed_block < 0) q = closed.q;
+  const LinkageFastOutcome outcome = poses.solve(t, q);
+  if (outcome.outcome.status != Status::converged || solver.signature(q, t)[b] != wanted_side) return false;
+  pose.q = q;
+  pose.outcome = outcome.outcome;
+  return true;
+}
+
+// 4. The branch at a converged pose: a block whose side differs from its last defined side has
+// either passed a crossing (its two solutions meet between the poses: the smooth branch goes on on
+// the other side) or jumped to another branch. Returns whether the pose was re-solved on the other
+// branch (AtCrossing::switch_branch).
+bool watch_branch(PoseSolver& poses, BranchWatch& watch, LinkageSweep& sweep, LinkagePose& pose, double t0,
+                  const Eigen::VectorXd& q0, double t, bool in_sweep) {
+  const LinkageSolver& solver = poses.solver();
+  const LinkageModel& model = solver.model();
+  bool switched = false;
+  for (std::size_t b = 0; b < pose.signature.size(); ++b) {
+    if (!detail::side_defined(solver, b, pose.q)) continue;  // on the meeting point: decided at the next pose
+    if (pose.signature[b] == watch.side[b]) continue;
+    const double meet = detail::change_point(solver, b, t0, q0, t);
+    if (!std::isfinite(meet)) {
+      sweep.branch_kept = false;
+      if (sweep.flips.size() < 20) {
+        sweep.flips.push_back(fmt::format("block {} ({}) jumps to the other branch between {:g} and {:g}", b + 1,
+                                          describe_block(model, solver.blocks()[b]), model.driver_to_user(t0),
+                                          pose.driver));
+      }
+      watch.side[b] = pose.signature[b];
+      continue;
+    }
+    if (!in_sweep) {  // a crossing on the walk from the reference pose to the sweep's start: not the sweep's
+      watch.side[b] = pose.signature[b];
+      continue;
+    }
+    LinkageCrossing crossing{model.driver_to_user(meet), static_cast<int>(b), watch.side[b], pose.signature[b], false, false};
+    if (watch.at_crossing == AtCrossing::switch_branch && switch_branch(poses, b, t, pose, watch.side[b])) {
+      crossing.switched = switched = true;
+      crossing.side_after = watch.side[b];
+      pose.signature = solver.signature(pose.q, t);
+    }
+    watch.side[b] = crossing.side_after;
+    sweep.crossings.push_back(crossing);
+    sweep.change_points.push_back(crossing_words(solver, crossing));
+  }
+  return switched;
+}
+
+// The crank's walk and sub-step length (model units): 2 degrees; a slider's: a 50th of the walk,
+// but never shorter than the sweep's own step (a sweep that starts at the reference has no walk;
+// sub-steps of 1e-12 would never reach its next pose).
+double longest_sub_step(const LinkageModel& model, double walk, double step) {
+  return model.crank_driven() ? model.driver_from_user(crank_walk_deg)
+                              : std::max(std::abs(walk) / slider_walk_steps, std::abs(step));
+}
+
+double shortest_length(const LinkageModel& model) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const Constraint& c : model.constraints()) {
+    if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) shortest = std::min(shortest, c.length);
+  }
+  return shortest;
+}
+
+// The rule of closed_form_bound.hpp: within the bound, and the bound below half the shortest length
+// (beyond it the residual justifies nothing: another branch is about a link away). A pose of a model
+// in closed form whose closed form does not exist there is not verified either.
+bool pose_verified(const LinkageSolver& solver, const LinkagePose& pose, double shortest) {
+  if (std::isnan(pose.closed_form_distance)) return !all_blocks_closed(solver);
+  return pose.closed_form_distance <= pose.closed_form_bound && pose.closed_form_bound < 0.5 * shortest;
+}
+
+}  // namespace
+
 LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
-                           const LinkagePoseObserver& observer) {
+                           const LinkagePoseObserver& observer, AtCrossing at_crossing) {
   if (!std::isfinite(start) || !std::isfinite(stop) || !std::isfinite(step) || step == 0.0 ||
       (stop - start) * step < 0.0) {
     throw std::invalid_argument("the sweep's step must be finite, nonzero and point from start to stop");
@@ -243,38 +433,38 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   PoseSolver poses(solver, !observer);
   // 1. Walk from the reference pose to the start: the shorter way round for a crank.
   const double reference = solver.reference_driver();
-  double t_start = model.driver_from_user(start);
+  const double t_start = model.driver_from_user(start);
   double walk_to = t_start;
   if (model.crank_driven()) walk_to = reference + std::remainder(t_start - reference, 2.0 * std::acos(-1.0));
-  // A slider's sub-steps: a 50th of the walk, but never shorter than the sweep's own step (a sweep
-  // that starts at the reference has no walk; sub-steps of 1e-12 would never reach its next pose).
-  const double longest = model.crank_driven()
-                             ? model.driver_from_user(crank_walk_deg)
-                             : std::max(std::abs(walk_to - reference) / slider_walk_steps,
-                                        std::abs(model.driver_from_user(start + step) - t_start));
+  const double longest = longest_sub_step(model, walk_to - reference, model.driver_from_user(start + step) - t_start);
   LinkageSolution at = continue_to(poses, reference, walk_to, solver.reference(), longest);
+  poses.relabel(walk_to, t_start);  // the walk's last poses predict the sweep's first (a sweep may start on a crossing)
   Eigen::VectorXd last_good = converged(at) ? at.q : solver.reference();
   double last_good_t = converged(at) ? t_start : reference;
   bool have_good = converged(at);
-  std::vector<int> last_signature = solver.reference_signature();
-  double shortest = std::numeric_limits<double>::infinity();
-  for (const Constraint& c : model.constraints()) {
-    if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) shortest = std::min(shortest, c.length);
-  }
-  bool have_signature = true;
-  // 2. Each pose from the one before; a failed pose is retried from the last good one by halving.
+  BranchWatch watch{solver.reference_signature(), at_crossing};
+  const double shortest = shortest_length(model);
+  // 2. Each pose from the one before, through sub-steps each from the predictor; a failed pose is
+  // retried from the last good one by halving.
   for (std::size_t k = 0; k < count; ++k) {
     const double user = start + static_cast<double>(k) * step;
     const double t = model.driver_from_user(user);
     int halvings = 0;
-    // Sub-steps no longer than the walk's, each from the predictor: a coarse sweep still follows
-    // its branch through a change point between two of its poses.
-    LinkageSolution solution = k == 0 && have_good ? at : continue_to(poses, last_good_t, t, last_good, longest, &halvings);
-    LinkagePose pose = make_pose(solver, user, t, std::move(solution));
+    Jump jump;
+    const bool first = k == 0 && have_good;
+    LinkageSolution solution = first ? at : continue_to(poses, last_good_t, t, last_good, longest, &halvings, &jump);
+    const detail::BranchGuess guess = [&, q = solution.q](double s) { return poses.guess(t, q, s); };
+    LinkagePose pose = make_pose(solver, user, t, std::move(solution), guess);
     pose.step_halvings = halvings;
     const bool ok = pose.outcome.status == Status::converged;
+    if (jump.distance > 0.0) {
+      sweep.branch_kept = false;
+      sweep.jumps.push_back(fmt::format("the pose at {:g} lands {:.3g} from where its branch leads (the predictor allows "
+                                        "{:.3g}): it left its branch",
+                                        user, jump.distance, jump.allowed));
+    }
     // 3. A change between assembling and not is a limit, bracketed and named.
-    if (k > 0) {
+    if (k > 0 && jump.distance == 0.0) {
       const LinkagePose& before = sweep.poses.back();
       const bool was_ok = before.outcome.status == Status::converged;
       if (was_ok && !ok) sweep.limits.push_back(bisect_limit(poses, last_good_t, last_good, t, true));
@@ -283,38 +473,15 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
         sweep.limits.push_back(limit);
       }
     }
-    // The rule of closed_form_bound.hpp: within the bound, and the bound below half the shortest
-    // length (beyond it the residual justifies nothing: another branch is about a link away).
-    if (ok && !std::isnan(pose.closed_form_distance) &&
-        !(pose.closed_form_distance <= pose.closed_form_bound && pose.closed_form_bound < 0.5 * shortest)) {
-      sweep.closed_form_verified = false;
-    }
     if (ok) {
-      // 4. The branch: a block whose signature changes from the last assembled pose either passes a
-      // change point (a dyad whose two solutions meet between the poses, as a kite does when it
-      // lines up: the motion goes on smoothly on the other side) or has jumped to another branch.
-      if (have_signature) {
-        for (std::size_t b = 0; b < pose.signature.size(); ++b) {
-          if (pose.signature[b] == last_signature[b]) continue;
-          const bool first = sweep.poses.empty();  // compared with the reference pose, across the walk
-          const double meet = first ? change_point(solver, b, reference, solver.reference(), t)
-                                    : change_point(solver, b, last_good_t, last_good, t);
-          const std::string what = describe_block(model, solver.blocks()[b]);
-          if (std::isfinite(meet)) {
-            sweep.change_points.push_back(fmt::format("block {} ({}) passes a change point at {:.2f}: its two solutions "
-                                                      "meet there, and it goes on smoothly on the other side",
-                                                      b + 1, what, model.driver_to_user(meet)));
-          } else {
-            sweep.branch_kept = false;
-            if (sweep.flips.size() < 20) {
-              sweep.flips.push_back(fmt::format("block {} ({}) jumps to the other branch between {:g} and {:g}", b + 1,
-                                                what, model.driver_to_user(last_good_t), user));
-            }
-          }
-        }
+      // 4. The branch (compared with the reference pose across the walk for the first pose).
+      const double from_t = sweep.poses.empty() ? reference : last_good_t;
+      const Eigen::VectorXd& from_q = sweep.poses.empty() ? solver.reference() : last_good;
+      if (watch_branch(poses, watch, sweep, pose, from_t, from_q, t, !sweep.poses.empty())) {
+        pose = make_pose(solver, user, t, LinkageSolution{pose.q, pose.outcome, -1});  // the tangent's guess: J is regular past the crossing
+        poses.forget();
       }
-      last_signature = pose.signature;
-      have_signature = true;
+      if (!pose_verified(solver, pose, shortest)) sweep.closed_form_verified = false;
       pose.branch_kept = sweep.branch_kept;
       last_good = pose.q;
       last_good_t = t;
@@ -373,46 +540,6 @@ LinkageCycle solve_linkage_cycle(const LinkageSolver& solver, double start, doub
     cycle.q.col(static_cast<Eigen::Index>(k)) = q;
   }
   return cycle;
-}
-
-DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q_near) {
-  const LinkageModel& model = solver.model();
-  DerivativeCheck check;
-  // Positions at t + k h, solved to rounding level by full Newton from the pose: the pose itself too,
-  // since a sweep's pose is only as exact as its tolerance.
-  nonlinear::NewtonOptions newton = solver.options().newton;
-  const double scale = std::max(1.0, q_near.size() == 0 ? 0.0 : q_near.lpNorm<Eigen::Infinity>());
-  newton.residual_tolerance = 64.0 * std::numeric_limits<double>::epsilon() * scale;
-  newton.max_iterations = 50;
-  const auto solve_at = [&](double s) -> std::optional<Eigen::VectorXd> {
-    const LinkageSystem system(model, s);
-    auto result = nonlinear::newton_solve(system, q_near, newton);
-    if (result.status != Status::converged) return std::nullopt;
-    return result.x;
-  };
-  const auto q = solve_at(t);
-  if (!q) {
-    check.solved = false;
-    return check;
-  }
-  Eigen::VectorXd velocity, acceleration;
-  linkage_kinematics(model, t, *q, velocity, acceleration);
-  check.velocity_scale = velocity.size() == 0 ? 0.0 : velocity.lpNorm<Eigen::Infinity>();
-  check.acceleration_scale = acceleration.size() == 0 ? 0.0 : acceleration.lpNorm<Eigen::Infinity>();
-  // Central difference for the velocity, h ~ cbrt(eps); the 7-point stencil for the acceleration.
-  const double h1 = 1e-5, h2 = 1e-2;
-  const auto p1 = solve_at(t + h1), m1 = solve_at(t - h1);
-  std::array<std::optional<Eigen::VectorXd>, 7> s;
-  for (int k = -3; k <= 3; ++k) s[static_cast<std::size_t>(k + 3)] = k == 0 ? q : solve_at(t + k * h2);
-  for (const auto& p : s) check.solved = check.solved && p.has_value();
-  check.solved = check.solved && p1 && m1;
-  if (!check.solved) return check;
-  const Eigen::VectorXd fd_velocity = (*p1 - *m1) / (2.0 * h1);
-  const Eigen::VectorXd fd_acceleration =
-      (2.0 * (*s[0] + *s[6]) - 27.0 * (*s[1] + *s[5]) + 270.0 * (*s[2] + *s[4]) - 490.0 * *s[3]) / (180.0 * h2 * h2);
-  check.velocity_difference = (fd_velocity - velocity).lpNorm<Eigen::Infinity>();
-  check.acceleration_difference = (fd_acceleration - acceleration).lpNorm<Eigen::Infinity>();
-  return check;
 }
 
 }  // namespace numlab::mechanisms

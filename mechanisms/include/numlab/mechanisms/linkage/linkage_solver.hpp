@@ -47,6 +47,10 @@ struct LinkageSolverOptions {
   std::string solver = "full";
   std::string linear = "gepp";          // full Newton's inner solve
   nonlinear::NewtonOptions newton;      // every Newton (and GSL's stop tests)
+  // The residual tolerance is relative to the mechanism's size (its longest link): the solver tests
+  // ||Phi||_inf <= residual_tolerance * size, so a linkage's verdicts do not depend on its units.
+  // False: absolute, in the file's length units (to compare with a hand-coded model of one size).
+  bool tolerance_relative_to_size = true;
 };
 
 // One solve: the unknowns, how it ended, and (when it did not converge) the block that failed.
@@ -66,7 +70,10 @@ class LinkageSolver {
 
   const LinkageModel& model() const { return model_; }
   const std::vector<LinkageBlock>& blocks() const { return blocks_; }
+  // The options in force: residual_tolerance is absolute here (scaled by size() when relative).
   const LinkageSolverOptions& options() const { return options_; }
+  // The mechanism's size: its longest link (crank included).
+  double size() const { return size_; }
   // The reference pose's unknowns and the driver there (model units).
   const Eigen::VectorXd& reference() const { return reference_; }
   double reference_driver() const { return reference_driver_; }
@@ -100,6 +107,7 @@ class LinkageSolver {
   Eigen::VectorXd reference_;
   double reference_driver_ = 0.0;
   std::vector<int> reference_signature_;
+  double size_ = 1.0;
 };
 
 }  // namespace numlab::mechanisms

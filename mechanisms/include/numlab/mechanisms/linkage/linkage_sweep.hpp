@@ -32,6 +32,8 @@ struct LinkagePose {
   std::vector<int> signature;         // per block (LinkageSolver::signature)
   std::vector<double> transmission_deg;  // per block, NaN for non-dyads
   int step_halvings = 0;              // continuation steps halved to reach this pose
+  bool kinematics_by_differences = false;  // J singular here (a crossing): velocity and acceleration are
+                                           // the 7-point stencils of positions solved along the branch
   bool branch_kept = false;           // converged, and no jump to another branch up to here
 };
 
@@ -44,6 +46,21 @@ struct LinkageLimit {
   bool upper = true;              // the sweep leaves the assembling range (true) or enters it
 };
 
+// Where two assembly branches cross: a dyad's two solutions meet (J is singular) and part again. On
+// the smooth branch (the one whose positions go on smoothly through the crossing) the dyad's side
+// changes; on the other it stays.
+struct LinkageCrossing {
+  double driver = 0.0;       // user units, where the dyad's margin reaches zero
+  int block = -1;
+  int side_before = 0;       // the block's signature before and after (LinkageSolver::signature)
+  int side_after = 0;
+  bool switched = false;     // the sweep went on along the other branch (AtCrossing::switch_branch)
+  bool tangency = false;     // the solutions met and parted on the same side: a tangency, not a crossing
+};
+
+// Which branch a sweep follows past a crossing: the smooth one (default), or the other.
+enum class AtCrossing { smooth, switch_branch };
+
 struct LinkageSweep {
   std::vector<LinkagePose> poses;
   Status status = Status::converged;  // converged when every pose did; else the first failure's
@@ -51,7 +68,9 @@ struct LinkageSweep {
   bool closed_form_verified = true;   // every converged pose within its closed-form bound, and that bound
                                       // below half the shortest length (when there is a closed form)
   std::vector<std::string> flips;     // a block that jumped to another branch between two poses
-  std::vector<std::string> change_points;  // a dyad that passed a change point (reported, not a flip)
+  std::vector<std::string> change_points;  // each crossing and tangency in words (reported, not a flip)
+  std::vector<LinkageCrossing> crossings;
+  std::vector<std::string> jumps;          // a pose that left its branch: further from the prediction than allowed
   std::vector<LinkageLimit> limits;
 };
 
@@ -59,9 +78,11 @@ struct LinkageSweep {
 using LinkagePoseObserver = std::function<void(const LinkagePose&)>;
 
 // Solves the poses start, start+step, ..., stop (user units). Throws std::invalid_argument for a
-// step that is zero or not finite or points away from stop.
+// step that is zero or not finite or points away from stop. Each pose is predicted by the quadratic
+// through the last solved poses (sub-steps of at most 2 degrees), which carries the sweep along the
+// smooth branch through a crossing; at_crossing = switch_branch takes the other branch there.
 LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
-                           const LinkagePoseObserver& observer = {});
+                           const LinkagePoseObserver& observer = {}, AtCrossing at_crossing = AtCrossing::smooth);
 
 // Positions only, for timing: from the reference pose to start, then every pose predicted as
 // solve_crank_sweep predicts the hand-coded models' (the polynomial through the last five poses,
@@ -102,7 +123,21 @@ struct DerivativeCheck {
   double acceleration_difference = 0.0;
   double velocity_scale = 0.0;       // max |qdot|, for a relative reading
   double acceleration_scale = 0.0;   // max |qddot|
+  double velocity_reference = 1.0;   // the mechanism's size in the velocity's units (a crank's: its longest link)
+  double acceleration_reference = 1.0;
   bool solved = true;                // false when a neighbouring pose did not solve
+  bool singular = false;             // J is singular at the pose (a crossing): its kinematics are differences already
+  double condition = 1.0;            // kappa_2(J) at the pose
+  // Relative readings, in the units' own scale: difference / (max |qdot| + the mechanism's size).
+  double velocity_relative() const { return velocity_difference / (velocity_scale + velocity_reference); }
+  double acceleration_relative() const { return acceleration_difference / (acceleration_scale + acceleration_reference); }
+  // What the differences may be, from the conditioning: positions solved to 64 eps are kappa times
+  // that from the root, and the stencils divide by h (1e5 for the velocity's) or h^2 (6.3e4 for the
+  // acceleration's weights): about 1.4e-9 kappa and 9e-10 kappa; ten times that, over the
+  // truncation and rounding of a regular pose (below 1e-8).
+  double velocity_allowed() const { return 1e-6 + 1.4e-8 * condition; }
+  double acceleration_allowed() const { return 1e-5 + 9e-9 * condition; }
+  bool agrees() const { return velocity_relative() <= velocity_allowed() && acceleration_relative() <= acceleration_allowed(); }
 };
 DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q_near);
 

@@ -1,0 +1,96 @@
+#include "linkage_crossings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "linkage_joints.hpp"
+#include "numlab/mechanisms/linkage/linkage_sweep.hpp"
+
+namespace numlab::mechanisms::detail {
+
+namespace {
+
+// The size the rounding of a dyad's margin is measured against: its lengths and its centres' distance.
+double dyad_size(const LinkageSolver& solver, const LinkageBlock& block, const Eigen::VectorXd& q) {
+  const auto [first, second] = dyad_parts(solver.model(), block);
+  const int joint = block.joints[0];
+  double size = first->length + (joint_at(solver.model(), q, centre_of(*first, joint))).norm();
+  if (block.kind == BlockKind::circle_circle) size += second->length;
+  return size;
+}
+
+}  // namespace
+
+double change_point(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t1) {
+  if (!solver.blocks()[b].dyad()) return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::VectorXd velocity = linkage_velocity(solver.model(), t0, q0);
+  const bool tangent = velocity.allFinite();
+  const auto margin_at = [&](double t) {
+    // The margin reads only the dyad's centres, which the blocks before it placed: it is defined even
+    // where rounding makes this dyad itself fail at the meeting point.
+    const Eigen::VectorXd start = tangent ? Eigen::VectorXd(q0 + velocity * (t - t0)) : q0;
+    const LinkageSolution closed = solver.closed_form(t, start);
+    const bool earlier_failed = closed.failed_block >= 0 && closed.failed_block < static_cast<int>(b);
+    return earlier_failed ? -1.0 : solver.dyad_margins(closed.q)[b];
+  };
+  constexpr double golden = 0.6180339887498949;
+  double a = t0, c = t1;
+  for (int i = 0; i < 80 && std::abs(c - a) > 1e-12 * (1.0 + std::abs(t0)); ++i) {
+    const double x1 = c - golden * (c - a), x2 = a + golden * (c - a);
+    if (margin_at(x1) < margin_at(x2)) c = x2;
+    else a = x1;
+  }
+  // The ends too: a sweep's pose may lie on the meeting point itself.
+  double meet = 0.5 * (a + c), margin = margin_at(meet);
+  for (const double end : {t0, t1}) {
+    const double at_end = margin_at(end);
+    if (at_end >= 0.0 && at_end < margin) {
+      meet = end;
+      margin = at_end;
+    }
+  }
+  const double scale = dyad_size(solver, solver.blocks()[b], q0);
+  // Zero to rounding (a little below zero is rounding too), and no further below: below is a limit.
+  return margin >= -1e-12 * scale && margin <= 1e-6 * scale ? meet : std::numeric_limits<double>::quiet_NaN();
+}
+
+bool side_defined(const LinkageSolver& solver, std::size_t b, const Eigen::VectorXd& q) {
+  const LinkageBlock& block = solver.blocks()[b];
+  if (!block.dyad()) return true;
+  // The two solutions are 2 sqrt(2 r margin) apart near the meeting point: a margin at rounding
+  // level puts them within about 1e-7 of the dyad's size of each other.
+  return solver.dyad_margins(q)[b] > 1e-14 * dyad_size(solver, block, q);
+}
+
+std::string side_word(const LinkageSolver& solver, std::size_t b, int side) {
+  switch (solver.blocks()[b].kind) {
+    case BlockKind::circle_circle: return side > 0 ? "left" : "right";
+    case BlockKind::circle_line: return side > 0 ? "ahead" : "behind";
+    case BlockKind::newton: return side > 0 ? "+" : "-";
+    default: return "-";
+  }
+}
+
+bool mirror_dyad(const LinkageSolver& solver, std::size_t b, Eigen::VectorXd& q) {
+  const LinkageBlock& block = solver.blocks()[b];
+  if (!block.dyad()) return false;
+  const LinkageModel& model = solver.model();
+  const int joint = block.joints[0];
+  const Eigen::Vector2d p = joint_at(model, q, joint);
+  const auto [first, second] = dyad_parts(model, block);
+  const Eigen::Vector2d k1 = joint_at(model, q, centre_of(*first, joint));
+  Eigen::Vector2d mirrored;
+  if (block.kind == BlockKind::circle_circle) {
+    const Eigen::Vector2d axis = joint_at(model, q, centre_of(*second, joint)) - k1;
+    if (axis.squaredNorm() == 0.0) return false;
+    const Eigen::Vector2d along = k1 + (p - k1).dot(axis) / axis.squaredNorm() * axis;  // the foot on the centres' line
+    mirrored = 2.0 * along - p;
+  } else {
+    mirrored = 2.0 * foot_on_line(*second, k1) - p;  // across the foot of the centre on the line
+  }
+  set_joint(model, q, joint, mirrored);
+  return true;
+}
+
+}  // namespace numlab::mechanisms::detail

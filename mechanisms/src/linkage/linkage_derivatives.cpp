@@ -1,0 +1,81 @@
+// Positions solved to rounding, the kinematics of a pose where J cannot give them (on a crossing:
+// differences of positions solved along the pose's branch), and the check of J's kinematics against
+// differences of positions.
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "linkage_crossings.hpp"
+#include "numlab/mechanisms/linkage/linkage_sweep.hpp"
+
+namespace numlab::mechanisms {
+
+std::optional<Eigen::VectorXd> detail::solve_to_rounding(const LinkageSolver& solver, double s, const Eigen::VectorXd& start) {
+  nonlinear::NewtonOptions newton = solver.options().newton;
+  const double scale = (start.size() == 0 ? 0.0 : start.lpNorm<Eigen::Infinity>()) + solver.size();
+  newton.residual_tolerance = 64.0 * std::numeric_limits<double>::epsilon() * scale;
+  newton.max_iterations = 60;  // linear convergence at a singular pose halves the error each step
+  newton.damped = false;
+  const LinkageSystem system(solver.model(), s);
+  auto result = nonlinear::newton_solve(system, start, newton);
+  if (result.status != Status::converged) return std::nullopt;
+  return std::move(result.x);
+}
+
+bool detail::branch_kinematics(const LinkageSolver& solver, double t, double h, const BranchGuess& guess,
+                               Eigen::VectorXd& velocity, Eigen::VectorXd& acceleration) {
+  std::array<Eigen::VectorXd, 7> p;
+  for (int k = -3; k <= 3; ++k) {
+    const double s = t + k * h;
+    const auto solved = solve_to_rounding(solver, s, guess(s));
+    if (!solved) return false;
+    p[static_cast<std::size_t>(k + 3)] = *solved;
+  }
+  // The 7-point stencils (6th order): q' and q'' at t.
+  velocity = (-p[0] + 9.0 * p[1] - 45.0 * p[2] + 45.0 * p[4] - 9.0 * p[5] + p[6]) / (60.0 * h);
+  acceleration = (2.0 * (p[0] + p[6]) - 27.0 * (p[1] + p[5]) + 270.0 * (p[2] + p[4]) - 490.0 * p[3]) / (180.0 * h * h);
+  return velocity.allFinite() && acceleration.allFinite();
+}
+
+DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q_near) {
+  const LinkageModel& model = solver.model();
+  DerivativeCheck check;
+  // The reading's units: a crank's velocity is a length per radian, a slider's a length per length.
+  check.velocity_reference = model.crank_driven() ? solver.size() : 1.0;
+  check.acceleration_reference = model.crank_driven() ? solver.size() : 1.0 / solver.size();
+  // Positions at t + k h, solved to rounding level by full Newton, each from the tangent's
+  // prediction (from the pose itself near a singular pose): the pose itself too, since a sweep's
+  // pose is only as exact as its tolerance.
+  const auto q = detail::solve_to_rounding(solver, t, q_near);
+  if (!q) {
+    check.solved = false;
+    return check;
+  }
+  check.condition = linkage_conditioning(model, t, *q).condition;
+  if (!(check.condition <= detail::singular_condition)) {
+    check.singular = true;  // J gives no velocity here: the sweep took it from differences already
+    return check;
+  }
+  Eigen::VectorXd velocity, acceleration;
+  linkage_kinematics(model, t, *q, velocity, acceleration);
+  check.velocity_scale = velocity.size() == 0 ? 0.0 : velocity.lpNorm<Eigen::Infinity>();
+  check.acceleration_scale = acceleration.size() == 0 ? 0.0 : acceleration.lpNorm<Eigen::Infinity>();
+  const auto solve_at = [&](double s) { return detail::solve_to_rounding(solver, s, Eigen::VectorXd(*q + velocity * (s - t))); };
+  // Central difference for the velocity, h ~ cbrt(eps); the 7-point stencil for the acceleration.
+  const double h1 = 1e-5, h2 = 1e-2;
+  const auto p1 = solve_at(t + h1), m1 = solve_at(t - h1);
+  std::array<std::optional<Eigen::VectorXd>, 7> s;
+  for (int k = -3; k <= 3; ++k) s[static_cast<std::size_t>(k + 3)] = k == 0 ? q : solve_at(t + k * h2);
+  for (const auto& p : s) check.solved = check.solved && p.has_value();
+  check.solved = check.solved && p1 && m1;
+  if (!check.solved) return check;
+  const Eigen::VectorXd fd_velocity = (*p1 - *m1) / (2.0 * h1);
+  const Eigen::VectorXd fd_acceleration =
+      (2.0 * (*s[0] + *s[6]) - 27.0 * (*s[1] + *s[5]) + 270.0 * (*s[2] + *s[4]) - 490.0 * *s[3]) / (180.0 * h2 * h2);
+  check.velocity_difference = (fd_velocity - velocity).lpNorm<Eigen::Infinity>();
+  check.acceleration_difference = (fd_acceleration - acceleration).lpNorm<Eigen::Infinity>();
+  return check;
+}
+
+}  // namespace numlab::mechanisms
