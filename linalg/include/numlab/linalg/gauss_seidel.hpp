@@ -112,6 +112,7 @@ class GaussSeidel {
       swept_rhs_ = b;
     }
     x_ = x0;
+    residual_.resize(A.rows());  // residual_norm()'s workspace: sized here, so that step() never allocates
     sweep_ = 0;
     step_norm_ = LinearResult<N>::not_applicable;
     first_step_norm_ = 0.0;
