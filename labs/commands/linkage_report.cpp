@@ -87,8 +87,8 @@ std::string limit_text(const LinkageReport& r, const LinkageLimit& limit) {
   const std::string angle = std::isfinite(limit.transmission_deg)
                                 ? fmt::format("; transmission angle there {:.2f} deg", limit.transmission_deg)
                                 : "";
-  return fmt::format("{} limit {:.2f}{} (bisection bracket {:.2g}{}): {}{}", limit.upper ? "upper" : "lower", limit.driver,
-                     unit, limit.bracket, unit, where, angle);
+  return fmt::format("{} limit {:.2f}{} (a fold: the branch ends there; bisection bracket {:.2g}{}): {}{}",
+                     limit.upper ? "upper" : "lower", limit.driver, unit, limit.bracket, unit, where, angle);
 }
 
 nlohmann::ordered_json number(double value) { return number_or_null(value); }
@@ -245,7 +245,8 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
   out["jumps"] = r.sweep.jumps;
   out["limits"] = nlohmann::ordered_json::array();
   for (const auto& limit : r.sweep.limits) {
-    out["limits"].push_back({{"driver", limit.driver},
+    out["limits"].push_back({{"kind", "fold"},
+                             {"driver", limit.driver},
                              {"bracket", limit.bracket},
                              {"upper", limit.upper},
                              {"block", limit.block >= 0 ? nlohmann::ordered_json(describe_block(r.model, r.solver.blocks()[static_cast<std::size_t>(limit.block)])) : nlohmann::ordered_json()},

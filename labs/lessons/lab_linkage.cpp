@@ -1,7 +1,8 @@
 // Lab `linkage`: a linkage read from a description file (docs/linkage-files.md). The shipped
 // jansen.toml carries the story: the model numlab derives from it, every solver over a crank cycle,
 // the velocities and accelerations checked, the scene, and the seeds' hand-written models beside
-// it. The shipped mustang.toml shows a dyad approaching its assembly limit.
+// it. The shipped mustang.toml shows a dyad approaching its assembly limit, parallelogram.toml two
+// branches crossing.
 
 #include <fmt/format.h>
 
@@ -50,6 +51,13 @@ std::string joint_list(const LinkageModel& model, const std::vector<int>& joints
 }
 
 // Joint `name`'s 2-vector out of a vector of unknowns (positions, velocities or accelerations).
+// A dyad's side in words: left or right of the line between its centres (circle-circle), ahead of or
+// behind the foot of its centre along its line (circle-line).
+std::string side_name(const LinkageSolver& solver, std::size_t block, int side) {
+  if (solver.blocks()[block].kind == BlockKind::circle_line) return side > 0 ? "ahead" : "behind";
+  return side > 0 ? "left" : "right";
+}
+
 Eigen::Vector2d joint_part(const LinkageModel& model, const Eigen::VectorXd& v, const std::string& name) {
   const int column = model.column_of(model.description().joint_index(name));
   return {v(column), v(column + 1)};
@@ -254,7 +262,51 @@ bool show_limit_approach(LabSession& session) {
   return solved && towards.status == Status::converged;
 }
 
-// Step 6: seed 001's 10 angles, seed 000's 8 angles and jansen.toml's joint coordinates.
+// Step 5: parallelogram.toml through its crossing at crank 0, on the smooth branch and on the other.
+bool show_crossing(LabSession& session) {
+  const LinkageModel model(read_linkage_description(models_dir() + "/parallelogram.toml"));
+  const LinkageSolver solver(model, LinkageSolverOptions{});
+  constexpr double from = -10.0, to = 10.0, step = 2.0;
+  const LinkageSweep smooth = linkage_sweep(solver, from, to, step);
+  // The other branch on each side: sweeps that switch at the crossing, one from either end.
+  const LinkageSweep up = linkage_sweep(solver, from, to, step, {}, AtCrossing::switch_branch);
+  const LinkageSweep down = linkage_sweep(solver, to, from, -step, {}, AtCrossing::switch_branch);
+  if (smooth.status != Status::converged || up.status != Status::converged || down.status != Status::converged ||
+      smooth.crossings.size() != 1) {
+    session.say("The sweeps through the parallelogram's crossing did not all converge: nothing to compare.");
+    return false;
+  }
+  const std::size_t b = static_cast<std::size_t>(smooth.crossings.front().block);
+  const std::string joint = joint_name(model, solver.blocks()[b].joints.front());
+  const auto velocity_of = [&](const LinkagePose& pose) { return joint_part(model, pose.velocity, joint); };
+  Table table({"crank (deg)", "x_" + joint, "y_" + joint, "side", "kappa(J)", "v_" + joint + " (per rad)",
+               "other branch v_" + joint});
+  const std::size_t n = smooth.poses.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const LinkagePose& pose = smooth.poses[k];
+    const LinkagePose& other = pose.driver < 0.0 ? down.poses[n - 1 - k] : up.poses[k];  // the switched sweeps' poses
+    const Eigen::Vector2d p = joint_part(model, pose.q, joint), v = velocity_of(pose), w = velocity_of(other);
+    const std::string side = pose.driver == 0.0 ? "on the crossing" : side_name(solver, b, pose.signature[b]);
+    table.add_row({fmt::format("{:g}", pose.driver), fmt::format("{:.6f}", p.x()), fmt::format("{:.6f}", p.y()), side,
+                   scientific(pose.condition), fmt::format("({:.4f}, {:.4f})", v.x(), v.y()),
+                   pose.driver == 0.0 ? "-" : fmt::format("({:.4f}, {:.4f})", w.x(), w.y())});
+  }
+  session.show(table, "crossing");
+  const std::size_t at = n / 2;  // crank 0
+  const LinkageCrossing& crossing = smooth.crossings.front();
+  const CrossingPassage passage{crossing.driver, smooth.poses[at].condition, smooth.poses[0].condition, joint,
+                                side_name(solver, b, crossing.side_before), side_name(solver, b, crossing.side_after),
+                                velocity_of(smooth.poses[at - 1]), velocity_of(smooth.poses[at + 1]),
+                                velocity_of(up.poses[at + 1]), step};
+  session.say(crossing_sentence(passage));
+  const std::string path = lab_file(session, "parallelogram-crossing.svg", linkage_animation_svg(model, up, 2.0));
+  session.figure(path, "parallelogram.toml from -10 to 10 deg with --at-crossing switch: at crank 0 it turns into the "
+                       "anti-parallelogram (animated)");
+  return true;
+}
+
+// Step 7: seed 001's 10 angles, seed 000's 8 angles and jansen.toml's joint coordinates.
+
 void show_over_modelling(LabSession& session, const LinkageModel& model, const CycleRow& derived_full) {
   const JansenLeg leg;
   const double seed_angle = JansenClosure::seed_crank_angle;
@@ -344,6 +396,15 @@ int run_linkage_lab(LabSession& session) {
                      "the whole 20x20 model and the joint's speed per radian of input.");
   const bool limit_found = show_limit_approach(session);
 
+  session.begin_step("Two branches cross: the parallelogram four-bar",
+                     "parallelogram.toml (crank = rocker, coupler = ground) lies flat at crank 0: every joint on the "
+                     "ground line, J singular, and there its branch crosses the anti-parallelogram's. A sweep from "
+                     "-10 to 10 deg lands on the crossing. Each pose is predicted by the quadratic through the poses "
+                     "before it, which carries the smooth branch through; on the crossing itself J gives no velocity, so "
+                     "the sweep takes it from positions solved along the branch. The last column is the other branch, "
+                     "from sweeps with --at-crossing switch.");
+  const bool crossing_followed = show_crossing(session);
+
   session.begin_step("The scene",
                      "The leg at crank angle 0 with every moving joint's path over the turn and its velocity per "
                      "radian of crank as an arrow, and the turn animated (open the SVG files in a browser).");
@@ -361,8 +422,9 @@ int run_linkage_lab(LabSession& session) {
 
   const bool cycles_converged = std::all_of(cycle_rows.begin(), cycle_rows.end(),
                                             [](const CycleRow& r) { return r.status == Status::converged; });
-  return cycles_converged && sweep.status == Status::converged && derivatives_solved && limit_found ? exit_success
-                                                                                                   : exit_method_failed;
+  return cycles_converged && sweep.status == Status::converged && derivatives_solved && limit_found && crossing_followed
+             ? exit_success
+             : exit_method_failed;
 }
 
 }  // namespace numlab::cli

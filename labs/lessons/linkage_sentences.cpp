@@ -138,4 +138,26 @@ std::string over_modelling_sentence(const std::vector<ModelCost>& rows) {
   return text;
 }
 
+std::string crossing_sentence(const CrossingPassage& c) {
+  const auto vector_text = [](const Eigen::Vector2d& v) { return fmt::format("({:.4f}, {:.4f})", v.x(), v.y()); };
+  // 1. Where: J singular, as the condition number says.
+  std::string text = fmt::format("At crank {:.3f} deg the two assembly branches cross: kappa(J) is {:.3g} there, against "
+                                 "{:.3g} at the first pose. ",
+                                 c.crossing_deg, c.kappa_at, c.kappa_away);
+  // 2. The tangents either side: the smooth branch's continues the incoming one.
+  const double turn = std::acos(std::clamp(c.before.normalized().dot(c.after.normalized()), -1.0, 1.0)) * 180.0 / std::acos(-1.0);
+  const double other_turn =
+      std::acos(std::clamp(c.before.normalized().dot(c.other_after.normalized()), -1.0, 1.0)) * 180.0 / std::acos(-1.0);
+  text += fmt::format("{:g} deg before it {} moves at {} per radian of crank, {:g} deg after it at {} on the branch the sweep "
+                      "followed ({:.1f} deg of turn: the incoming tangent goes on) and at {} on the other ({:.1f} deg of "
+                      "turn). ",
+                      c.step_deg, c.joint, vector_text(c.before), c.step_deg, vector_text(c.after), turn,
+                      vector_text(c.other_after), other_turn);
+  // 3. The side, which a sign test would have misread as a jump.
+  text += fmt::format("On the smooth branch {} changes side, from {} to {}: a branch test by sides alone would call this "
+                      "a jump; --at-crossing switch takes the other branch",
+                      c.joint, c.side_before, c.side_after);
+  return text + ".";
+}
+
 }  // namespace numlab::cli

@@ -3,6 +3,7 @@
 // lab_sentences.hpp for the sentences the labs share). tests/labs/test_lab_linkage.cpp reads the
 // tables back from the CSV files and checks every sentence against them.
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
 
@@ -59,7 +60,21 @@ std::string limit_approach_sentence(const LimitApproach& approach, double far, d
 // log(value(near) / value(far)) / log(near / far): the power of the distance the rows show.
 double measured_exponent(double far, double value_far, double near, double value_near);
 
-// Step 6: the same leg modelled three ways.
+// Step 5: a sweep through a crossing of two assembly branches.
+struct CrossingPassage {
+  double crossing_deg;                 // where the sweep reported the crossing
+  double kappa_at, kappa_away;         // kappa_2(J) there, and at the sweep's first pose
+  std::string joint;                   // the dyad's joint
+  std::string side_before, side_after; // its side on the smooth branch
+  Eigen::Vector2d before, after;       // the smooth branch's joint velocity, per radian, one step either side
+  Eigen::Vector2d other_after;         // the other branch's, one step after
+  double step_deg;
+};
+// Where the branches cross and how ill-conditioned J gets; the tangents either side (the incoming
+// one continues on the smooth branch; the other branch leaves along another); the side change.
+std::string crossing_sentence(const CrossingPassage& c);
+
+// Step 7: the same leg modelled three ways.
 struct ModelCost {
   std::string name;      // as the table prints it
   int unknowns = 0;

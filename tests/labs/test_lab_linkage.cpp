@@ -158,8 +158,42 @@ TEST_CASE("Linkage lab: every sentence is made from the tables the same run save
     if (not_fold) CHECK_THAT(text, Contains("not the square-root law of a simple fold"));
   }
 
-  {  // step 6: the three models' sizes, times and distances
-    const auto rows = lab.table("step6-over-modelling.csv");
+  {  // step 5: the crossing, its kappa and the tangents either side, each from its row
+    const auto rows = lab.table("step5-crossing.csv");
+    REQUIRE(rows.size() == 12);  // -10 to 10 deg by 2, and the header
+    const auto& before = rows[5];  // -2 deg
+    const auto& at = rows[6];      // 0 deg: on the crossing
+    const auto& after = rows[7];   // 2 deg
+    REQUIRE(at[0] == "0");
+    CHECK(at[column(rows, "side")] == "on the crossing");
+    CHECK(before[column(rows, "side")] != after[column(rows, "side")]);  // the smooth branch changes side
+    const std::size_t kappa = column(rows, "kappa(J)"), v = column(rows, "v_B (per rad)"), w = column(rows, "other branch v_B");
+    CHECK(number(at[kappa]) > 1e3 * number(rows[1][kappa]));  // J (nearly) singular on the crossing
+    check_rounded(number_after(text, "cross: kappa(J) is "), number(at[kappa]), 3);
+    CHECK_THAT(text, Contains(fmt::format("2 deg before it B moves at {} per radian of crank", before[v])));
+    CHECK_THAT(text, Contains(fmt::format("2 deg after it at {} on the branch the sweep followed", after[v])));
+    CHECK_THAT(text, Contains(fmt::format("and at {} on the other", after[w])));
+    CHECK_THAT(text, Contains(fmt::format("from {} to {}", before[column(rows, "side")], after[column(rows, "side")])));
+    // The turns the sentence names, from the printed tangents: small on the smooth branch, large to the other.
+    const auto pair = [](const std::string& cell) {
+      const std::size_t comma = cell.find(',');
+      return std::pair{number(cell.substr(1, comma - 1)), number(cell.substr(comma + 1))};
+    };
+    const auto turn = [&](const std::string& a, const std::string& b) {
+      const auto [ax, ay] = pair(a);
+      const auto [bx, by] = pair(b);
+      return std::acos((ax * bx + ay * by) / (std::hypot(ax, ay) * std::hypot(bx, by))) * 180.0 / std::acos(-1.0);
+    };
+    const double smooth_turn = number_after(text, "on the branch the sweep followed (");
+    const double other_turn = number_after(text, "on the other (");
+    CHECK(std::abs(smooth_turn - turn(before[v], after[v])) < 0.1);
+    CHECK(std::abs(other_turn - turn(before[v], after[w])) < 0.1);
+    CHECK(smooth_turn < 10.0);
+    CHECK(other_turn > 90.0);
+  }
+
+  {  // step 7: the three models' sizes, times and distances
+    const auto rows = lab.table("step7-over-modelling.csv");
     REQUIRE(rows.size() == 4);
     const auto &ten = rows[1], &eight = rows[2], &derived = rows[3];
     const std::size_t time = column(rows, "time per cycle"), unknowns = column(rows, "unknowns");

@@ -38,9 +38,12 @@ bool detail::branch_kinematics(const LinkageSolver& solver, double t, double h, 
   return velocity.allFinite() && acceleration.allFinite();
 }
 
-DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q_near) {
+DerivativeCheck check_derivatives(const LinkageSolver& solver, double t_given, const Eigen::VectorXd& q_near) {
   const LinkageModel& model = solver.model();
   DerivativeCheck check;
+  // A crank's pose repeats every turn: the differences are taken within the first turn, where t + h
+  // is t plus h to rounding (at crank 1e9 deg, t's last bit is 4e-9 rad: 4e-4 of h = 1e-5).
+  const double t = model.crank_driven() ? std::remainder(t_given, 2.0 * std::acos(-1.0)) : t_given;
   // The reading's units: a crank's velocity is a length per radian, a slider's a length per length.
   check.velocity_reference = model.crank_driven() ? solver.size() : 1.0;
   check.acceleration_reference = model.crank_driven() ? solver.size() : 1.0 / solver.size();

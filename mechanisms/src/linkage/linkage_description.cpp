@@ -40,6 +40,7 @@ constexpr std::size_t max_joints = 1000;
 constexpr std::size_t max_joint_name = 32;
 constexpr std::size_t max_linkage_name = 64;
 constexpr std::size_t max_title = 200;
+constexpr double max_magnitude = 1e150, min_length = 1e-150;  // squares stay normal numbers
 // Two local points of a body closer than this times the body's size coincide; all its points
 // within it of one line are collinear (the size: the largest distance between two of its points).
 constexpr double body_relative_tolerance = 1e-9;
@@ -365,6 +366,11 @@ class Reader {
     if (const auto* floating = node.as_floating_point()) value = floating->get();
     if (!value) fail(place_of(node), what + " must be a number");
     if (!std::isfinite(*value)) fail(place_of(node), what + " must be finite, got " + number_text(*value));
+    // The model squares distances: beyond 1e150 they overflow (and below 1e-150 a length's square
+    // underflows, checked with the lengths).
+    if (std::abs(*value) > max_magnitude) {
+      fail(place_of(node), what + " is " + number_text(*value) + ": numbers must be at most 1e150 in size (their squares overflow)");
+    }
     return *value;
   }
 
@@ -495,6 +501,10 @@ class Reader {
     if (spec.length <= 0.0) {
       fail(place_of(length_node), "a link's length must be positive, got " + number_text(spec.length));
     }
+    if (spec.length < min_length) {
+      fail(place_of(length_node), "a link's length is " + number_text(spec.length) +
+                                      ": lengths must be at least 1e-150 (their squares underflow)");
+    }
     description_.links.push_back(spec);
   }
 
@@ -555,6 +565,10 @@ class Reader {
           far_b = j;
         }
       }
+    }
+    if (size < min_length) {
+      fail(place, "body " + quoted(body.name) + " is " + number_text(size) + " across: a body must be at least 1e-150 across "
+                  "(its squared distances underflow)");
     }
     const double tolerance = body_relative_tolerance * size;
     for (std::size_t i = 0; i < n; ++i) {

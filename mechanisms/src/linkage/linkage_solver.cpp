@@ -74,6 +74,8 @@ LinkageSolver::LinkageSolver(const LinkageModel& model, LinkageSolverOptions opt
   if (longest > 0.0 && std::isfinite(longest)) size_ = longest;
   if (options_.tolerance_relative_to_size) {
     options_.newton.residual_tolerance *= size_;
+    // The step test is ||dx|| <= tol (1 + ||x||): below size 1 the 1 would make it absolute.
+    options_.newton.step_tolerance *= std::min(1.0, size_);
     options_.tolerance_relative_to_size = false;  // applied: options() holds the absolute tolerance
   }
   // The reference pose: damped Newton from the file's rough positions.

@@ -46,6 +46,7 @@ class PoseSolver {
     const Eigen::Index n = solver.model().unknown_count();
     history_.reset(n);
     prediction_.resize(n);
+    tolerance_ = solver.options().newton.residual_tolerance;
     for (const Constraint& c : solver.model().constraints()) {
       if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) length_ = std::max(length_, c.length);
     }
@@ -93,11 +94,14 @@ class PoseSolver {
   // line's error estimate plus a twentieth of the step's motion (two branches that cross part at a
   // rate that differs by about their tangents' difference, a good part of the motion), and never
   // less than a millionth of the longest link (branches that close are one to rounding in every
-  // figure the sweep reports).
+  // figure the sweep reports), nor than ten residual tolerances (a loose tolerance leaves the poses
+  // that far from the branch: --tol 1e-2 cannot tell branches apart more finely).
   double jump(const Eigen::VectorXd& q) const {
     return line_error_ < 0.0 || q.size() == 0 ? 0.0 : (q - prediction_).lpNorm<Eigen::Infinity>();
   }
-  double allowed_jump() const { return line_error_ < 0.0 ? 0.0 : 8.0 * line_error_ + 0.05 * motion_ + 1e-6 * length_; }
+  double allowed_jump() const {
+    return line_error_ < 0.0 ? 0.0 : 8.0 * line_error_ + 0.05 * motion_ + 1e-6 * length_ + 10.0 * tolerance_;
+  }
   bool jumped(const Eigen::VectorXd& q) const { return line_error_ >= 0.0 && jump(q) > allowed_jump(); }
 
  private:
@@ -107,6 +111,7 @@ class PoseSolver {
   Eigen::VectorXd prediction_;
   double line_error_ = -1.0;  // < 0: the last prediction was the tangent's
   double motion_ = 0.0;
+  double tolerance_ = 0.0;    // the residual test's, in length units
   double length_ = 0.0;       // the longest link
 };
 
@@ -457,14 +462,15 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
     LinkagePose pose = make_pose(solver, user, t, std::move(solution), guess);
     pose.step_halvings = halvings;
     const bool ok = pose.outcome.status == Status::converged;
-    if (jump.distance > 0.0) {
+    pose.jumped = jump.distance > 0.0;
+    if (pose.jumped) {
       sweep.branch_kept = false;
       sweep.jumps.push_back(fmt::format("the pose at {:g} lands {:.3g} from where its branch leads (the predictor allows "
                                         "{:.3g}): it left its branch",
                                         user, jump.distance, jump.allowed));
     }
     // 3. A change between assembling and not is a limit, bracketed and named.
-    if (k > 0 && jump.distance == 0.0) {
+    if (k > 0 && !pose.jumped && !sweep.poses.back().jumped) {
       const LinkagePose& before = sweep.poses.back();
       const bool was_ok = before.outcome.status == Status::converged;
       if (was_ok && !ok) sweep.limits.push_back(bisect_limit(poses, last_good_t, last_good, t, true));

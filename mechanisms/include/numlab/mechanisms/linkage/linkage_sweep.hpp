@@ -35,6 +35,8 @@ struct LinkagePose {
   bool kinematics_by_differences = false;  // J singular here (a crossing): velocity and acceleration are
                                            // the 7-point stencils of positions solved along the branch
   bool branch_kept = false;           // converged, and no jump to another branch up to here
+  bool jumped = false;                // solved, but further from its prediction than allowed even at the
+                                      // shortest sub-step: on another branch (status no_progress)
 };
 
 // Where the linkage stops assembling between two poses of the sweep.
