@@ -48,6 +48,22 @@ std::string deeply_nested(const std::string& first, const std::string& last) {
   return text + last;
 }
 
+// The four-bar of four_bar() with every coordinate and length multiplied by `scale` (a mechanism in
+// other units: its verdicts must not change).
+std::string scaled_four_bar(double scale) {
+  const auto n = [scale](double v) {
+    std::ostringstream out;
+    out.precision(17);
+    out << v * scale;
+    std::string text = out.str();
+    return text.find_first_of(".e") == std::string::npos ? text + ".0" : text;
+  };
+  return "[linkage]\nname = \"four-bar\"\n\n[ground]\nO = [0.0, 0.0]\nQ = [" + n(4.0) + ", 0.0]\n\n[joints]\nA = [" + n(0.87) +
+         ", " + n(0.5) + "]\nB = [" + n(3.4) + ", " + n(2.9) + "]\n\n[[link]]\njoints = [\"O\", \"A\"]\nlength = " + n(1.0) +
+         "\n\n[[link]]\njoints = [\"A\", \"B\"]\nlength = " + n(3.5) + "\n\n[[link]]\njoints = [\"Q\", \"B\"]\nlength = " +
+         n(3.0) + "\n\n[driver]\ntype = \"crank\"\npivot = \"O\"\njoint = \"A\"\nangle = 30.0\n";
+}
+
 std::vector<std::pair<std::string, std::string>> linkage_inputs() {
   const std::string body = "\n[[body]]\nname = \"plate\"\njoints = [\"A\", \"B\", \"C\"]\n";
   return {
@@ -77,6 +93,17 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
                                     body + "local = [[0.0, 0.0], [3.5, 0.0], [1.75, -1.0]]\n"},
       {"lk-not-a-linkage.toml", "[table]\nkey = 1\n"},
       {"lk-empty.toml", ""},
+      {"sc-four-bar-1e7.toml", scaled_four_bar(1e7)},
+      {"sc-four-bar-1e8.toml", scaled_four_bar(1e8)},
+      {"sc-four-bar-1e-8.toml", scaled_four_bar(1e-8)},
+      {"sc-four-bar-1e-12.toml", scaled_four_bar(1e-12)},
+      {"sc-four-bar-1e-300.toml", scaled_four_bar(1e-300)},
+      {"sc-four-bar-1e300.toml", scaled_four_bar(1e300)},
+      // Not Grashof (crank 2, coupler 3, rocker 2.5, ground 4: 2 + 4 > 3 + 2.5): the crank stops at
+      // 129.83 deg, where |AQ| = 3 + 2.5.
+      {"lk-non-grashof.toml", four_bar({{"A = [0.87, 0.5]", "A = [1.732, 1.0]"}, {"B = [3.4, 2.9]", "B = [4.34, 2.48]"},
+                                        {"length = 1.0", "length = 2.0"}, {"length = 3.0", "length = 2.5"},
+                                        {"length = 3.5", "length = 3.0"}})},
       {"lk-deep-key.toml", deeply_nested("a", " = 1\n")},
       {"lk-deep-header.toml", deeply_nested("[a", "]\n")},
       // Titles with a C1 control (U+009B, a CSI), a direction override (U+202E), an isolate (U+2066).
