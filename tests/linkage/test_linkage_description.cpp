@@ -342,7 +342,11 @@ TEST_CASE("Linkage files: links", "[linkage-file][bad-input]") {
   check_refused(link("[\"Q\", \"B\", \"A\"]", "1"), 15, 10, "a link's joints must be two joint names");
   check_refused(link("[\"A\", \"O\"]", "1"), 15, 10, "a second link between 'A' and 'O' (the first is at line 11)");
   check_refused(head + lines({"[[link]]", "joints = [\"Q\", \"B\"]"}) + crank, 14, 1, "[[link]] needs 'length'");
-  CHECK(parse_linkage_description(link("[\"Q\", \"B\"]", "5e-324"), "t.toml").links.back().length == 5e-324);
+  // The model squares lengths: a denormal one (or any below 1e-150) would square to zero, one above
+  // 1e150 to infinity.
+  check_refused(link("[\"Q\", \"B\"]", "5e-324"), 16, 10, "a link's length is 5e-324: lengths must be at least 1e-150 (their squares underflow)");
+  check_refused(link("[\"Q\", \"B\"]", "1e151"), 16, 10, "a link's length is 1e+151: numbers must be at most 1e150 in size (their squares overflow)");
+  CHECK(parse_linkage_description(link("[\"Q\", \"B\"]", "1e-150"), "t.toml").links.back().length == 1e-150);
 }
 
 TEST_CASE("Linkage files: bodies", "[linkage-file][bad-input]") {

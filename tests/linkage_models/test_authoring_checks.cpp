@@ -189,6 +189,20 @@ TEST_CASE("Authoring checks: a redundant item is named at its own line, not by i
       FAIL("a redundant link was accepted");
     } catch (const LinkageFileError& e) {
       CHECK(e.problem().starts_with("link A-B is redundant: with it, joints A, B"));
+      // Measured, not assumed: the body holds A and B at the link's own length.
+      CHECK(e.problem().find(fmt::format("the other items already hold its joints {:.6g} apart, its own length", 4.0 * scale)) !=
+            std::string::npos);
+      CHECK(e.place().line == 25);
+    }
+    // The same link a little longer than the body makes it: not redundant, contradictory.
+    const std::string longer = scaled(coupler_body("[1.6, 3.65]", "[2.0, 1.5]", "[[link]]\njoints = [\"A\", \"B\"]\nlength = 4.2\n"), scale);
+    try {
+      const LinkageModel model(parse_linkage_description(longer, "t.toml"));
+      FAIL("a contradictory link was accepted");
+    } catch (const LinkageFileError& e) {
+      CHECK(e.problem().starts_with("link A-B contradicts the other items: with it, joints A, B"));
+      CHECK(e.problem().find(fmt::format("without it they hold its joints {:.6g} apart, it asks for {:.6g}", 4.0 * scale,
+                                         4.2 * scale)) != std::string::npos);
       CHECK(e.place().line == 25);
     }
   }

@@ -5,9 +5,12 @@
 #include <Eigen/QR>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <set>
 
 #include "numlab/mechanisms/linkage/linkage_model.hpp"
+#include "numlab/mechanisms/linkage/linkage_solver.hpp"
 
 namespace numlab::mechanisms {
 
@@ -189,16 +192,50 @@ int redundant_item(const LinkageModel& model, const Pattern& pattern, std::size_
   return found;
 }
 
+// Whether the other items agree with a redundant [[link]] (at `place`): the model without it, its
+// reference pose solved, and the link's two joints measured there. The distance, or NaN when the
+// item is no [[link]] or the model without it does not assemble.
+double distance_without_link(const LinkageModel& model, SourcePlace place, const LinkSpec*& link) {
+  LinkageDescription reduced = model.description();
+  const auto found = std::find_if(reduced.links.begin(), reduced.links.end(), [&](const LinkSpec& l) { return same_place(l.place, place); });
+  link = nullptr;
+  if (found == reduced.links.end()) return std::numeric_limits<double>::quiet_NaN();
+  link = &model.description().links[static_cast<std::size_t>(found - reduced.links.begin())];
+  reduced.links.erase(found);
+  try {
+    const LinkageModel without(std::move(reduced));
+    const LinkageSolver solver(without, LinkageSolverOptions{});
+    const JointPositions joints = without.positions(solver.reference());
+    return (joints[static_cast<std::size_t>(link->first)] - joints[static_cast<std::size_t>(link->second)]).norm();
+  } catch (const std::exception&) {  // still over-constrained, or it does not assemble without the link
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
 // "link A-B is redundant: with it, joints A, B have 5 equations for 4 unknowns; ..." at the item's
-// place (a body is named as a whole: "body plate").
+// place (a body is named as a whole: "body plate"). A [[link]] is measured against the pose the
+// other items give: one that agrees is redundant, one that does not contradicts them.
 StructuralProblem redundancy(const LinkageModel& model, int item, const std::set<int>& rows, const std::set<int>& columns,
                              const std::string& count) {
   const Constraint& c = model.constraints()[static_cast<std::size_t>(item)];
   const std::string joints = who(model, rows, columns);
-  return {fmt::format("{} is redundant: with it, {} {} {}; the other items already hold them",
-                      c.name.substr(0, c.name.find(':')), joints, joints.find(',') == std::string::npos ? "has" : "have",
-                      count),
-          c.place};
+  const std::string name = c.name.substr(0, c.name.find(':'));
+  const std::string with = fmt::format("with it, {} {} {}", joints, joints.find(',') == std::string::npos ? "has" : "have", count);
+  const LinkSpec* link = nullptr;
+  const double distance = distance_without_link(model, c.place, link);
+  if (link != nullptr && std::isfinite(distance)) {
+    // The reference pose is solved to 1e-9 of the size: a length within 1e-6 of it agrees.
+    if (std::abs(distance - link->length) > 1e-6 * std::max(distance, link->length)) {
+      return {fmt::format("{} contradicts the other items: {}; without it they hold its joints {:.6g} apart, it asks for "
+                          "{:.6g}",
+                          name, with, distance, link->length),
+              c.place};
+    }
+    return {fmt::format("{} is redundant: {}; the other items already hold its joints {:.6g} apart, its own length", name,
+                        with, distance),
+            c.place};
+  }
+  return {fmt::format("{} is redundant: {}; the other items already hold them", name, with), c.place};
 }
 
 }  // namespace
