@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "cli/cli_common.hpp"
+#include "numlab/printable_text.hpp"
 
 extern char** environ;
 
@@ -41,8 +42,11 @@ ChartFiles chart_files(const std::string& chart_path) {
     throw std::invalid_argument("--chart '" + chart_path + "': the file name must end in .svg or .png");
   }
   // The paths go into a gnuplot script between single quotes and into a shell command.
-  if (std::any_of(chart_path.begin(), chart_path.end(), [](unsigned char c) { return c == '\'' || c < 0x20 || c == 0x7f; })) {
-    throw std::invalid_argument("--chart '" + chart_path + "': the file name must not contain quotes or control characters");
+  // printable() escapes control bytes (C0, DEL, C1), bidi controls and invisible marks: a name it
+  // changes would reach gnuplot's script, and the terminal, as something else.
+  if (chart_path.find('\'') != std::string::npos || printable(chart_path) != chart_path) {
+    throw std::invalid_argument("--chart '" + printable(chart_path) +
+                                "': the file name must not contain quotes, control or invisible characters");
   }
   // The companions keep the chart's whole name, so they cannot take the name of a data file
   // beside it (mydata.svg's data is mydata.svg.data.csv, never mydata.csv).
