@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -104,6 +105,75 @@ StopReason reason_for(int gsl_status) {
   }
 }
 
+// The trust region of GSL's hybrid types (Powell's dogleg, MINPACK's hybrd/hybrj): its radius delta,
+// in the norm ||D p||_2 of the column scaling D (D = I for hybrid and hybridj). GSL keeps it in a
+// private state (multiroots/hybrid.c, hybridj.c of GSL 2.7) that both types begin with these
+// fields, then differ: hybrid's state holds its finite-difference J before q, r, rdiag, diag.
+// Read only after the layout has been checked (check_after_set): the state's size as GSL
+// allocates it, and, right after set(), GSL's own starting values (iter 1, counters 0, delta = 100
+// ||D x0||_2, or 100 when D x0 = 0); a GSL whose layout differs keeps the step test.
+struct HybridStateFields {
+  std::size_t iter, ncfail, ncsuc, nslow1, nslow2;
+  double fnorm, delta;
+};
+struct HybridjLayout {  // hybridj_state_t
+  HybridStateFields fields;
+  gsl_matrix *q, *r;
+  gsl_vector *rdiag, *diag, *qtf, *newton, *gradient, *x_trial, *f_trial, *df, *qtdf, *rdx, *w, *v;
+};
+struct HybridLayout {  // hybrid_state_t
+  HybridStateFields fields;
+  gsl_matrix *J, *q, *r;
+  gsl_vector *rdiag, *diag, *qtf, *newton, *gradient, *x_trial, *f_trial, *df, *qtdf, *rdx, *w, *v;
+};
+
+class HybridState {
+ public:
+  // Of a solver of GSL type `name` with allocated state `state` of `size` bytes (GSL's own record of
+  // it); not usable() for a type that is not hybrid or a layout that is not the one above.
+  HybridState(const std::string& name, void* state, std::size_t size) : state_(state) {
+    if (name == "hybridj" || name == "hybridsj") {
+      jacobian_type_ = true;
+      usable_ = size == sizeof(HybridjLayout);
+    } else if (name == "hybrid" || name == "hybrids") {
+      usable_ = size == sizeof(HybridLayout);
+    }
+  }
+  // Right after set(x0): the layout is used only if GSL's starting values are where it says.
+  void check_after_set(const gsl_vector* x0) {
+    if (!usable_) return;
+    const HybridStateFields& f = fields();
+    const gsl_vector* d = diag();
+    usable_ = f.iter == 1 && f.ncfail == 0 && f.ncsuc == 0 && f.nslow1 == 0 && f.nslow2 == 0 && d != nullptr &&
+              d->size == x0->size;
+    if (!usable_) return;
+    const double dx0 = scaled_norm(x0);
+    const double expected = dx0 > 0.0 ? 100.0 * dx0 : 100.0;  // GSL's compute_delta
+    usable_ = std::abs(f.delta - expected) <= 1e-12 * expected;
+  }
+  bool usable() const { return usable_; }
+  double radius() const { return fields().delta; }
+  // ||D x||_2, in the radius' norm.
+  double scaled_norm(const gsl_vector* x) const {
+    const gsl_vector* d = diag();
+    double sum = 0.0;
+    for (std::size_t i = 0; i < x->size; ++i) {
+      const double v = gsl_vector_get(d, i) * gsl_vector_get(x, i);
+      sum += v * v;
+    }
+    return std::sqrt(sum);
+  }
+
+ private:
+  const HybridStateFields& fields() const { return *static_cast<const HybridStateFields*>(state_); }
+  const gsl_vector* diag() const {
+    return jacobian_type_ ? static_cast<const HybridjLayout*>(state_)->diag : static_cast<const HybridLayout*>(state_)->diag;
+  }
+  void* state_;
+  bool jacobian_type_ = false;
+  bool usable_ = false;
+};
+
 // The two GSL solver kinds behind one interface: allocated once, then set (to start from a
 // point) and iterated any number of times; read x, f, dx.
 class Solver {
@@ -114,39 +184,55 @@ class Solver {
   virtual const gsl_vector* x() const = 0;
   virtual const gsl_vector* f() const = 0;
   virtual const gsl_vector* dx() const = 0;
+  // The trust region of a hybrid type (HybridState), or null: every other type.
+  virtual const HybridState* trust_region() const { return nullptr; }
 };
 
 class DerivativeFreeSolver final : public Solver {
  public:
   DerivativeFreeSolver(const gsl_multiroot_fsolver_type* type, CallbackState& state, std::size_t n)
-      : solver_(gsl_multiroot_fsolver_alloc(type, n)), function_{&residual_callback, n, &state} {}
+      : solver_(gsl_multiroot_fsolver_alloc(type, n)), function_{&residual_callback, n, &state},
+        hybrid_(type->name, solver_->state, type->size) {}
   ~DerivativeFreeSolver() override { gsl_multiroot_fsolver_free(solver_); }
-  int set(gsl_vector* x0) override { return gsl_multiroot_fsolver_set(solver_, &function_, x0); }
+  int set(gsl_vector* x0) override {
+    const int status = gsl_multiroot_fsolver_set(solver_, &function_, x0);
+    hybrid_.check_after_set(x0);
+    return status;
+  }
   int iterate() override { return gsl_multiroot_fsolver_iterate(solver_); }
   const gsl_vector* x() const override { return solver_->x; }
   const gsl_vector* f() const override { return solver_->f; }
   const gsl_vector* dx() const override { return solver_->dx; }
+  const HybridState* trust_region() const override { return hybrid_.usable() ? &hybrid_ : nullptr; }
 
  private:
   gsl_multiroot_fsolver* solver_;
   gsl_multiroot_function function_;
+  HybridState hybrid_;
 };
 
 class JacobianSolver final : public Solver {
  public:
   JacobianSolver(const gsl_multiroot_fdfsolver_type* type, CallbackState& state, std::size_t n)
       : solver_(gsl_multiroot_fdfsolver_alloc(type, n)),
-        function_{&residual_callback, &jacobian_callback, &both_callback, n, &state} {}
+        function_{&residual_callback, &jacobian_callback, &both_callback, n, &state},
+        hybrid_(type->name, solver_->state, type->size) {}
   ~JacobianSolver() override { gsl_multiroot_fdfsolver_free(solver_); }
-  int set(gsl_vector* x0) override { return gsl_multiroot_fdfsolver_set(solver_, &function_, x0); }
+  int set(gsl_vector* x0) override {
+    const int status = gsl_multiroot_fdfsolver_set(solver_, &function_, x0);
+    hybrid_.check_after_set(x0);
+    return status;
+  }
   int iterate() override { return gsl_multiroot_fdfsolver_iterate(solver_); }
   const gsl_vector* x() const override { return solver_->x; }
   const gsl_vector* f() const override { return solver_->f; }
   const gsl_vector* dx() const override { return solver_->dx; }
+  const HybridState* trust_region() const override { return hybrid_.usable() ? &hybrid_ : nullptr; }
 
  private:
   gsl_multiroot_fdfsolver* solver_;
   gsl_multiroot_function_fdf function_;
+  HybridState hybrid_;
 };
 
 }  // namespace
@@ -239,6 +325,15 @@ bool GslMultiroot::step() {
     finish(Status::non_finite, StopReason::non_finite);
   } else if (gsl_multiroot_test_residual(solver.f(), options_.residual_tolerance) == GSL_SUCCESS) {
     finish(Status::converged, StopReason::residual_small);
+  } else if (const HybridState* region = solver.trust_region()) {
+    // A trust-region type: one rejected step may be tiny while the radius is still wide (the next
+    // step, from the updated model, may well succeed). It stops as MINPACK's hybrj does, when the
+    // radius itself is small: delta <= step_tolerance ||D x||_2. Not a root either.
+    if (region->radius() <= options_.step_tolerance * region->scaled_norm(solver.x())) {
+      finish(Status::no_progress, StopReason::radius_small);
+    } else if (counts_.iterations >= options_.max_iterations) {
+      finish(Status::max_iterations, StopReason::iteration_limit);
+    }
   } else if (gsl_multiroot_test_delta(solver.dx(), solver.x(), options_.step_tolerance, options_.step_tolerance) ==
              GSL_SUCCESS) {
     finish(Status::no_progress, StopReason::step_small);  // test_delta alone: stopped moving, not a root

@@ -17,6 +17,8 @@ std::string_view to_string(StopReason reason) {
     case StopReason::diverged: return "the residual grew without bound";
     case StopReason::no_descent: return "damping found no step that decreases ||f||";
     case StopReason::no_progress: return "the iteration is making no progress";
+    case StopReason::radius_small: return "the trust region's radius fell below the step tolerance (delta <= tol ||D x||_2)";
+    case StopReason::inner_step_failed: return "an inner solve reached its sweep limit short of eta_k, and its step did not decrease ||f||";
     case StopReason::inner_limit: return "three inner solves in a row reached their sweep limit short of eta_k, each step cutting ||f|| by under 10%";
   }
   return "unknown";

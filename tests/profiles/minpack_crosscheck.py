@@ -27,13 +27,6 @@ UNIQUE_ROOT = {"rosenbrock", "powell-singular", "helical-valley"}
 
 # Cases where the two differ, each with the reason (docs/profiles.md repeats them).
 EXPLAINED = {
-    "brown-almost-linear n=10 start 1x0":
-        "numlab's step test, ||dx|| <= 1e-12 (1 + ||x||), ends GSL's run when hybridsj's third step is 6e-14 "
-        "(a trust-region step that barely moves x); MINPACK tests its trust radius instead and goes on. With "
-        "`--step-tol 0` GSL converges too (12 iterations)",
-    "brown-almost-linear n=30 start 1x0":
-        "the same step test ends GSL's run at its third iteration (||f|| = 1.2e-4); with `--step-tol 0` GSL "
-        "converges in 8 iterations",
     "chebyquad n=6 start 100x0":
         "both wander far from the start; MINPACK stops with info 5 (no progress over its last ten iterations) at "
         "||f|| = 1.2e3 after 215 evaluations, while GSL's iterates, departing from MINPACK's, do not trip its "

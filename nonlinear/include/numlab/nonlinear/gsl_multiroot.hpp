@@ -13,7 +13,10 @@
 //              x not finite -> non_finite;
 //              gsl_multiroot_test_residual(f, residual_tolerance) -> converged (residual_small);
 //              gsl_multiroot_test_delta(dx, x, step_tolerance, step_tolerance) -> no_progress (step_small):
-//                a small step is not a root, so only test_residual gives converged;
+//                a small step is not a root, so only test_residual gives converged; for the hybrid
+//                types (hybrids, hybrid, hybridsj, hybridj), trust-region methods whose one rejected
+//                step may be tiny while the region is not, instead MINPACK's hybrj test on the
+//                radius, delta <= step_tolerance ||D x||_2 -> no_progress (radius_small);
 //              max_iterations reached -> max_iterations.
 
 #include <Eigen/Core>

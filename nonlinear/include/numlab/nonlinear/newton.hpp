@@ -45,6 +45,8 @@ struct NewtonOptions {
   double divergence_factor = 1e12;   // diverged when ||f|| > factor * max(||f(x0)||, 1)
   ForcingOptions forcing;            // an iterative inner solve's eta_k (Eisenstat-Walker by default);
                                      // direct solvers ignore it
+  bool stop_on_failed_inner_step = false;  // end at the first capped inner solve whose step does not
+                                           // decrease ||f|| (inner_step_failed); off: only the three-in-a-row rule
 };
 
 // A linear step that can be told a relative residual target (an iterative one: Gauss-Seidel, or
@@ -53,11 +55,14 @@ template <typename Step>
 concept TakesForcingTerm = requires(Step& step, double eta) { step.set_relative_residual_tolerance(eta); };
 
 // Why the iteration stopped. residual_small is the only reason with status converged; step_small
-// ends with status no_progress.
+// and radius_small end with status no_progress.
 // no_progress: GSL's adapter only, when GSL reports that its iteration is not making progress.
 enum class StopReason {
   running, residual_small, step_small, iteration_limit, singular_jacobian, non_finite, diverged, no_descent, no_progress,
-  inner_limit  // three inner solves in a row reached their sweep limit short of eta_k, and ||f|| barely fell
+  inner_limit,  // three inner solves in a row reached their sweep limit short of eta_k, and ||f|| barely fell
+  inner_step_failed,  // with stop_on_failed_inner_step: an inner solve reached its sweep limit short of eta_k
+                      // and its step did not decrease ||f||
+  radius_small  // GSL's hybrid types only: the trust region's radius fell below step_tolerance ||D x||_2
 };
 
 // The bookkeeping of a Newton run: everything in its result but x. Shared by numlab's Newton and
@@ -214,6 +219,10 @@ class Newton {
       finish(Status::diverged, StopReason::diverged);
     } else if (result_.iterations >= options_.max_iterations) {
       finish(Status::max_iterations, StopReason::iteration_limit);
+    } else if (options_.stop_on_failed_inner_step && capped && !(result_.residual_norm < residual_before)) {
+      // the inner solver could not resolve J here (past an assembly limit J is nearly singular), and
+      // the inexact step it gave made ||f|| no smaller: stop before spending the sweep limit again
+      finish(Status::max_iterations, StopReason::inner_step_failed);
     } else if (stalled_inner_solves_ >= max_stalled_inner_solves) {
       // three capped inner solves in a row that barely moved ||f||: stop rather than spend the whole
       // sweep limit again at every iteration
