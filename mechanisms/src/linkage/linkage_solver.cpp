@@ -105,8 +105,16 @@ LinkageSolution LinkageSolver::solve(double t, const Eigen::VectorXd& q0) const 
 
 LinkageSolution LinkageSolver::solve_full(double t, const Eigen::VectorXd& q0) const {
   const LinkageSystem system(model_, t);
+  // Past an assembly limit a sweep makes hundreds of Newton runs that cannot succeed (every
+  // continuation halving, every bisection step), and there J is nearly singular: an iterative inner
+  // solve (Gauss-Seidel on the normal equations, ~kappa(J)^2 sweeps) reaches its sweep limit. The
+  // first such capped solve whose step does not decrease ||f|| ends the run (newton.hpp,
+  // inner_step_failed) instead of up to twenty of them; capped solves that still decrease ||f||, as
+  // near a change point, go on.
+  nonlinear::NewtonOptions newton_options = options_.newton;
+  newton_options.stop_on_failed_inner_step = true;
   nonlinear::Newton<LinkageSystem, nonlinear::RuntimeLinearStep> newton(
-      system, options_.newton, nonlinear::RuntimeLinearStep(options_.linear, system.dimension()));
+      system, newton_options, nonlinear::RuntimeLinearStep(options_.linear, system.dimension()));
   auto result = newton.solve(q0);
   return {std::move(result.x), static_cast<nonlinear::NewtonCounts>(result), -1};
 }
