@@ -154,8 +154,9 @@ std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick) {
 
 BenchCommand::BenchCommand(CLI::App& app) {
   command_ = app.add_subcommand("bench", "Measure speed: median of repeated in-process runs, as ratios");
-  command_->add_option("what", what_, "What to measure: all (default), linear, jansen, mustang, fit, basins or robustness")
-      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang", "fit", "basins", "robustness"}));
+  command_->add_option("what", what_,
+                       "What to measure: all (default), linear, jansen, mustang, fit, basins, robustness or linkage-scaling")
+      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang", "fit", "basins", "robustness", "linkage-scaling"}));
   command_->add_option("--chart", chart_,
                        "Main chart (.svg or .png); default OUT/work-precision.svg (all) or OUT/bench-linear.svg");
   command_->add_option("--sizes", sizes_, "Sizes n, comma-separated")->delimiter(',')->check(CLI::Range(1, 4096));
@@ -181,6 +182,7 @@ int BenchCommand::run() const {
   if (what_ == "fit") return run_bench_fit(common, chart, quick_);
   if (what_ == "basins") return run_basins_bench(common, quick_);
   if (what_ == "robustness") return run_bench_robustness(common, quick_);
+  if (what_ == "linkage-scaling") return run_linkage_scaling_bench(common, quick_);
   const ChartFiles files = chart_files(chart.empty() ? common.out_dir + "/bench-linear.svg" : chart);
   check_outputs(planned_files(files, chart.empty() ? "bench linear's chart" : "--chart"), {});
   const std::vector<BenchRow> rows = bench_linear(sizes_, quick_);
