@@ -717,6 +717,10 @@ LinkageDescription parse_linkage_description(std::string_view toml_text, const s
                            "the character " + code + " is one toml++ 3.3 cannot read safely; in a string write it as \\u" +
                                code.substr(2));
   }
+  if (const auto too_deep = NestingScan(toml_text).first_too_deep()) {
+    throw LinkageFileError(file, *too_deep,
+                           "keys, tables and arrays nested deeper than " + std::to_string(max_nesting) + " levels");
+  }
   toml::table root;
   try {
     root = toml::parse(toml_text);
@@ -726,10 +730,6 @@ LinkageDescription parse_linkage_description(std::string_view toml_text, const s
     constexpr std::string_view prefix = "Error while parsing ";
     const std::string detail = printable(description.starts_with(prefix)
                                              ? " in " + std::string(description.substr(prefix.size(), 160))
-  if (const auto too_deep = NestingScan(toml_text).first_too_deep()) {
-    throw LinkageFileError(file, *too_deep,
-                           "keys, tables and arrays nested deeper than " + std::to_string(max_nesting) + " levels");
-  }
                                              : ": " + std::string(description.substr(0, 160)));
     throw LinkageFileError(file, place_of(error.source()),
                            mentions_linkage_table(toml_text)
