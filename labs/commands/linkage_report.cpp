@@ -305,7 +305,10 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
                                                                       : "FLIPPED");
   for (const auto& flip : r.sweep.flips) out << "                   " << flip << '\n';
   for (const auto& jump : r.sweep.jumps) out << "                   " << jump << '\n';
-  for (const auto& change : r.sweep.change_points) out << "crossing           " << change << '\n';
+  for (std::size_t i = 0; i < r.sweep.change_points.size(); ++i) {
+    const bool touch = i < r.sweep.crossings.size() && r.sweep.crossings[i].tangency;
+    out << (touch ? "tangency           " : "crossing           ") << r.sweep.change_points[i] << '\n';
+  }
   const ClosedFormWorst worst = worst_closed_form(r.sweep);
   if (!std::isnan(worst.distance)) {
     out << fmt::format("closed form        worst joint distance {:.2g} (the residual allows {:.2g}): {}\n", worst.distance,

@@ -1,15 +1,16 @@
-// A real branch jump, detected and reported, next to a real change point that is not one.
+// A near-meeting of a dyad's two solutions, followed without a jump, next to a real crossing.
 //
 // Mustang's loop 4 is a kite: P11 is placed by |P10 P11| = 4/3 and |P9 P11| = 1 while P8 sits at
 // |P10 P8| = 4/3 and |P9 P8| = 1. Where P8, P9 and P10 line up (43.15 deg) the two circles that
-// place P11 touch: a change point, and the sweep goes on smoothly on the other side.
+// place P11 touch: a crossing, and the sweep goes on along the smooth branch, on the other side.
 //
 // Shorten |P10 P11| by delta = 1e-4 and the circles never touch: |P10 P9| >= |P10 P8| - |P8 P9| =
 // 1/3 (triangle inequality), so the dyad's margin |P10 P9| - (|P9 P11| - |P10 P11|) stays >= delta
 // at every crank angle. Its two solutions come within about 2 sqrt(2 r delta) of each other near
-// 43.15 deg but never meet; a sweep 1 degree at a time follows its prediction straight past the
-// near-meeting onto the other solution. That is a jump, and it must be reported as one (FLIPPED,
-// exit 1), by the generic solvers and by the fast path alike.
+// 43.15 deg but never meet, so each is a branch of its own that keeps its side: the prediction
+// alone would step across to the other one (the sweep did, before its fifth step kept each dyad's
+// side unless its margin touches zero between two poses). It must keep the reference's side at
+// every pose, by the generic solvers and by the fast path alike.
 #include <catch2/catch.hpp>
 
 #include <fmt/format.h>
@@ -54,7 +55,7 @@ std::size_t p11_block(const LinkageSolver& solver) {
 
 }  // namespace
 
-TEST_CASE("a sweep past a near-meeting of a dyad's two solutions reports the jump to the other branch",
+TEST_CASE("a sweep past a near-meeting of a dyad's two solutions keeps its branch: no jump, no crossing",
           "[linkage-fast][branch]") {
   const LinkageModel model = near_kite();
   for (const std::string kind : {"full", "sequential", "analytic"}) {
@@ -64,25 +65,21 @@ TEST_CASE("a sweep past a near-meeting of a dyad's two solutions reports the jum
       const std::size_t block = p11_block(solver);
       const LinkageSweep sweep = generic ? linkage_sweep(solver, 30.0, 55.0, 1.0, [](const LinkagePose&) {})
                                          : linkage_sweep(solver, 30.0, 55.0, 1.0);
-      // Every pose assembles: no limit is passed, the dyad's margin never reaches zero.
       REQUIRE(sweep.status == Status::converged);
       CHECK(sweep.limits.empty());
-      CHECK_FALSE(sweep.branch_kept);
-      CHECK(sweep.change_points.empty());
-      REQUIRE(sweep.flips.size() == 1);
-      CHECK(sweep.flips[0].find("block " + std::to_string(block + 1) + " (P11 from") != std::string::npos);
-      CHECK(sweep.flips[0].find("jumps to the other branch between 43 and 44") != std::string::npos);
-      // The jump itself: P11's side changes between the poses at 43 and 44 degrees...
-      const LinkagePose& before = sweep.poses[13];
-      const LinkagePose& after = sweep.poses[14];
-      REQUIRE(before.driver == 43.0);
-      CHECK(before.signature[block] != after.signature[block]);
-      CHECK(before.branch_kept);
-      CHECK_FALSE(after.branch_kept);
-      // ...while the margin between them (read from the closed form, 0.001 degree apart) stays at or
-      // above delta, as the triangle inequality says: the two solutions never meet.
+      CHECK(sweep.branch_kept);
+      CHECK(sweep.flips.empty());
+      CHECK(sweep.jumps.empty());
+      CHECK(sweep.crossings.empty());
+      // P11 on the reference's side at every pose, and the margin between the poses at 43 and 44
+      // degrees (read from the closed form, 0.001 degree apart) at or above delta: it never meets.
+      for (const LinkagePose& pose : sweep.poses) {
+        INFO("pose " << pose.driver);
+        CHECK(pose.signature[block] == solver.reference_signature()[block]);
+      }
       double smallest = std::numeric_limits<double>::infinity();
-      Eigen::VectorXd q = before.q;
+      Eigen::VectorXd q = sweep.poses[13].q;
+      REQUIRE(sweep.poses[13].driver == 43.0);
       for (int i = 0; i <= 1000; ++i) {
         const double t = model.driver_from_user(43.0 + 0.001 * i);
         const LinkageSolution closed = solver.closed_form(t, q);
@@ -113,14 +110,14 @@ TEST_CASE("the kite's genuine change point (Mustang at 43.15 deg) is still not a
   }
 }
 
-TEST_CASE("numlab mechanism reports the jump: FLIPPED, exit 1", "[linkage-fast][branch][cli]") {
+TEST_CASE("numlab mechanism follows the near-meeting (exit 0) and names the kite's crossing", "[linkage-fast][branch][cli]") {
   const std::string file = numlab::test::temporary_file("near-kite.toml", near_kite_text());
   for (const std::string kind : {"full", "sequential", "analytic"}) {
     INFO("--solver " << kind);
     const auto run = numlab::test::run_numlab("mechanism " + file + " --sweep 30:55:1 --solver " + kind);
-    CHECK(run.exit_code == 1);
-    CHECK(run.out.find("FLIPPED") != std::string::npos);
-    CHECK(run.out.find("jumps to the other branch between 43 and 44") != std::string::npos);
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.find("FLIPPED") == std::string::npos);
+    CHECK(run.out.find("crossing ") == std::string::npos);
     const auto kite = numlab::test::run_numlab("mechanism " + model_path("mustang") + " --sweep 30:55:1 --solver " + kind);
     CHECK(kite.exit_code == 0);
     CHECK(kite.out.find("two branches cross at crank 43.1") != std::string::npos);

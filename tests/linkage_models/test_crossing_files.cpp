@@ -229,3 +229,74 @@ TEST_CASE("crossing models: the verdicts do not depend on the units") {
     }
   }
 }
+
+namespace {
+
+// An isosceles slider-crank (B = (2 cos t, 0)) carrying a dyad D with |BD| = 2 and |GD| = 1, G = (2, 1):
+// at crank 0, B's dead centre (2, 0), |BG| = 1 = |BD| - |GD| and the circles touch. |BG| - 1 grows
+// like t^4 / 2 there, so D's two solutions meet and part again on the same side: a tangency, not a
+// crossing. D in closed form: the circle intersection on the reference pose's side.
+const char* const tangent_dyad = R"(
+[linkage]
+name = "tangent-dyad"
+[ground]
+O = [0.0, 0.0]
+G = [2.0, 1.0]
+[joints]
+A = [0.866, 0.5]
+B = [1.732, 0.0]
+D = [2.593, 1.805]
+[[link]]
+joints = ["O", "A"]
+length = 1.0
+[[link]]
+joints = ["A", "B"]
+length = 1.0
+[[slider]]
+joint = "B"
+through = [0.0, 0.0]
+[[link]]
+joints = ["B", "D"]
+length = 2.0
+[[link]]
+joints = ["G", "D"]
+length = 1.0
+[driver]
+type = "crank"
+pivot = "O"
+joint = "A"
+angle = 30.0
+)";
+
+}  // namespace
+
+TEST_CASE("crossing models: two branches that touch without crossing are a tangency, on any grid") {
+  const LinkageModel model(parse_linkage_description(tangent_dyad, "tangent-dyad.toml"));
+  const LinkageSolver solver(model, LinkageSolverOptions{});
+  for (const auto& [start, stop, step] : {std::array<double, 3>{-20.0, 20.0, 2.0}, {-19.0, 21.0, 4.0}, {-20.0, 20.0, 0.5},
+                                          {20.0, -20.0, -5.0}, {-30.0, 30.0, 10.0}}) {
+    INFO("--sweep " << start << ":" << stop << ":" << step);
+    const LinkageSweep sweep = linkage_sweep(solver, start, stop, step);
+    CHECK(sweep.status == Status::converged);
+    CHECK(sweep.branch_kept);
+    CHECK(sweep.closed_form_verified);
+    REQUIRE(sweep.crossings.size() == 1);
+    const LinkageCrossing& touch = sweep.crossings.front();
+    CHECK(touch.tangency);
+    CHECK(touch.side_before == touch.side_after);
+    // |BG| - 1 ~ t^4 / 2 is zero to the margin's rounding (1e-6 of the size) within about 0.05 rad.
+    CHECK(std::abs(touch.driver) < 3.0);
+    CHECK(sweep.change_points.front().find("two branches touch at crank") != std::string::npos);
+    for (const LinkagePose& pose : sweep.poses) {
+      const double t = pose.driver * deg;
+      const Eigen::Vector2d b(2.0 * std::cos(t), 0.0), g(2.0, 1.0), d = joint_at(model, pose.q, "D");
+      INFO("pose " << pose.driver);
+      CHECK((joint_at(model, pose.q, "B") - b).norm() <= allowed_distance(solver, t, pose.q));
+      CHECK(std::abs((d - b).norm() - 2.0) < 1e-8);
+      CHECK(std::abs((d - g).norm() - 1.0) < 1e-8);
+      // The reference's side of the line B-G all along (right of B -> G), but on the tangency itself,
+      // where the two solutions are one.
+      if (std::abs(pose.driver) >= 1.0) CHECK(d.x() > 2.0);
+    }
+  }
+}

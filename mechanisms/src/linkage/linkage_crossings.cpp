@@ -22,18 +22,25 @@ double dyad_size(const LinkageSolver& solver, const LinkageBlock& block, const E
 
 }  // namespace
 
-double change_point(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t1) {
-  if (!solver.blocks()[b].dyad()) return std::numeric_limits<double>::quiet_NaN();
+double margin_along(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t) {
   const Eigen::VectorXd velocity = linkage_velocity(solver.model(), t0, q0);
-  const bool tangent = velocity.allFinite();
-  const auto margin_at = [&](double t) {
-    // The margin reads only the dyad's centres, which the blocks before it placed: it is defined even
-    // where rounding makes this dyad itself fail at the meeting point.
-    const Eigen::VectorXd start = tangent ? Eigen::VectorXd(q0 + velocity * (t - t0)) : q0;
-    const LinkageSolution closed = solver.closed_form(t, start);
-    const bool earlier_failed = closed.failed_block >= 0 && closed.failed_block < static_cast<int>(b);
-    return earlier_failed ? -1.0 : solver.dyad_margins(closed.q)[b];
-  };
+  // The margin reads only the dyad's centres, which the blocks before it placed: it is defined even
+  // where rounding makes this dyad itself fail at the meeting point.
+  const Eigen::VectorXd start = velocity.allFinite() ? Eigen::VectorXd(q0 + velocity * (t - t0)) : q0;
+  const LinkageSolution closed = solver.closed_form(t, start);
+  const bool earlier_failed = closed.failed_block >= 0 && closed.failed_block < static_cast<int>(b);
+  return earlier_failed ? -1.0 : solver.dyad_margins(closed.q)[b];
+}
+
+double contact_order(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double meet, double d) {
+  const double far = margin_along(solver, b, t0, q0, meet + d), near = margin_along(solver, b, t0, q0, meet + 0.5 * d);
+  return far > 0.0 && near > 0.0 ? std::log2(far / near) : std::numeric_limits<double>::quiet_NaN();
+}
+
+double change_point(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t1,
+                    bool at_start) {
+  if (!solver.blocks()[b].dyad()) return std::numeric_limits<double>::quiet_NaN();
+  const auto margin_at = [&](double t) { return margin_along(solver, b, t0, q0, t); };
   constexpr double golden = 0.6180339887498949;
   double a = t0, c = t1;
   for (int i = 0; i < 80 && std::abs(c - a) > 1e-12 * (1.0 + std::abs(t0)); ++i) {
@@ -50,17 +57,29 @@ double change_point(const LinkageSolver& solver, std::size_t b, double t0, const
       margin = at_end;
     }
   }
+  // A smallest margin at t0 itself belongs to the interval before, unless asked for. A margin that
+  // grows like d^2 is at rounding level within about sqrt(eps) of its zero, so the search places it
+  // only to about 1e-8: that close to t0 is t0.
+  if (!at_start && std::abs(meet - t0) <= std::max(1e-9 * std::abs(t1 - t0), 1e-7 * (1.0 + std::abs(t0)))) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   const double scale = dyad_size(solver, solver.blocks()[b], q0);
   // Zero to rounding (a little below zero is rounding too), and no further below: below is a limit.
-  return margin >= -1e-12 * scale && margin <= 1e-6 * scale ? meet : std::numeric_limits<double>::quiet_NaN();
+  // The search ends within 1e-12 of the meeting point, where a margin growing like d^2 is far below
+  // 1e-13 of the size (the margin's own rounding is a few eps of it); a minimum that is not a
+  // meeting point is above it unless the poses are within about 1e-7 of one, where the two
+  // branches are one to that distance.
+  return margin >= -1e-12 * scale && margin <= 1e-13 * scale ? meet : std::numeric_limits<double>::quiet_NaN();
 }
 
 bool side_defined(const LinkageSolver& solver, std::size_t b, const Eigen::VectorXd& q) {
   const LinkageBlock& block = solver.blocks()[b];
   if (!block.dyad()) return true;
-  // The two solutions are 2 sqrt(2 r margin) apart near the meeting point: a margin at rounding
-  // level puts them within about 1e-7 of the dyad's size of each other.
-  return solver.dyad_margins(q)[b] > 1e-14 * dyad_size(solver, block, q);
+  // The two solutions are 2 sqrt(2 r margin) apart near the meeting point. The pose's joints are
+  // only as exact as the residual test makes them: a margin within ten residual tolerances of zero
+  // (or at rounding level) could be the other side's, and the two solutions are within about
+  // sqrt(tol) of the size of each other there.
+  return solver.dyad_margins(q)[b] > 1e-14 * dyad_size(solver, block, q) + 10.0 * solver.options().newton.residual_tolerance;
 }
 
 std::string side_word(const LinkageSolver& solver, std::size_t b, int side) {
@@ -91,6 +110,31 @@ bool mirror_dyad(const LinkageSolver& solver, std::size_t b, Eigen::VectorXd& q)
   }
   set_joint(model, q, joint, mirrored);
   return true;
+}
+
+void keep_smooth_sides(const LinkageSolver& solver, double t0, const Eigen::VectorXd& q0, double t, Eigen::VectorXd& q) {
+  const auto& blocks = solver.blocks();
+  if (std::none_of(blocks.begin(), blocks.end(), [](const LinkageBlock& b) { return b.dyad(); })) return;
+  const std::vector<double> m0 = solver.dyad_margins(q0), m1 = solver.dyad_margins(q);
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    if (!blocks[b].dyad() || !(std::min(m0[b], m1[b]) <= 1e-3 * solver.size())) continue;
+    if (!side_defined(solver, b, q0) || !side_defined(solver, b, q)) continue;
+    const int before = solver.signature(q0, t0)[b], after = solver.signature(q, t)[b];
+    const double meet = change_point(solver, b, t0, q0, t, false);  // t0's side is defined: not on it
+    bool crossed = false;
+    if (std::isfinite(meet)) {
+      const double d = std::abs(t - meet) >= std::abs(meet - t0) ? t - meet : t0 - meet;
+      crossed = contact_order(solver, b, t0, q0, meet, d) < 3.0;
+    }
+    if ((crossed ? -before : before) == after) continue;
+    Eigen::VectorXd other = q;
+    if (!mirror_dyad(solver, b, other)) continue;
+    const LinkageSolution closed = solver.closed_form(t, other);
+    if (closed.failed_block < 0) other = closed.q;
+    if (auto polished = solve_to_rounding(solver, t, other)) {
+      if (solver.signature(*polished, t)[b] != after) q = std::move(*polished);
+    }
+  }
 }
 
 }  // namespace numlab::mechanisms::detail

@@ -95,14 +95,36 @@ class PoseSolver {
   // rate that differs by about their tangents' difference, a good part of the motion), and never
   // less than a millionth of the longest link (branches that close are one to rounding in every
   // figure the sweep reports), nor than ten residual tolerances (a loose tolerance leaves the poses
-  // that far from the branch: --tol 1e-2 cannot tell branches apart more finely).
+  // that far from the branch: --tol 1e-2 cannot tell branches apart more finely), nor than twice
+  // sqrt(2 L tol): near a singular pose a residual of tol leaves a pose that far from the root.
   double jump(const Eigen::VectorXd& q) const {
     return line_error_ < 0.0 || q.size() == 0 ? 0.0 : (q - prediction_).lpNorm<Eigen::Infinity>();
   }
   double allowed_jump() const {
-    return line_error_ < 0.0 ? 0.0 : 8.0 * line_error_ + 0.05 * motion_ + 1e-6 * length_ + 10.0 * tolerance_;
+    return line_error_ < 0.0 ? 0.0
+                             : 8.0 * line_error_ + 0.05 * motion_ + 1e-6 * length_ + 10.0 * tolerance_ +
+                                   2.0 * std::sqrt(2.0 * length_ * tolerance_);
   }
   bool jumped(const Eigen::VectorXd& q) const { return line_error_ >= 0.0 && jump(q) > allowed_jump(); }
+  // Step 5 of the continuation: each dyad near its meeting point on the side the smooth branch has
+  // (linkage_crossings.hpp).
+  void keep_smooth_sides(double t0, const Eigen::VectorXd& q0, double t, Eigen::VectorXd& q) {
+    detail::keep_smooth_sides(solver_, t0, q0, t, q);
+  }
+
+  // Whether a solved q (in place) stays on the branch. Near a singular pose the residual test leaves
+  // a pose up to sqrt(2 L tol) from the root, and on a crossing the two branches are that close: a
+  // pose further from the prediction than the strict allowance (without that term) is solved again
+  // to rounding from the prediction, which is nearer the branch followed; it then has to pass the
+  // whole allowance.
+  bool settle(double t, Eigen::VectorXd& q) {
+    if (line_error_ < 0.0) return true;
+    const double strict = allowed_jump() - 2.0 * std::sqrt(2.0 * length_ * tolerance_);
+    if (jump(q) <= strict) return true;
+    const auto polished = detail::solve_to_rounding(solver_, t, prediction_);
+    if (polished && (*polished - prediction_).lpNorm<Eigen::Infinity>() < jump(q)) q = *polished;
+    return !jumped(q);
+  }
 
  private:
   const LinkageSolver& solver_;
@@ -142,8 +164,9 @@ LinkageFastOutcome continue_in_place(PoseSolver& poses, double from, double to, 
     poses.predict(at, trial, next);
     LinkageFastOutcome outcome = poses.solve(next, trial);
     iterations += outcome.outcome.iterations;
-    const bool jumped = outcome.outcome.status == Status::converged && poses.jumped(trial);
+    const bool jumped = outcome.outcome.status == Status::converged && !poses.settle(next, trial);
     if (outcome.outcome.status == Status::converged && !jumped) {
+      poses.keep_smooth_sides(at, q, next, trial);
       q.swap(trial);
       poses.record(next, q);
       last = outcome;
@@ -327,6 +350,7 @@ namespace {
 struct BranchWatch {
   std::vector<int> side;
   AtCrossing at_crossing = AtCrossing::smooth;
+  std::vector<int> defined_at;  // per block, the sweep's pose where that side was read (-1: the reference)
 };
 
 std::string crossing_words(const LinkageSolver& solver, const LinkageCrossing& c) {
@@ -358,18 +382,55 @@ bool switch_branch(PoseSolver& poses, std::size_t b, double t, LinkagePose& pose
   return true;
 }
 
+// Two branches met at `meet` and the side is the same either side: a tangency (the margin touches
+// zero like d^4), or a crossing past which the poses came too close to the meeting point to tell the
+// branches apart and went on along the other branch (like d^2) - a failure unless asked for.
+void record_touch(const LinkageSolver& solver, const BranchWatch& watch, LinkageSweep& sweep, std::size_t b, double t0,
+                  const Eigen::VectorXd& q0, double t, double meet, int side) {
+  const LinkageModel& model = solver.model();
+  const double d = std::abs(t - meet) >= std::abs(meet - t0) ? t - meet : t0 - meet;
+  const bool touches = !(detail::contact_order(solver, b, t0, q0, meet, d) < 3.0);
+  LinkageCrossing touch{model.driver_to_user(meet), static_cast<int>(b), side, side, !touches, touches};
+  sweep.crossings.push_back(touch);
+  sweep.change_points.push_back(crossing_words(solver, touch));
+  if (!touches && watch.at_crossing == AtCrossing::smooth) {  // the other branch, not asked for
+    sweep.branch_kept = false;
+    sweep.flips.push_back(fmt::format("block {} ({}) went on along the other branch at the crossing at {:.3f}: the poses "
+                                      "came too close to it to tell the branches apart (a step that lands further from "
+                                      "it follows the smooth branch)",
+                                      b + 1, describe_block(model, solver.blocks()[b]), touch.driver));
+  }
+}
+
+void note_touch(const LinkageSolver& solver, const BranchWatch& watch, LinkageSweep& sweep, std::size_t b, double t0,
+                const Eigen::VectorXd& q0, double t) {
+  const double meet = detail::change_point(solver, b, t0, q0, t);
+  if (std::isfinite(meet)) record_touch(solver, watch, sweep, b, t0, q0, t, meet, watch.side[b]);
+}
+
 // 4. The branch at a converged pose: a block whose side differs from its last defined side has
 // either passed a crossing (its two solutions meet between the poses: the smooth branch goes on on
 // the other side) or jumped to another branch. Returns whether the pose was re-solved on the other
 // branch (AtCrossing::switch_branch).
-bool watch_branch(PoseSolver& poses, BranchWatch& watch, LinkageSweep& sweep, LinkagePose& pose, double t0,
-                  const Eigen::VectorXd& q0, double t, bool in_sweep) {
+bool watch_branch(PoseSolver& poses, BranchWatch& watch, LinkageSweep& sweep, LinkagePose& pose, double t, bool in_sweep) {
   const LinkageSolver& solver = poses.solver();
   const LinkageModel& model = solver.model();
   bool switched = false;
+  const int here = static_cast<int>(sweep.poses.size());
   for (std::size_t b = 0; b < pose.signature.size(); ++b) {
     if (!detail::side_defined(solver, b, pose.q)) continue;  // on the meeting point: decided at the next pose
-    if (pose.signature[b] == watch.side[b]) continue;
+    const int from = watch.defined_at[b];
+    watch.defined_at[b] = here;
+    // Where the side was last read: the poses between were on (or within the solve's accuracy of)
+    // the meeting point.
+    const double t0 = from < 0 ? solver.reference_driver() : model.driver_from_user(sweep.poses[static_cast<std::size_t>(from)].driver);
+    const Eigen::VectorXd& q0 = from < 0 ? solver.reference() : sweep.poses[static_cast<std::size_t>(from)].q;
+    if (pose.signature[b] == watch.side[b]) {
+      // The same side after poses on the meeting point: the branches touched (step 5's business
+      // when no pose lay on it).
+      if (in_sweep && from >= 0 && from + 1 < here) note_touch(solver, watch, sweep, b, t0, q0, t);
+      continue;
+    }
     const double meet = detail::change_point(solver, b, t0, q0, t);
     if (!std::isfinite(meet)) {
       sweep.branch_kept = false;
@@ -396,6 +457,33 @@ bool watch_branch(PoseSolver& poses, BranchWatch& watch, LinkageSweep& sweep, Li
     sweep.change_points.push_back(crossing_words(solver, crossing));
   }
   return switched;
+}
+
+// 5. A tangency: a dyad whose two solutions meet at the pose before this one (its margin, at a
+// local minimum there, is zero to rounding between the poses either side) while its side is the
+// same either side. The branches touch and part without crossing; the sweep goes on along its own.
+void watch_tangency(const LinkageSolver& solver, const BranchWatch& watch, LinkageSweep& sweep, const LinkagePose& pose, double t) {
+  const std::size_t k = sweep.poses.size();
+  if (k < 2) return;
+  const LinkagePose& middle = sweep.poses[k - 1];
+  const LinkagePose& first = sweep.poses[k - 2];
+  if (first.outcome.status != Status::converged || middle.outcome.status != Status::converged) return;
+  const LinkageModel& model = solver.model();
+  const std::vector<double> m0 = solver.dyad_margins(first.q), m1 = solver.dyad_margins(middle.q), m2 = solver.dyad_margins(pose.q);
+  for (std::size_t b = 0; b < m1.size(); ++b) {
+    if (!(m1[b] <= m0[b] && m1[b] <= m2[b])) continue;  // not a local minimum (NaN: not a dyad)
+    const bool noted = std::any_of(sweep.crossings.begin(), sweep.crossings.end(), [&](const LinkageCrossing& c) {
+      return c.block == static_cast<int>(b) && (c.driver - first.driver) * (c.driver - pose.driver) <= 0.0;
+    });
+    if (noted) continue;  // a crossing or touch there already
+    if (first.signature[b] != pose.signature[b] || !detail::side_defined(solver, b, first.q) ||
+        !detail::side_defined(solver, b, middle.q) || !detail::side_defined(solver, b, pose.q)) {
+      continue;  // a crossing, or poses on the meeting point: step 4's business
+    }
+    const double t0 = model.driver_from_user(first.driver);
+    const double meet = detail::change_point(solver, b, t0, first.q, t);
+    if (std::isfinite(meet)) record_touch(solver, watch, sweep, b, t0, first.q, t, meet, pose.signature[b]);
+  }
 }
 
 // The crank's walk and sub-step length (model units): 2 degrees; a slider's: a 50th of the walk,
@@ -447,7 +535,7 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   Eigen::VectorXd last_good = converged(at) ? at.q : solver.reference();
   double last_good_t = converged(at) ? t_start : reference;
   bool have_good = converged(at);
-  BranchWatch watch{solver.reference_signature(), at_crossing};
+  BranchWatch watch{solver.reference_signature(), at_crossing, std::vector<int>(solver.blocks().size(), -1)};
   const double shortest = shortest_length(model);
   // 2. Each pose from the one before, through sub-steps each from the predictor; a failed pose is
   // retried from the last good one by halving.
@@ -481,12 +569,11 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
     }
     if (ok) {
       // 4. The branch (compared with the reference pose across the walk for the first pose).
-      const double from_t = sweep.poses.empty() ? reference : last_good_t;
-      const Eigen::VectorXd& from_q = sweep.poses.empty() ? solver.reference() : last_good;
-      if (watch_branch(poses, watch, sweep, pose, from_t, from_q, t, !sweep.poses.empty())) {
+      if (watch_branch(poses, watch, sweep, pose, t, !sweep.poses.empty())) {
         pose = make_pose(solver, user, t, LinkageSolution{pose.q, pose.outcome, -1});  // the tangent's guess: J is regular past the crossing
         poses.forget();
       }
+      watch_tangency(solver, watch, sweep, pose, t);
       if (!pose_verified(solver, pose, shortest)) sweep.closed_form_verified = false;
       pose.branch_kept = sweep.branch_kept;
       last_good = pose.q;

@@ -118,8 +118,9 @@ inline double linkage_condition(const LinkageModel& model, double t, const Eigen
 
 // The largest differences between the velocity and acceleration from the Jacobian and those from
 // finite differences of positions solved at t +- k h (central, 2nd order, h = 1e-5 for the velocity;
-// the 7-point stencil, 6th order, h = 0.01 for the acceleration). Every position, the pose's own
-// included, is solved again from q_near by Newton to 64 eps |q|.
+// the 7-point stencil, 6th order, h = 0.01 and 0.005 for the acceleration, the finer one compared,
+// their spread allowed). Every position, the pose's own included, is solved again from q_near by
+// Newton to 64 eps |q|, outwards along the pose's branch.
 struct DerivativeCheck {
   double velocity_difference = 0.0;
   double acceleration_difference = 0.0;
@@ -130,6 +131,7 @@ struct DerivativeCheck {
   bool solved = true;                // false when a neighbouring pose did not solve
   bool singular = false;             // J is singular at the pose (a crossing): its kinematics are differences already
   double condition = 1.0;            // kappa_2(J) at the pose
+  double acceleration_reference_spread = 0.0;  // |stencil(h) - stencil(h/2)|: how far the reference itself is sure
   // Relative readings, in the units' own scale: difference / (max |qdot| + the mechanism's size).
   double velocity_relative() const { return velocity_difference / (velocity_scale + velocity_reference); }
   double acceleration_relative() const { return acceleration_difference / (acceleration_scale + acceleration_reference); }
@@ -138,7 +140,12 @@ struct DerivativeCheck {
   // acceleration's weights): about 1.4e-9 kappa and 9e-10 kappa; ten times that, over the
   // truncation and rounding of a regular pose (below 1e-8).
   double velocity_allowed() const { return 1e-6 + 1.4e-8 * condition; }
-  double acceleration_allowed() const { return 1e-5 + 9e-9 * condition; }
+  // Plus the reference's own spread: where the motion turns within a stencil's width (a near-meeting
+  // of a dyad's solutions) the 7-point stencils with h and h/2 disagree, and neither is a reference
+  // finer than that.
+  double acceleration_allowed() const {
+    return 1e-5 + 9e-9 * condition + 2.0 * acceleration_reference_spread / (acceleration_scale + acceleration_reference);
+  }
   bool agrees() const { return velocity_relative() <= velocity_allowed() && acceleration_relative() <= acceleration_allowed(); }
 };
 DerivativeCheck check_derivatives(const LinkageSolver& solver, double t, const Eigen::VectorXd& q_near);
