@@ -6,8 +6,22 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace numlab::mechanisms {
+
+Eigen::SparseMatrix<double> linkage_sparse_jacobian(const Eigen::MatrixXd& J) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(8 * J.rows()));
+  for (Eigen::Index c = 0; c < J.cols(); ++c) {
+    for (Eigen::Index r = 0; r < J.rows(); ++r) {
+      if (J(r, c) != 0.0) entries.emplace_back(static_cast<int>(r), static_cast<int>(c), J(r, c));
+    }
+  }
+  Eigen::SparseMatrix<double> sparse(J.rows(), J.cols());
+  sparse.setFromTriplets(entries.begin(), entries.end());
+  return sparse;
+}
 
 namespace {
 
@@ -72,7 +86,7 @@ double inverse_one_norm_estimate(Eigen::Index n, Solve solve, SolveTransposed so
 // and of ||J^-1||_inf = ||J^-T||_1 from it, a handful of sparse solves each: time about linear in
 // the number of joints.
 LinkageConditioning estimated_linkage_conditioning(const Eigen::MatrixXd& dense) {
-  const Eigen::SparseMatrix<double> J = dense.sparseView();
+  const Eigen::SparseMatrix<double> J = linkage_sparse_jacobian(dense);
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   lu.compute(J);
   if (lu.info() != Eigen::Success) return {infinity, infinity};  // singular to working precision
@@ -98,7 +112,7 @@ bool sparse_linkage_kinematics(const LinkageModel& model, double t, const Eigen:
   Eigen::VectorXd phi_t, gamma;
   model.jacobian(q, t, dense);
   model.driver_derivative(q, t, phi_t);
-  const Eigen::SparseMatrix<double> J = dense.sparseView();
+  const Eigen::SparseMatrix<double> J = linkage_sparse_jacobian(dense);
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   lu.compute(J);
   if (lu.info() != Eigen::Success) {

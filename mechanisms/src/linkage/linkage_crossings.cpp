@@ -22,8 +22,11 @@ double dyad_size(const LinkageSolver& solver, const LinkageBlock& block, const E
 
 }  // namespace
 
-double margin_along(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t) {
-  const Eigen::VectorXd velocity = linkage_velocity(solver.model(), t0, q0);
+namespace {
+
+// The margin at t along the closed form from the tangent's prediction (q0 + velocity (t - t0)).
+double margin_from(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0,
+                   const Eigen::VectorXd& velocity, double t) {
   // The margin reads only the dyad's centres, which the blocks before it placed: it is defined even
   // where rounding makes this dyad itself fail at the meeting point.
   const Eigen::VectorXd start = velocity.allFinite() ? Eigen::VectorXd(q0 + velocity * (t - t0)) : q0;
@@ -32,15 +35,23 @@ double margin_along(const LinkageSolver& solver, std::size_t b, double t0, const
   return earlier_failed ? -1.0 : solver.dyad_margins(closed.q)[b];
 }
 
+}  // namespace
+
+double margin_along(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t) {
+  return margin_from(solver, b, t0, q0, linkage_velocity(solver.model(), t0, q0), t);
+}
+
 double contact_order(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double meet, double d) {
-  const double far = margin_along(solver, b, t0, q0, meet + d), near = margin_along(solver, b, t0, q0, meet + 0.5 * d);
+  const Eigen::VectorXd velocity = linkage_velocity(solver.model(), t0, q0);
+  const double far = margin_from(solver, b, t0, q0, velocity, meet + d), near = margin_from(solver, b, t0, q0, velocity, meet + 0.5 * d);
   return far > 0.0 && near > 0.0 ? std::log2(far / near) : std::numeric_limits<double>::quiet_NaN();
 }
 
 double change_point(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t1,
                     bool at_start) {
   if (!solver.blocks()[b].dyad()) return std::numeric_limits<double>::quiet_NaN();
-  const auto margin_at = [&](double t) { return margin_along(solver, b, t0, q0, t); };
+  const Eigen::VectorXd velocity = linkage_velocity(solver.model(), t0, q0);
+  const auto margin_at = [&](double t) { return margin_from(solver, b, t0, q0, velocity, t); };
   constexpr double golden = 0.6180339887498949;
   double a = t0, c = t1;
   for (int i = 0; i < 80 && std::abs(c - a) > 1e-12 * (1.0 + std::abs(t0)); ++i) {

@@ -6,15 +6,48 @@
 #include <limits>
 #include <optional>
 
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
 #include "linkage_crossings.hpp"
+#include "numlab/mechanisms/linkage/linkage_conditioning.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 
 namespace numlab::mechanisms {
+
+namespace {
+
+// Newton to `tolerance` on J's sparse LU (a few nonzeros per row), for models beyond 100 unknowns
+// where a dense LU per step is O(n^3); at most 60 steps, each of which must not make ||Phi|| grow
+// tenfold.
+std::optional<Eigen::VectorXd> sparse_newton(const LinkageModel& model, double s, Eigen::VectorXd q, double tolerance) {
+  Eigen::VectorXd f;
+  Eigen::MatrixXd J;
+  for (int k = 0; k <= 60; ++k) {
+    model.residual(q, s, f);
+    const double norm = f.size() == 0 ? 0.0 : f.lpNorm<Eigen::Infinity>();
+    if (!std::isfinite(norm)) return std::nullopt;
+    if (norm <= tolerance) return q;
+    if (k == 60) break;
+    model.jacobian(q, s, J);
+    const Eigen::SparseMatrix<double> sparse = linkage_sparse_jacobian(J);
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    lu.compute(sparse);
+    if (lu.info() != Eigen::Success) return std::nullopt;
+    const Eigen::VectorXd dx = lu.solve(-f);
+    if (lu.info() != Eigen::Success || !dx.allFinite()) return std::nullopt;
+    q += dx;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 std::optional<Eigen::VectorXd> detail::solve_to_rounding(const LinkageSolver& solver, double s, const Eigen::VectorXd& start) {
   nonlinear::NewtonOptions newton = solver.options().newton;
   const double scale = (start.size() == 0 ? 0.0 : start.lpNorm<Eigen::Infinity>()) + solver.size();
   newton.residual_tolerance = 64.0 * std::numeric_limits<double>::epsilon() * scale;
+  if (start.size() > linkage_exact_conditioning_limit) return sparse_newton(solver.model(), s, start, newton.residual_tolerance);
   newton.max_iterations = 60;  // linear convergence at a singular pose halves the error each step
   newton.damped = false;
   const LinkageSystem system(solver.model(), s);

@@ -1,5 +1,6 @@
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 
+#include "numlab/mechanisms/linkage/linkage_conditioning.hpp"
 #include "numlab/mechanisms/linkage/linkage_fast_solver.hpp"
 #include "branch_predictor.hpp"
 #include "linkage_crossings.hpp"
@@ -206,6 +207,11 @@ LinkageSolution continue_to(PoseSolver& poses, double from, double to, const Eig
 }  // namespace
 
 Eigen::VectorXd linkage_velocity(const LinkageModel& model, double t, const Eigen::VectorXd& q) {
+  if (q.size() > linkage_exact_conditioning_limit) {  // the sparse LU: about linear in the joints
+    Eigen::VectorXd velocity, acceleration;
+    sparse_linkage_kinematics(model, t, q, velocity, acceleration);
+    return velocity;
+  }
   Eigen::MatrixXd J;
   Eigen::VectorXd phi_t;
   model.jacobian(q, t, J);
@@ -215,6 +221,10 @@ Eigen::VectorXd linkage_velocity(const LinkageModel& model, double t, const Eige
 
 void linkage_kinematics(const LinkageModel& model, double t, const Eigen::VectorXd& q, Eigen::VectorXd& velocity,
                         Eigen::VectorXd& acceleration) {
+  if (q.size() > linkage_exact_conditioning_limit) {  // the same two solves on the sparse LU
+    sparse_linkage_kinematics(model, t, q, velocity, acceleration);
+    return;
+  }
   Eigen::MatrixXd J;
   Eigen::VectorXd phi_t, gamma;
   model.jacobian(q, t, J);
@@ -472,6 +482,7 @@ void watch_tangency(const LinkageSolver& solver, const BranchWatch& watch, Linka
   const std::vector<double> m0 = solver.dyad_margins(first.q), m1 = solver.dyad_margins(middle.q), m2 = solver.dyad_margins(pose.q);
   for (std::size_t b = 0; b < m1.size(); ++b) {
     if (!(m1[b] <= m0[b] && m1[b] <= m2[b])) continue;  // not a local minimum (NaN: not a dyad)
+    if (!(m1[b] <= 1e-3 * solver.size())) continue;     // far from meeting (as in step 5)
     const bool noted = std::any_of(sweep.crossings.begin(), sweep.crossings.end(), [&](const LinkageCrossing& c) {
       return c.block == static_cast<int>(b) && (c.driver - first.driver) * (c.driver - pose.driver) <= 0.0;
     });

@@ -13,12 +13,17 @@
 //     the sweep's closed-form bound needs.
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 
 namespace numlab::mechanisms {
 
 inline constexpr Eigen::Index linkage_exact_conditioning_limit = 100;
+
+// J's nonzeros as a sparse matrix, in one column-major pass (Eigen's sparseView() inserts entry by
+// entry: it took most of a 300-joint sweep's time).
+Eigen::SparseMatrix<double> linkage_sparse_jacobian(const Eigen::MatrixXd& J);
 
 // kappa_2 and ||J^-1||_2 from the SVD of J (any size).
 LinkageConditioning exact_linkage_conditioning(const Eigen::MatrixXd& J);

@@ -102,11 +102,13 @@ LinkageCycle solve_linkage_cycle(const LinkageSolver& solver, double start, doub
 // The velocity alone: J qdot = -Phi_t.
 Eigen::VectorXd linkage_velocity(const LinkageModel& model, double t, const Eigen::VectorXd& q);
 
-// Velocity and acceleration at a solved pose (model units for t).
+// Velocity and acceleration at a solved pose (model units for t); beyond 100 unknowns from J's
+// sparse LU (velocity and acceleration NaN where it finds J singular).
 void linkage_kinematics(const LinkageModel& model, double t, const Eigen::VectorXd& q, Eigen::VectorXd& velocity,
                         Eigen::VectorXd& acceleration);
 
-// kappa_2 of J at a pose, and ||J^-1||_2 = 1 / sigma_min.
+// kappa_2(J) and ||J^-1||_2 = 1 / sigma_min at a pose, up to 100 unknowns; beyond, kappa_1 estimated
+// and an estimated upper bound of ||J^-1||_2 (linkage_conditioning.hpp).
 struct LinkageConditioning {
   double condition = 0.0;
   double inverse_norm = 0.0;
