@@ -37,10 +37,6 @@ double margin_from(const LinkageSolver& solver, std::size_t b, double t0, const 
 
 }  // namespace
 
-double margin_along(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t) {
-  return margin_from(solver, b, t0, q0, linkage_velocity(solver.model(), t0, q0), t);
-}
-
 double contact_order(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double meet, double d) {
   const Eigen::VectorXd velocity = linkage_velocity(solver.model(), t0, q0);
   const double far = margin_from(solver, b, t0, q0, velocity, meet + d), near = margin_from(solver, b, t0, q0, velocity, meet + 0.5 * d);

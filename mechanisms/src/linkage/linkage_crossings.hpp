@@ -19,10 +19,6 @@ namespace numlab::mechanisms::detail {
 double change_point(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t1,
                     bool at_start = true);
 
-// Dyad block b's margin at t along the closed form continued from (t0, q0) (-1 where a block before
-// it cannot close).
-double margin_along(const LinkageSolver& solver, std::size_t b, double t0, const Eigen::VectorXd& q0, double t);
-
 // The order of the margin's contact with zero at `meet`, from its values at meet + d and meet + d/2:
 // log2 of their ratio. 2 where two branches cross (the margin grows like the square of the distance),
 // 4 and more where they touch without crossing; NaN where a margin is not positive.

@@ -48,9 +48,7 @@ class PoseSolver {
     history_.reset(n);
     prediction_.resize(n);
     tolerance_ = solver.options().newton.residual_tolerance;
-    for (const Constraint& c : solver.model().constraints()) {
-      if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) length_ = std::max(length_, c.length);
-    }
+    length_ = solver.size();
   }
   const LinkageSolver& solver() const { return solver_; }
   LinkageFastOutcome solve(double t, Eigen::VectorXd& q) {
@@ -107,12 +105,6 @@ class PoseSolver {
                                    2.0 * std::sqrt(2.0 * length_ * tolerance_);
   }
   bool jumped(const Eigen::VectorXd& q) const { return line_error_ >= 0.0 && jump(q) > allowed_jump(); }
-  // Step 5 of the continuation: each dyad near its meeting point on the side the smooth branch has
-  // (linkage_crossings.hpp).
-  void keep_smooth_sides(double t0, const Eigen::VectorXd& q0, double t, Eigen::VectorXd& q) {
-    detail::keep_smooth_sides(solver_, t0, q0, t, q);
-  }
-
   // Whether a solved q (in place) stays on the branch. Near a singular pose the residual test leaves
   // a pose up to sqrt(2 L tol) from the root, and on a crossing the two branches are that close: a
   // pose further from the prediction than the strict allowance (without that term) is solved again
@@ -167,7 +159,7 @@ LinkageFastOutcome continue_in_place(PoseSolver& poses, double from, double to, 
     iterations += outcome.outcome.iterations;
     const bool jumped = outcome.outcome.status == Status::converged && !poses.settle(next, trial);
     if (outcome.outcome.status == Status::converged && !jumped) {
-      poses.keep_smooth_sides(at, q, next, trial);
+      detail::keep_smooth_sides(poses.solver(), at, q, next, trial);  // 5. the side near a meeting point
       q.swap(trial);
       poses.record(next, q);
       last = outcome;
@@ -249,10 +241,7 @@ double closed_form_bound(const LinkageSolver& solver, double t, const Eigen::Vec
   const LinkageModel& model = solver.model();
   Eigen::VectorXd f;
   model.residual(q, t, f);
-  double longest = 0.0;
-  for (const Constraint& c : model.constraints()) {
-    if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) longest = std::max(longest, c.length);
-  }
+  const double longest = solver.size();
   const double n = static_cast<double>(q.size());
   const double size = (q.size() == 0 ? 0.0 : q.lpNorm<Eigen::Infinity>()) + longest;
   const double r = f.norm() + n * std::numeric_limits<double>::epsilon() * size;
