@@ -1,5 +1,5 @@
 #pragma once
-// Lab `basins`: from which starting guesses Newton reaches which assembly mode (issue 18, part 3).
+// Lab `basins`: from which starting guesses Newton reaches which assembly mode.
 
 #include "lessons/lab.hpp"
 

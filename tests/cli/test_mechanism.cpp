@@ -71,7 +71,7 @@ TEST_CASE("mechanism: bad input gets one error line and exit 2", "[cli][mechanis
 TEST_CASE("bench jansen: JSON rows with solver, tolerance, time and error", "[cli][bench][mechanism]") {
   const auto out = run_json("bench jansen", "--quick", 0);
   // full x4 linear solvers, full-std-sin, sequential, sequential-textbook, analytic, gsl-newton, and
-  // jansen.toml's derived model by full, sequential and analytic (issue 17)
+  // jansen.toml's derived model by full, sequential and analytic
   REQUIRE(out["rows"].size() == 12);
   CHECK(out["rows"][9]["solver"] == "file-full");
   CHECK(out["rows"][10]["solver"] == "file-sequential");

@@ -1,4 +1,4 @@
-// The shared flags under hostile input (issue 14): every value checked as it is parsed, every flag
+// The shared flags under hostile input (docs/cli.md): every value checked as it is parsed, every flag
 // honoured where it is accepted or rejected with where it applies, output files that never land
 // outside the folder asked for nor on an input, and --step with and without a terminal.
 

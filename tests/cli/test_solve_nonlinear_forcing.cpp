@@ -1,4 +1,4 @@
-// `numlab solve nonlinear --forcing` (issue 18, inexact Newton) against docs/cli.md: the defect and
+// `numlab solve nonlinear --forcing` (inexact Newton) against docs/cli.md: the defect and
 // its fix on helical valley with Gauss-Seidel, and the flag refused where it does not apply.
 
 #include <catch2/catch.hpp>

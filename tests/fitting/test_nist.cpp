@@ -180,7 +180,7 @@ TEST_CASE("models that are not a polynomial with intercept carry no certified va
   CHECK_THROWS_WITH(read_nist_data(nist_path("Longley", ".dat")), Catch::Contains("no 'x' column"));
 }
 
-// Issue 14: a fit is converged only when the least-squares check passes (least_squares_check.hpp).
+// A fit is converged only when the least-squares check passes (least_squares_check.hpp).
 // Every method on every NIST polynomial set: each converged fit passes it, with R^2 in [0, 1].
 TEST_CASE("every converged fit on NIST's sets passes the least-squares check", "[fitting][nist][honesty]") {
   for (const std::string& name : polynomial_sets) {

@@ -194,7 +194,7 @@ TEST_CASE("a closed path splits at its extreme x into an upper and a lower arc",
   CHECK_THROWS_WITH(split_at_extreme_x(Eigen::VectorXd::Ones(5), Eigen::VectorXd::Zero(5)), Catch::Contains("same x"));
 }
 
-// Issue 14: normal-scaled on x ~ 1e200 said converged with R^2 = -17 (degree 2). The fit in t is
+// normal-scaled on x ~ 1e200 would say converged with R^2 = -17 (degree 2). The fit in t is
 // fine, but mapped back to powers of x the x^2 coefficient is ~1e-400: it underflows to 0, so the
 // reported p(x) is not the fit. The least-squares check (least_squares_check.hpp) catches it.
 TEST_CASE("a fit whose coefficients in powers of x are beyond the doubles is not converged", "[fitting][honesty]") {

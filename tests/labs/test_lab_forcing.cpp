@@ -1,4 +1,4 @@
-// The newton lab's inexact-Newton step (issue 18): the trade-off sentence against made-up rows, and
+// The newton lab's inexact-Newton step (forcing terms): the trade-off sentence against made-up rows, and
 // against the rows the lab itself printed and saved.
 
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
-// The sentence builders of labs/lessons/lab_sentences.hpp, fed the numbers the labs printed in
-// issue 14 (where the fixed texts contradicted them) and the cases on either side.
+// The sentence builders of labs/lessons/lab_sentences.hpp, fed numbers the labs have printed (cases
+// where a fixed text would contradict them) and the cases on either side of each threshold.
 
 #include <catch2/catch.hpp>
 
@@ -26,7 +26,7 @@ TEST_CASE("Digits lost are log10(forward error / eps), judged against kappa * ep
   const double eps = std::numeric_limits<double>::epsilon();
   CHECK(digits_lost(3.17e-11) == Approx(std::log10(3.17e-11 / eps)));
   CHECK(digits_lost(1e-17) == 0.0);
-  // GSL LU beside its 3e-11 (issue 14): 5.2 digits lost, not "every digit kept".
+  // GSL LU's forward error of 3e-11 on a nearly singular system: 5.2 digits lost, not "every digit kept".
   CHECK_THAT(digits_lost_sentence("GSL LU", 3.17e-11, "d = 1e-06", 4e6),
              Contains("3.17e-11, at d = 1e-06: 5.2 digits lost") && Contains("within the kappa * eps = 8.9e-10"));
   CHECK_THAT(digits_lost_sentence("X", 1e-3, "d = 1", 10.0), Contains("beyond"));
@@ -48,7 +48,7 @@ TEST_CASE("Speed sentences say which is faster, by the measured ratio, and why",
   CHECK(speed_ratio_phrase(1.0, 2.07) == "2.07x faster than");
   CHECK(speed_ratio_phrase(1.46, 1.0) == "1.46x slower than");
   CHECK(speed_ratio_phrase(1.0, 1.005) == "as fast as");
-  // The Jansen numbers of issue 14: sequential 2.07x faster, with more but cheaper iterations.
+  // Measured Jansen numbers: sequential 2.07x faster, with more but cheaper iterations.
   const std::string blocks = block_newton_sentence({"sequential Newton", 1e-4, 1462}, {"full Newton", 2.07e-4, 379}, 8);
   CHECK_THAT(blocks, Contains("Sequential Newton is 2.07x faster than full Newton") &&
                          Contains("3.9x as many iterations (1462 block iterations against 379)") &&

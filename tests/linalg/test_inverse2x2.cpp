@@ -119,8 +119,8 @@ TEST_CASE("Newton's 2x2 path (solve_prechecked) agrees with solve2x2, scaled or 
         Status::non_finite);
 }
 
-// Issue 14: 1e-320 I (subnormal) gave non_finite: the scaling multiplied by 2^1063, beyond the
-// doubles. Every scale below is a power of two times small integers, so A and b are exact, and
+// A subnormal matrix such as 1e-320 I must not give non_finite: a scaling by 2^1063 would go beyond
+// the doubles. Every scale below is a power of two times small integers, so A and b are exact, and
 // x = [2 1; 1 3]^-1 (1, 2) = (0.2, 0.6) at every scale; Eigen's LU is the second reference where
 // its own elimination keeps its digits (among subnormals its multipliers and updates lose bits:
 // at 2^-1070 it is 1e-2 off, while the closed form, scaled first, is not).

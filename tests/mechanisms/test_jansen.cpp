@@ -241,7 +241,7 @@ TEST_CASE("Evaluating a closure changes nothing: the same point gives the same b
 
 namespace {
 
-// Issue 14 on the Jansen sweeps: a bounded walk-in whatever the angle or the sweep's step, and a
+// The Jansen sweeps' honesty: a bounded walk-in whatever the angle or the sweep's step, and a
 // converged status (and "branch kept") only when the closed form agrees within what the
 // tolerance and the conditioning justify (closed_form_bound.hpp).
 

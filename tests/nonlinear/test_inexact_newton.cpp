@@ -1,4 +1,4 @@
-// Inexact Newton (issue 18, part 4): the inner Gauss-Seidel solve stops at ||J dx + f|| <= eta_k ||f||
+// Inexact Newton: the inner Gauss-Seidel solve stops at ||J dx + f|| <= eta_k ||f||
 // (forcing_term.hpp), so helical valley converges where the old fixed inner tolerance stalled.
 
 #include <catch2/catch.hpp>

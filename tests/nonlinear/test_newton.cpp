@@ -232,7 +232,7 @@ TEST_CASE("Newton rejects bad input", "[newton][bad-input]") {
   CHECK_THROWS_WITH(make_test_problem("beale"), Contains("unknown problem 'beale'"));
 }
 
-// Issue 14: the step test alone once said converged with ||f||_inf = 7.36. From x1 = 1e300 the
+// The step test alone would say converged with ||f||_inf = 7.36. From x1 = 1e300 the
 // trigonometric problem's f is a sum of cosines (bounded), J is tiny in column 1, and Newton's
 // step in x1 is relatively far below 1e-12 (1 + ||x||): the iterates stop moving, with no root.
 TEST_CASE("A small step is not a root: the step test alone gives no_progress, with the numbers",

@@ -1,4 +1,4 @@
-// numlab's command-line robustness test (issue 14): runs the rows of cases.tsv, each in a fresh
+// numlab's command-line robustness test (docs/robustness.md): runs the rows of cases.tsv, each in a fresh
 // folder of prepared input files, and checks what docs/cli.md promises for hostile input.
 //
 //   test_robustness [ID ...]     the named rows (all rows when none is named)

@@ -40,7 +40,7 @@ std::string four_bar(const std::vector<std::pair<std::string, std::string>>& cha
   return text;
 }
 
-// Linkage description files (issue 17's bad-input list), each named for what is wrong with it.
+// Linkage description files, each breaking one rule of docs/linkage-files.md and named for what is wrong with it.
 // A key or table header of 200,000 parts, "a.a.a...": toml++ overflowed its stack on them.
 std::string deeply_nested(const std::string& first, const std::string& last) {
   std::string text = first;
