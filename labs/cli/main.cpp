@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bench/bench_linear.hpp"
+#include "cli/build_info.hpp"
 #include "cli/cli_common.hpp"
 #include "commands/basins_command.hpp"
 #include "commands/exercise_command.hpp"
@@ -179,6 +180,12 @@ int main(int argc, char** argv) {
   using namespace numlab::cli;
   CLI::App app{"numlab - a numerical-methods teaching toolkit: hand-written solvers, traced, checked against GSL"};
   app.require_subcommand(0, 1);
+  app.set_version_flag("--version", fmt::format("numlab {} (git commit {})", build_version(), build_commit()),
+                       "Print numlab's version and the git commit it was built from, and exit");
+  app.footer(fmt::format("Exit codes: {} success; {} the method ran but did not succeed (a status other than\n"
+                         "converged, a failed check, stopped with q); {} bad usage or bad input (one line on\n"
+                         "stderr says what was wrong).",
+                         exit_success, exit_method_failed, exit_bad_input));
   CLI::App* solve = app.add_subcommand("solve", "Solve one problem with one method");
   solve->require_subcommand(0, 1);
   const SolveLinearCommand solve_linear(*solve);
@@ -197,6 +204,8 @@ int main(int argc, char** argv) {
     return app.exit(help);
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help);
+  } catch (const CLI::CallForVersion& version) {
+    return app.exit(version);
   } catch (const CLI::ParseError& error) {
     return bad_input(parse_error_in_own_words(error, app));
   }

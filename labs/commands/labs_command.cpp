@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "lessons/lab.hpp"
+#include "output/table.hpp"
 
 namespace numlab::cli {
 
@@ -27,7 +28,9 @@ LabsCommand::LabsCommand(CLI::App& app) {
 }
 
 int LabsCommand::list() const {
-  for (const Lab& lab : all_labs()) std::cout << fmt::format("{:<12} {}\n", lab.name, lab.summary);
+  Table table({"name", "what it shows"});
+  for (const Lab& lab : all_labs()) table.add_row({lab.name, lab.summary});
+  table.print_within(std::cout, terminal_width);
   std::cout << "\nRun one with: numlab lab NAME [--step]\n";
   return exit_success;
 }

@@ -67,15 +67,17 @@ int ModelsCommand::run() const {
     std::cout << out.dump(2) << '\n';
     return exit_success;
   }
-  Table table({"name", "title", "joints", "unknowns", "driver", "blocks in solving order"});
+  Table table({"name", "joints", "unknowns", "driver", "title; blocks in order"});
   for (const auto& e : entries) {
-    table.add_row({e.name, e.title, std::to_string(e.joints), std::to_string(e.unknowns), e.driver, e.blocks});
+    table.add_row({e.name, std::to_string(e.joints), std::to_string(e.unknowns), e.driver, e.title + "\n" + e.blocks});
   }
-  table.print(std::cout);
-  std::cout << fmt::format("{} models in {}; run one with: numlab mechanism NAME --crank 30 (the built-in jansen, "
-                           "jansen10 and mustang are the seeds' hand-written models; the files are jansen.toml and "
-                           "mustang.toml: numlab mechanism jansen.toml ...)\n",
-                           entries.size(), dir);
+  table.print_within(std::cout, terminal_width);
+  const std::string closing = fmt::format(
+      "{} models in {}; run one with: numlab mechanism NAME --crank 30 (the built-in jansen, jansen10 and mustang "
+      "are the seeds' hand-written models; the files are jansen.toml and mustang.toml: numlab mechanism "
+      "jansen.toml ...)",
+      entries.size(), dir);
+  for (const std::string& line : wrap_words(closing, terminal_width)) std::cout << line << '\n';
   return exit_success;
 }
 
