@@ -47,6 +47,7 @@ PoseOutcome TextbookSequentialJansen::solve(double crank_angle, Eigen::VectorXd&
       return total;
     }
   }
+  total.status = Status::converged;
   return total;
 }
 

@@ -60,7 +60,7 @@ class SequentialEight final : public JansenPoseSolver {
                     block(1, crank + L.l1 * direction(0, 0), L.l3, L.l4) &&
                     block(2, crank, L.l6, L.l7) &&
                     block(3, crank + L.l1 * direction(0, 0) + L.l3 * direction(1, 0) - L.l7 * direction(2, 1), L.l5, L.l8);
-    (void)ok;  // a failed block has set total.status, and the blocks after it were not tried
+    if (ok) total.status = Status::converged;  // else a failed block has set it; the blocks after it were not tried
     return total;
   }
 

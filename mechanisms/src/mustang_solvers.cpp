@@ -40,6 +40,7 @@ class Sequential final : public MustangPoseSolver {
         break;
       }
     }
+    if (failed_loop_ == 0) outcome.status = Status::converged;
     outcome.residual_norm = residual_norm_of(closure_, x);
     return outcome;
   }

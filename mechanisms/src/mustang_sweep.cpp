@@ -231,6 +231,7 @@ bool MustangSweepStepper::finish() {
   }
   sweep.poses = std::move(poses);
   poses.clear();
+  sweep.status = Status::converged;  // unless a limit was reached or a pose is not verified
   for (const MustangLimit* limit : {&sweep.lower, &sweep.upper}) {
     if (limit->reached && sweep.status == Status::converged) sweep.status = limit->status;
   }

@@ -85,23 +85,13 @@ const gsl_multiroot_fdfsolver_type* jacobian_type(const std::string& name) {
   return found == types.end() ? nullptr : found->second;
 }
 
-// GSL's error codes as numlab statuses.
-Status status_for(int gsl_status) {
-  switch (gsl_status) {
-    case GSL_EBADFUNC: return Status::non_finite;
-    case GSL_ENOPROG:
-    case GSL_ENOPROGJ: return Status::no_progress;
-    case GSL_ESING:
-    case GSL_EDOM: return Status::singular;
-    default: return Status::no_progress;
-  }
-}
-
+// GSL's error codes as stop reasons (their status is status_of(reason), as for every method).
 StopReason reason_for(int gsl_status) {
-  switch (status_for(gsl_status)) {
-    case Status::non_finite: return StopReason::non_finite;
-    case Status::singular: return StopReason::singular_jacobian;
-    default: return StopReason::no_progress;
+  switch (gsl_status) {
+    case GSL_EBADFUNC: return StopReason::non_finite;
+    case GSL_ESING:
+    case GSL_EDOM: return StopReason::singular_jacobian;
+    default: return StopReason::no_progress;  // GSL_ENOPROG, GSL_ENOPROGJ and anything else
   }
 }
 
@@ -299,11 +289,11 @@ void GslMultiroot::start(const Eigen::VectorXd& x0) {
   counts_.step_norm = 0.0;  // no step yet
   if (set_status != GSL_SUCCESS) {
     counts_.message = gsl_strerror(set_status);
-    finish(status_for(set_status), reason_for(set_status));
+    finish(reason_for(set_status));
   } else if (gsl_multiroot_test_residual(solver.f(), options_.residual_tolerance) == GSL_SUCCESS) {
-    finish(Status::converged, StopReason::residual_small);
+    finish(StopReason::residual_small);
   } else if (counts_.iterations >= options_.max_iterations) {
-    finish(Status::max_iterations, StopReason::iteration_limit);
+    finish(StopReason::iteration_limit);
   }
 }
 
@@ -320,25 +310,25 @@ bool GslMultiroot::step() {
   // 2. GSL's stop tests, in order.
   if (status != GSL_SUCCESS) {
     counts_.message = gsl_strerror(status);
-    finish(status_for(status), reason_for(status));
+    finish(reason_for(status));
   } else if (!x_.allFinite()) {
-    finish(Status::non_finite, StopReason::non_finite);
+    finish(StopReason::non_finite);
   } else if (gsl_multiroot_test_residual(solver.f(), options_.residual_tolerance) == GSL_SUCCESS) {
-    finish(Status::converged, StopReason::residual_small);
+    finish(StopReason::residual_small);
   } else if (const HybridState* region = solver.trust_region()) {
     // A trust-region type: one rejected step may be tiny while the radius is still wide (the next
     // step, from the updated model, may well succeed). It stops as MINPACK's hybrj does, when the
     // radius itself is small: delta <= step_tolerance ||D x||_2. Not a root either.
     if (region->radius() <= options_.step_tolerance * region->scaled_norm(solver.x())) {
-      finish(Status::no_progress, StopReason::radius_small);
+      finish(StopReason::radius_small);
     } else if (counts_.iterations >= options_.max_iterations) {
-      finish(Status::max_iterations, StopReason::iteration_limit);
+      finish(StopReason::iteration_limit);
     }
   } else if (gsl_multiroot_test_delta(solver.dx(), solver.x(), options_.step_tolerance, options_.step_tolerance) ==
              GSL_SUCCESS) {
-    finish(Status::no_progress, StopReason::step_small);  // test_delta alone: stopped moving, not a root
+    finish(StopReason::step_small);  // test_delta alone: stopped moving, not a root
   } else if (counts_.iterations >= options_.max_iterations) {
-    finish(Status::max_iterations, StopReason::iteration_limit);
+    finish(StopReason::iteration_limit);
   }
   notify();  // after the tests: the observer sees the verdict
   return running_;
@@ -358,9 +348,9 @@ NewtonResult<Eigen::Dynamic> GslMultiroot::result() const {
   return result;
 }
 
-bool GslMultiroot::finish(Status status, StopReason reason) {
+bool GslMultiroot::finish(StopReason reason) {
   const CallbackState& state = workspace_->state;
-  counts_.status = status;
+  counts_.status = status_of(reason);
   counts_.reason = reason;
   counts_.residual_norm = view(workspace_->solver->f()).lpNorm<Eigen::Infinity>();
   counts_.function_evaluations = state.function_evaluations;

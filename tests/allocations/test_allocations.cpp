@@ -139,7 +139,8 @@ TEST_CASE("Fixed-size Newton allocates nothing, in solve() or per iteration", "[
   // The sweep's closure, on the sine table (filled on first use: a static, not the heap).
   const numlab::mechanisms::JansenClosureOf<numlab::mechanisms::TableSines> tabled(JansenClosure::seed_crank_angle);
   nonlinear::Newton<numlab::mechanisms::JansenClosureOf<numlab::mechanisms::TableSines>> full_tabled(tabled, options);
-  nonlinear::Newton<test::FixedRosenbrock, linalg::ClosedForm2x2> two_by_two(test::FixedRosenbrock{}, options);
+  const test::FixedRosenbrock rosenbrock;  // Newton keeps a reference: a temporary here would dangle
+  nonlinear::Newton<test::FixedRosenbrock, linalg::ClosedForm2x2> two_by_two(rosenbrock, options);
   nonlinear::NewtonResult<8> result8, tabled8;
   nonlinear::NewtonResult<2> result2;
   const AllocationCount counted = allocations_during([&] {

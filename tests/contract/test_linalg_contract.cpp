@@ -1,6 +1,7 @@
 // The linear methods and the polynomial fit meet the stepper contract (numlab/solver.hpp): the
 // names, and a status that is `running` between steps and a verdict only after the last step.
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <vector>
 
@@ -77,6 +78,25 @@ TEST_CASE("GEPP: running through every column and unknown, converged after the l
   dynamic.start(singular, system.b);
   CHECK(steps_with_running_status(dynamic) <= 8);
   CHECK(dynamic.status() == Status::singular);
+}
+
+TEST_CASE("GEPP's iterations() counts pivot columns: k after step k, then n through back substitution",
+          "[contract][gepp][iterations]") {
+  const GeneratedSystem system = generate_system("random", 3, 5);
+  GaussElimination<3> gepp;
+  gepp.start(Matrix<3>(system.A), Vector<3>(system.b));
+  CHECK(gepp.iterations() == 0);
+  int steps = 0;
+  while (gepp.running()) {
+    gepp.step();
+    ++steps;
+    INFO("after step " << steps);
+    CHECK(gepp.iterations() == std::min(steps, 3));
+  }
+  CHECK(steps == 6);  // 3 pivot columns, 3 back-substituted unknowns
+  CHECK(gepp.status() == Status::converged);
+  CHECK(gepp.result().iterations == 3);
+  CHECK(GaussElimination<3>().solve(Matrix<3>(system.A), Vector<3>(system.b)).iterations == 3);  // the fast path too
 }
 
 TEST_CASE("Gauss-Seidel: running between sweeps, converged only after the last", "[contract][gauss-seidel]") {

@@ -196,6 +196,7 @@ class BothDyadNewtons final : public numlab::mechanisms::JansenPoseSolver {
         return total;
       }
     }
+    total.status = Status::converged;
     return total;
   }
 

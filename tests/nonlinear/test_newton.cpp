@@ -273,13 +273,14 @@ TEST_CASE("A tolerance that is infinite, NaN or negative is misuse, for every Ne
           "[newton][bad-input][honesty]") {
   using Catch::Matchers::Contains;
   const TestProblem problem = make_test_problem("rosenbrock");
+  const FixedRosenbrock rosenbrock;
   for (const double bad : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), -1e-9}) {
     INFO("tolerance " << bad);
     NewtonOptions residual_bad, step_bad;
     residual_bad.residual_tolerance = bad;
     step_bad.step_tolerance = bad;
     for (const NewtonOptions& options : {residual_bad, step_bad}) {
-      CHECK_THROWS_WITH(Newton<FixedRosenbrock>(FixedRosenbrock{}, options), Contains("finite number >= 0"));
+      CHECK_THROWS_WITH(Newton<FixedRosenbrock>(rosenbrock, options), Contains("finite number >= 0"));
       CHECK_THROWS_WITH(GslMultiroot(*problem.system, "hybridsj", options), Contains("finite number >= 0"));
     }
   }

@@ -11,7 +11,9 @@
 //   running()   true from start() until the last step;
 //   status()    Status::running until then, afterwards the verdict (numlab/status.hpp): no
 //               stepper says `converged` before it has finished;
-//   iterations() steps taken so far;
+//   iterations() the method's own count so far: the steps taken, except GEPP (pivot columns
+//               eliminated: n of its 2n steps) and the crank sweeps (poses solved); the table
+//               "What iterations() counts" in docs/architecture.md, held by tests/contract;
 //   x()         the current iterate (or solution);
 //   an observer whose on_step(const Stepper&, const Record&) is called after every step, attached
 //               with set_observer(); null by default, so an untraced solve pays nothing.

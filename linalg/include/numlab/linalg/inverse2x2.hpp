@@ -135,7 +135,7 @@ class ClosedForm2x2 {
       return result;
     }
     result.x = form.solve(b);
-    if (!std::isfinite(result.x(0)) || !std::isfinite(result.x(1))) result.status = Status::non_finite;
+    result.status = std::isfinite(result.x(0)) && std::isfinite(result.x(1)) ? Status::converged : Status::non_finite;
     return result;
   }
 

@@ -30,7 +30,7 @@ struct LinearResult {
   static constexpr double not_applicable = std::numeric_limits<double>::quiet_NaN();
 
   Vector<N> x = Vector<N>::Zero(N == Eigen::Dynamic ? 0 : N);  // the computed solution
-  Status status = Status::converged;      // see numlab/status.hpp
+  Status status = Status::running;        // until the method sets its verdict (numlab/status.hpp)
   int iterations = 0;                     // pivot columns (GEPP), sweeps (Gauss-Seidel), 1 (closed form)
   double residual_norm = not_applicable;  // ||b - A x||_inf of the original system
   double step_norm = not_applicable;      // last ||x_k - x_{k-1}||_inf (iterative methods)

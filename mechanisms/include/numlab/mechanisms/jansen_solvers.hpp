@@ -55,7 +55,7 @@ struct JansenPose {
 
 struct JansenSweep {
   std::vector<JansenPose> poses;  // the requested angles that were solved, in order
-  Status status = Status::converged;  // no_progress when every pose converged but one is not verified
+  Status status = Status::running;  // converged; no_progress when every pose converged but one is not verified
   int step_halvings = 0;           // how often a failed step was halved
   int walk_in_poses = 0;           // poses solved to walk from 1.57 rad to the first angle
   double worst_closed_form_distance = 0.0;
@@ -71,7 +71,7 @@ struct JansenSweepAngles {
   Eigen::MatrixXd angles;           // column i: the angles of pose i (only the first outcomes.size() are solved)
   std::vector<double> crank_deg;    // the crank angle of each solved pose
   std::vector<PoseOutcome> outcomes;
-  Status status = Status::converged;
+  Status status = Status::running;  // until the sweep has ended
   int step_halvings = 0;
   int walk_in_poses = 0;
 };

@@ -46,7 +46,7 @@ struct MustangLimit {
 
 struct MustangSweep {
   std::vector<MustangPose> poses;  // the requested angles that assembled, in the requested order
-  Status status = Status::converged;  // a limit's status; no_progress when a pose is not verified
+  Status status = Status::running;  // converged, a limit's status, or no_progress when a pose is not verified
   MustangLimit lower, upper;       // towards smaller and larger theta (limits' angles within half a turn of 45)
   int step_halvings = 0;
   bool branch_kept = true;         // every pose verified: within its bound of the closed form on the seed's

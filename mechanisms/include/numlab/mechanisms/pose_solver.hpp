@@ -13,7 +13,7 @@ namespace numlab::mechanisms {
 
 // How one pose solve went.
 struct PoseOutcome {
-  Status status = Status::converged;
+  Status status = Status::running;  // until the solver sets its verdict
   int iterations = 0;
   double residual_norm = 0.0;  // ||f||_inf of the whole closure at the end
 };

@@ -53,24 +53,24 @@ inline NewtonResult<Eigen::Dynamic> dogleg_solve(const DynamicSystem& system, co
   ++result.function_evaluations;
   double radius = 100.0 * std::max(result.x.norm(), 1.0);  // MINPACK's initial bound, factor 100
   linalg::GaussElimination<Eigen::Dynamic> gepp;
-  auto finish = [&](Status status, StopReason reason) {
-    result.status = status;
+  auto finish = [&](StopReason reason) {
+    result.status = status_of(reason);
     result.reason = reason;
     result.residual_norm = f.lpNorm<Eigen::Infinity>();
     return result;
   };
-  if (!f.allFinite()) return finish(Status::non_finite, StopReason::non_finite);
+  if (!f.allFinite()) return finish(StopReason::non_finite);
   while (true) {
     if (residual_small(f.lpNorm<Eigen::Infinity>(), options.residual_tolerance)) {
-      return finish(Status::converged, StopReason::residual_small);
+      return finish(StopReason::residual_small);
     }
-    if (result.iterations >= options.max_iterations) return finish(Status::max_iterations, StopReason::iteration_limit);
+    if (result.iterations >= options.max_iterations) return finish(StopReason::iteration_limit);
     ++result.iterations;
 
     // 1. J at x.
     system.jacobian(result.x, J);
     ++result.jacobian_evaluations;
-    if (!J.allFinite()) return finish(Status::non_finite, StopReason::non_finite);
+    if (!J.allFinite()) return finish(StopReason::non_finite);
 
     // 2. The Newton step, when J can be solved.
     const auto newton = gepp.solve(J, -f);
@@ -86,7 +86,7 @@ inline NewtonResult<Eigen::Dynamic> dogleg_solve(const DynamicSystem& system, co
     if (has_newton && newton.x.norm() <= radius) {
       p = newton.x;
     } else if (!has_newton || cauchy.norm() >= radius) {
-      if (g.norm() == 0.0) return finish(Status::no_progress, StopReason::step_small);  // a stationary point of phi
+      if (g.norm() == 0.0) return finish(StopReason::step_small);  // a stationary point of phi
       p = -(radius / g.norm()) * g;
     } else {
       // tau in [0, 1] with ||p_C + tau d|| = radius, d = p_N - p_C: the positive root of a quadratic.
@@ -121,7 +121,7 @@ inline NewtonResult<Eigen::Dynamic> dogleg_solve(const DynamicSystem& system, co
     }
     if (step_small(radius, result.x.lpNorm<Eigen::Infinity>(), options.step_tolerance) &&
         !residual_small(f.lpNorm<Eigen::Infinity>(), options.residual_tolerance)) {
-      return finish(Status::no_progress, StopReason::step_small);
+      return finish(StopReason::step_small);
     }
   }
 }

@@ -11,6 +11,7 @@ template <NonlinearSystem S>
 class AsDynamicSystem final : public DynamicSystem {
  public:
   explicit AsDynamicSystem(const S& system) : system_(system) {}
+  explicit AsDynamicSystem(const S&&) = delete;  // it keeps a reference: a temporary would dangle
   int dimension() const override { return system_.dimension(); }
   void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const override {
     Vector<S::size> fixed_f;

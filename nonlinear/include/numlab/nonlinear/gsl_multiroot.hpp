@@ -43,6 +43,7 @@ class GslMultiroot {
   // Throws std::invalid_argument for an unknown type, a tolerance that is negative or not finite,
   // an iteration limit below 1, or damping.
   GslMultiroot(const DynamicSystem& system, const std::string& type, NewtonOptions options = {});
+  GslMultiroot(const DynamicSystem&&, const std::string&, NewtonOptions = {}) = delete;  // system must outlive it
   ~GslMultiroot();
   GslMultiroot(const GslMultiroot&) = delete;
   GslMultiroot& operator=(const GslMultiroot&) = delete;
@@ -64,7 +65,7 @@ class GslMultiroot {
   const NewtonOptions& options() const { return options_; }
 
  private:
-  bool finish(Status status, StopReason reason);
+  bool finish(StopReason reason);
   void notify();
 
   struct Workspace;

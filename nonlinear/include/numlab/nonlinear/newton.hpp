@@ -30,6 +30,7 @@
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/input_checks.hpp"
 #include "numlab/nonlinear/forcing_term.hpp"
+#include "numlab/nonlinear/stop_reason.hpp"
 #include "numlab/nonlinear/stopping_tests.hpp"
 #include "numlab/nonlinear/system.hpp"
 #include "numlab/solver.hpp"
@@ -53,17 +54,6 @@ struct NewtonOptions {
 // RuntimeLinearStep, which says whether its method is iterative).
 template <typename Step>
 concept TakesForcingTerm = requires(Step& step, double eta) { step.set_relative_residual_tolerance(eta); };
-
-// Why the iteration stopped. residual_small is the only reason with status converged; step_small
-// and radius_small end with status no_progress.
-// no_progress: GSL's adapter only, when GSL reports that its iteration is not making progress.
-enum class StopReason {
-  running, residual_small, step_small, iteration_limit, singular_jacobian, non_finite, diverged, no_descent, no_progress,
-  inner_limit,  // three inner solves in a row reached their sweep limit short of eta_k, and ||f|| barely fell
-  inner_step_failed,  // with stop_on_failed_inner_step: an inner solve reached its sweep limit short of eta_k
-                      // and its step did not decrease ||f||
-  radius_small  // GSL's hybrid types only: the trust region's radius fell below step_tolerance ||D x||_2
-};
 
 // The bookkeeping of a Newton run: everything in its result but x. Shared by numlab's Newton and
 // GSL's multiroot adapter (gsl_multiroot.hpp).
@@ -116,6 +106,9 @@ class Newton {
       : system_(system), options_(options), linear_step_(std::move(linear_step)), forcing_(options.forcing) {
     check_options();
   }
+  // The stepper keeps a reference to the system: a temporary would dangle, so it is refused.
+  explicit Newton(const S&&, NewtonOptions = {}) = delete;
+  Newton(const S&&, NewtonOptions, LinearStep) = delete;
 
   void set_observer(Observer* observer) { observer_ = observer; }
 
@@ -152,9 +145,9 @@ class Newton {
     residual_at_start_ = f_.template lpNorm<Eigen::Infinity>();
     running_ = true;
     if (!linalg::all_finite(f_)) {
-      finish(Status::non_finite, StopReason::non_finite);
+      finish(StopReason::non_finite);
     } else if (residual_small(residual_at_start_, options_.residual_tolerance)) {
-      finish(Status::converged, StopReason::residual_small);
+      finish(StopReason::residual_small);
     }
   }
 
@@ -168,15 +161,15 @@ class Newton {
       system_.jacobian(x_, J_);
       ++result_.jacobian_evaluations;
     }
-    if (!linalg::all_finite(J_)) return finish(Status::non_finite, StopReason::non_finite);
+    if (!linalg::all_finite(J_)) return finish(StopReason::non_finite);
 
     // 2. The Newton step: solve J dx = -f to relative residual eta_k, ||J dx + f|| <= eta_k ||f||
     //    (exactly, for a direct solver, which takes no eta_k).
     const double eta = forcing_for_step();
     const auto linear = solve_for_step();
-    if (linear.status == Status::singular) return finish(Status::singular, StopReason::singular_jacobian);
+    if (linear.status == Status::singular) return finish(StopReason::singular_jacobian);
     if (linear.status == Status::non_finite || linear.status == Status::diverged || !linalg::all_finite(linear.x)) {
-      return finish(Status::non_finite, StopReason::non_finite);
+      return finish(StopReason::non_finite);
     }
     dx_ = linear.x;  // an iterative inner solve that hit its limit still gives a usable (inexact) step
     const bool capped = !std::isnan(eta) && linear.status == Status::max_iterations;  // short of eta_k
@@ -192,7 +185,7 @@ class Newton {
         trial_x_ = x_ + lambda * dx_;
         evaluate_at(trial_x_, trial_f_);
         if (linalg::all_finite(trial_f_) && sufficient_decrease(trial_f_.squaredNorm(), merit, lambda)) break;
-        if (++halvings > options_.max_halvings) return finish(Status::no_progress, StopReason::no_descent);
+        if (++halvings > options_.max_halvings) return finish(StopReason::no_descent);
         lambda *= 0.5;
       }
       x_ = trial_x_;
@@ -210,23 +203,23 @@ class Newton {
     // 4. Stop tests, in order: finite, residual small, step small, diverged, iteration limit, stalled
     //    inner solves.
     if (!linalg::all_finite(x_) || !linalg::all_finite(f_)) {
-      finish(Status::non_finite, StopReason::non_finite);
+      finish(StopReason::non_finite);
     } else if (residual_small(result_.residual_norm, options_.residual_tolerance)) {
-      finish(Status::converged, StopReason::residual_small);
+      finish(StopReason::residual_small);
     } else if (step_small(result_.step_norm, x_.template lpNorm<Eigen::Infinity>(), options_.step_tolerance)) {
-      finish(Status::no_progress, StopReason::step_small);  // stopped moving, yet ||f|| is not small
+      finish(StopReason::step_small);  // stopped moving, yet ||f|| is not small
     } else if (diverged(result_.residual_norm, residual_at_start_, options_.divergence_factor)) {
-      finish(Status::diverged, StopReason::diverged);
+      finish(StopReason::diverged);
     } else if (result_.iterations >= options_.max_iterations) {
-      finish(Status::max_iterations, StopReason::iteration_limit);
+      finish(StopReason::iteration_limit);
     } else if (options_.stop_on_failed_inner_step && capped && !(result_.residual_norm < residual_before)) {
       // the inner solver could not resolve J here (past an assembly limit J is nearly singular), and
       // the inexact step it gave made ||f|| no smaller: stop before spending the sweep limit again
-      finish(Status::max_iterations, StopReason::inner_step_failed);
+      finish(StopReason::inner_step_failed);
     } else if (stalled_inner_solves_ >= max_stalled_inner_solves) {
       // three capped inner solves in a row that barely moved ||f||: stop rather than spend the whole
       // sweep limit again at every iteration
-      finish(Status::max_iterations, StopReason::inner_limit);
+      finish(StopReason::inner_limit);
     }
     notify(linear.status, linear.iterations, lambda, eta);  // after the tests: the observer sees the verdict
     return running_;
@@ -295,8 +288,8 @@ class Newton {
     }
   }
 
-  bool finish(Status status, StopReason reason) {
-    result_.status = status;
+  bool finish(StopReason reason) {
+    result_.status = status_of(reason);
     result_.reason = reason;
     running_ = false;
     return false;

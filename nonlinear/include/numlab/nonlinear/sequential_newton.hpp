@@ -84,6 +84,8 @@ class SequentialNewton {
   // negative or not finite, an iteration limit below 1).
   SequentialNewton(const DynamicSystem& system, const std::vector<Block>& blocks, SequentialNewtonOptions options = {});
   SequentialNewton(const DynamicSystem&, std::vector<Block>&&, SequentialNewtonOptions = {}) = delete;
+  SequentialNewton(const DynamicSystem&&, const std::vector<Block>&, SequentialNewtonOptions = {}) = delete;
+  SequentialNewton(const DynamicSystem&&, std::vector<Block>&&, SequentialNewtonOptions = {}) = delete;
   SequentialNewton(const SequentialNewton&) = delete;
   SequentialNewton& operator=(const SequentialNewton&) = delete;
 

@@ -29,6 +29,7 @@ namespace numlab::mechanisms {
 class LinkageSystem final : public nonlinear::DynamicSystem {
  public:
   explicit LinkageSystem(const LinkageModel& model, double t = 0.0) : model_(model), t_(t) {}
+  explicit LinkageSystem(const LinkageModel&&, double = 0.0) = delete;  // it keeps a reference to the model
   void set_driver(double t) { t_ = t; }
   double driver() const { return t_; }
   int dimension() const override { return model_.unknown_count(); }
@@ -67,6 +68,7 @@ class LinkageSolver {
   // damped Newton from the rough positions does not converge; std::invalid_argument for an
   // unknown solver or linear method, or analytic on a model with a Newton block.
   LinkageSolver(const LinkageModel& model, LinkageSolverOptions options);
+  LinkageSolver(const LinkageModel&&, LinkageSolverOptions) = delete;  // it keeps a reference: model must outlive it
 
   const LinkageModel& model() const { return model_; }
   const std::vector<LinkageBlock>& blocks() const { return blocks_; }
