@@ -17,10 +17,12 @@ What counts as a cited path:
   - a word of an inline code span without a '/' that ends in a source file's extension
     (`gauss_elimination.hpp`): some file of that name must exist under ROOT's top-level folders.
 In a cited path, '...' stands for any folders (`linalg/.../gauss_seidel.hpp`), '*' is a glob
-(`mechanisms/models/*.toml`: at least one match), and an all-capital folder name is a placeholder
-(`tests/exercises/mutants/EXERCISE/`, `fuzz/corpus/<parser>/`). Fenced code blocks (transcripts of runs) are not read.
+(`mechanisms/models/*.toml`: at least one match), and a placeholder word stands for any name
+(`tests/exercises/mutants/EXERCISE/`, `labs/lessons/lab_NAME.cpp`, `fuzz/corpus/<parser>/`: the
+capital words are listed in PLACEHOLDER). Fenced code blocks (transcripts of runs) are not read.
 """
 
+import fnmatch
 import glob
 import os
 import re
@@ -30,7 +32,9 @@ SOURCE_EXTENSIONS = (".hpp", ".cpp", ".h", ".py", ".toml", ".tsv", ".cmake", ".d
 NOT_SOURCE_FOLDERS = {"build", "out"}  # made by a build or a run: what is in them is not cited source
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
 CODE_SPAN = re.compile(r"`([^`]+)`")
-PLACEHOLDER = re.compile(r"^[A-Z][A-Z0-9_-]*$|^<[^>]+>$")
+# A placeholder: a capital word the docs write for a name of the reader's choice (`lab_NAME.cpp`,
+# `mutants/EXERCISE/`), or any <word>. It matches any text, as '*' does.
+PLACEHOLDER = re.compile(r"<[^>/]+>|(?<![A-Za-z0-9])(BUG_NAME|NAME|FILE|DIR|EXERCISE|SYSTEM|OUT|PREFIX|LANG)(?![A-Za-z0-9])")
 # Names the docs give to files a student writes or numlab writes, never files of the repository.
 USER_FILES = {"solution.py", "solution.cpp", "f.toml"}
 
@@ -53,16 +57,8 @@ def prose_lines(text):
 
 
 def as_pattern(path):
-    """A cited path as a glob: '...' is any folders, an all-capital folder any one folder."""
-    parts = []
-    for part in path.split("/"):
-        if part == "...":
-            parts.append("**")
-        elif PLACEHOLDER.match(part) and "." not in part:
-            parts.append("*")
-        else:
-            parts.append(part)
-    return "/".join(parts)
+    """A cited path as a glob: '...' is any folders, a placeholder any text within one folder."""
+    return "/".join("**" if part == "..." else PLACEHOLDER.sub("*", part) for part in path.split("/"))
 
 
 def exists(base, path):
@@ -102,7 +98,7 @@ def cited_paths(md_file, root, folders):
                 if word.startswith(prefixes):
                     yield number, word, root
                 elif "/" not in word and word.endswith(SOURCE_EXTENSIONS) and not word.startswith("."):
-                    if not PLACEHOLDER.match(word.rsplit(".", 1)[0]) and "*" not in word and word not in USER_FILES:
+                    if word not in USER_FILES:
                         yield number, word, None
 
 
@@ -112,7 +108,7 @@ def missing_paths(root, md_files):
     missing = []
     for md_file in md_files:
         for number, path, base in cited_paths(md_file, root, folders):
-            found = path in names if base is None else exists(base, path)
+            found = bool(fnmatch.filter(names, as_pattern(path))) if base is None else exists(base, path)
             if not found:
                 missing.append((os.path.relpath(md_file, root), number, path))
     return missing
