@@ -26,6 +26,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 // column wraps onto, up to the first empty line or the first line that does not start with two
 // spaces (the closing sentence).
 struct Listing {
+  std::string out;  // the whole output
   std::string header;
   std::vector<std::string> body;
 };
@@ -35,7 +36,7 @@ Listing table_of(const std::string& out) {
   REQUIRE(lines.size() > 2);
   REQUIRE(lines[1].find_first_not_of(' ') == 2);
   REQUIRE(lines[1].find_first_not_of("- ") == std::string::npos);
-  Listing listing{lines[0], {}};
+  Listing listing{out, lines[0], {}};
   for (std::size_t i = 2; i < lines.size() && lines[i].starts_with("  "); ++i) listing.body.push_back(lines[i]);
   return listing;
 }
@@ -73,6 +74,18 @@ void check_right_aligned(const Listing& listing, const std::string& header) {
   }
 }
 
+// Runs `numlab COMMAND`, a listing: exit 0, every line within 80 columns, the last column (headed
+// `last_header`) aligned on every line of the table.
+Listing checked_listing(const std::string& command, const std::string& last_header) {
+  const auto run = run_numlab(command);
+  REQUIRE(run.exit_code == 0);
+  INFO(run.out);
+  check_fits_80_columns(run.out);
+  const Listing listing = table_of(run.out);
+  check_last_column_aligned(listing, last_header);
+  return listing;
+}
+
 }  // namespace
 
 TEST_CASE("numlab --version: the project's version and the git commit, exit 0", "[cli][version]") {
@@ -99,19 +112,15 @@ TEST_CASE("numlab --help lists the exit codes the program uses", "[cli][help]") 
 }
 
 TEST_CASE("numlab models: a table that fits 80 columns, its columns aligned", "[cli][models]") {
-  const auto run = run_numlab("models");
-  REQUIRE(run.exit_code == 0);
-  INFO(run.out);
-  check_fits_80_columns(run.out);
-  const Listing listing = table_of(run.out);
+  const Listing listing = checked_listing("models", "title; blocks in order");
+  INFO(listing.out);
   CHECK(listing.header.starts_with("  name "));
-  check_last_column_aligned(listing, "title; blocks in order");
   for (const char* numbers : {"joints", "unknowns", "driver"}) check_right_aligned(listing, numbers);
   for (const char* model : {"chebyshev", "four-bar", "isosceles-slider-crank", "mustang", "stephenson-iii", "watt-i"}) {
-    CHECK_THAT(run.out, Contains(std::string("\n  ") + model + " "));
+    CHECK_THAT(listing.out, Contains(std::string("\n  ") + model + " "));
   }
   // The title and the blocks of the widest row, wrapped but whole.
-  std::string joined = run.out;
+  std::string joined = listing.out;
   std::replace(joined.begin(), joined.end(), '\n', ' ');
   joined = std::regex_replace(joined, std::regex(" +"), " ");
   CHECK_THAT(joined, Contains("Isosceles slider-crank (branches cross at 90 and 270 degrees) explicit, dyad"));
@@ -119,12 +128,8 @@ TEST_CASE("numlab models: a table that fits 80 columns, its columns aligned", "[
 }
 
 TEST_CASE("numlab labs: a table that fits 80 columns, the long names aligned with the short", "[cli][labs]") {
-  const auto run = run_numlab("labs");
-  REQUIRE(run.exit_code == 0);
-  INFO(run.out);
-  check_fits_80_columns(run.out);
-  const Listing listing = table_of(run.out);
-  check_last_column_aligned(listing, "what it shows");
-  CHECK_THAT(run.out, Contains("\n  jansen-sequential  Sequential vs full Newton"));
-  CHECK_THAT(run.out, Contains("\n  gauss              Gaussian elimination"));
+  const Listing listing = checked_listing("labs", "what it shows");
+  INFO(listing.out);
+  CHECK_THAT(listing.out, Contains("\n  jansen-sequential  Sequential vs full Newton"));
+  CHECK_THAT(listing.out, Contains("\n  gauss              Gaussian elimination"));
 }
