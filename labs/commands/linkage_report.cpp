@@ -77,6 +77,23 @@ std::string transmission_summary(const LinkageReport& r, std::size_t block) {
                             transmission_high_deg, outside, first, last);
 }
 
+// "34 poses (57 .. 90): the continuation from the last good pose failed at 56.4531, short of them; each
+// repeats that failure", or empty when every pose was tried.
+std::string not_tried_text(const LinkageSweep& sweep) {
+  int count = 0;
+  double first = nan, last = nan, past = nan;
+  for (const auto& pose : sweep.poses) {
+    if (std::isnan(pose.not_tried_past)) continue;
+    if (count++ == 0) first = pose.driver, past = pose.not_tried_past;
+    last = pose.driver;
+  }
+  if (count == 0) return {};
+  return fmt::format("{} pose{} ({:g} .. {:g}): the continuation from the last good pose failed at {:.6g}, short of "
+                     "{}; {} that failure, solved no further",
+                     count, count == 1 ? "" : "s", first, last, past, count == 1 ? "it" : "them",
+                     count == 1 ? "it repeats" : "each repeats");
+}
+
 std::string limit_text(const LinkageReport& r, const LinkageLimit& limit) {
   const std::string unit = r.model.crank_driven() ? " deg" : "";
   std::string where = "no block named";
@@ -87,6 +104,12 @@ std::string limit_text(const LinkageReport& r, const LinkageLimit& limit) {
   const std::string angle = std::isfinite(limit.transmission_deg)
                                 ? fmt::format("; transmission angle there {:.2f} deg", limit.transmission_deg)
                                 : "";
+  if (limit.assembles_beyond) {
+    return fmt::format("the solver failed {} {:.2f}{} (bisection bracket {:.2g}{}), yet the mechanism assembles just {} "
+                       "it: not an assembly limit, a failure of the solver",
+                       limit.upper ? "past" : "before", limit.driver, unit, limit.bracket, unit,
+                       limit.upper ? "past" : "before");
+  }
   return fmt::format("{} limit {:.2f}{} (a fold: the branch ends there; bisection bracket {:.2g}{}): {}{}",
                      limit.upper ? "upper" : "lower", limit.driver, unit, limit.bracket, unit, where, angle);
 }
@@ -224,6 +247,7 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
                             {"iterations", pose.outcome.iterations},
                             {"residual_inf", number(pose.outcome.residual_norm)},
                             {"status", std::string(to_string(pose.outcome.status))}});
+    if (!std::isnan(pose.not_tried_past)) out["poses"].back()["not_tried_past"] = pose.not_tried_past;
   }
   out["status"] = std::string(to_string(r.status));
   out["branch_kept"] = r.sweep.branch_kept;
@@ -245,7 +269,7 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
   out["jumps"] = r.sweep.jumps;
   out["limits"] = nlohmann::ordered_json::array();
   for (const auto& limit : r.sweep.limits) {
-    out["limits"].push_back({{"kind", "fold"},
+    out["limits"].push_back({{"kind", limit.assembles_beyond ? "solver_failure" : "fold"},
                              {"driver", limit.driver},
                              {"bracket", limit.bracket},
                              {"upper", limit.upper},
@@ -298,7 +322,8 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
     const JointMotion m = motion(r.model, pose, tracked);
     table.add_row({fmt::format("{:g}", pose.driver), fmt::format("{:.6f}", m.p.x()), fmt::format("{:.6f}", m.p.y()),
                    fmt::format("{:.4f}", m.v.norm()), scientific(pose.condition), std::to_string(pose.outcome.iterations),
-                   scientific(pose.outcome.residual_norm), std::string(to_string(pose.outcome.status))});
+                   scientific(pose.outcome.residual_norm),
+                   std::isnan(pose.not_tried_past) ? std::string(to_string(pose.outcome.status)) : "not tried"});
   }
   table.print(out);
   out << fmt::format("branch             {}\n", r.sweep.branch_kept ? "kept (no block's side changed but at a crossing)"
@@ -315,6 +340,7 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
                        worst.bound, r.sweep.closed_form_verified ? "verified" : "NOT VERIFIED");
   }
   for (const auto& limit : r.sweep.limits) out << "limit              " << limit_text(r, limit) << '\n';
+  if (const std::string skipped = not_tried_text(r.sweep); !skipped.empty()) out << "not tried          " << skipped << '\n';
   double low = std::numeric_limits<double>::infinity(), high = 0.0, at = nan;
   for (const auto& pose : r.sweep.poses) {
     if (!converged(pose)) continue;

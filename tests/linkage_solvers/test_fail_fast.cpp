@@ -16,9 +16,11 @@
 #include "numlab/mechanisms/linkage/linkage_model.hpp"
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
+#include "linkage_fixtures.hpp"
 
 using namespace numlab::mechanisms;
 using numlab::Status;
+namespace fixtures = numlab::mechanisms::testing;
 
 namespace {
 
@@ -169,4 +171,70 @@ TEST_CASE("The sparse velocity and acceleration agree with the dense ones", "[li
   REQUIRE(sparse_linkage_kinematics(model, solver.reference_driver(), solver.reference(), sparse_v, sparse_a));
   CHECK((sparse_v - v).lpNorm<Eigen::Infinity>() <= 1e-9 * (1.0 + v.lpNorm<Eigen::Infinity>()));
   CHECK((sparse_a - a).lpNorm<Eigen::Infinity>() <= 1e-9 * (1.0 + a.lpNorm<Eigen::Infinity>()));
+}
+
+namespace {
+// Full Newton with the given linear method inside.
+LinkageSolverOptions full_newton_with(const std::string& linear) {
+  LinkageSolverOptions options;
+  options.linear = linear;
+  return options;
+}
+}  // namespace
+
+TEST_CASE("Poses past where the continuation failed are not solved again; each is named, and none assembles",
+          "[linkage][fail-fast]") {
+  // A non-Grashof four-bar (the crank stops where |AQ| = b + c, at 129.8 degrees) swept to 180:
+  // the continuation from the last good pose fails once; the poses after it repeat that failure with
+  // no work, and the closed form confirms that none of them assembles.
+  const LinkageModel model(fixtures::four_bar(2.0, 3.0, 2.5, 4.0, 60.0));
+  for (const std::string linear : {"gepp", "gauss-seidel"}) {
+    const LinkageSolver solver(model, full_newton_with(linear));
+    const LinkageSweep sweep = linkage_sweep(solver, 0.0, 180.0, 1.0);
+    INFO(linear);
+    REQUIRE(sweep.limits.size() == 1);
+    const double limit = sweep.limits[0].driver;
+    int not_tried = 0;
+    for (const LinkagePose& pose : sweep.poses) {
+      if (std::isnan(pose.not_tried_past)) continue;
+      ++not_tried;
+      CHECK(pose.outcome.status != Status::converged);
+      CHECK(pose.outcome.iterations == 0);
+      CHECK(pose.not_tried_past > limit);
+      CHECK(pose.not_tried_past < pose.driver);
+      // The closed form fails there too: past the fold nothing assembles.
+      CHECK(solver.closed_form(model.driver_from_user(pose.driver), pose.q).failed_block >= 0);
+    }
+    // Every pose past the first failing one was skipped.
+    const auto first_failed = std::find_if(sweep.poses.begin(), sweep.poses.end(), [](const LinkagePose& p) {
+      return p.outcome.status != Status::converged;
+    });
+    REQUIRE(first_failed != sweep.poses.end());
+    CHECK(std::isnan(first_failed->not_tried_past));  // the first one was tried
+    CHECK(not_tried == static_cast<int>(sweep.poses.end() - first_failed) - 1);
+  }
+}
+
+TEST_CASE("A solver that fails where the mechanism still assembles is not reported as a fold", "[linkage][fail-fast]") {
+  // The Mustang's fold is at 56.45 degrees (GEPP finds it, block 8). Full Newton with Gauss-Seidel
+  // inside fails a little before it, where J is too ill-conditioned for the normal equations'
+  // sweeps. Each limit the sweep reports is either a fold the closed form confirms (block named, the
+  // closed form fails just past it) or a solver failure where the closed form still assembles.
+  const LinkageModel model = shipped("mustang.toml");
+  for (const std::string linear : {"gepp", "gauss-seidel"}) {
+    const LinkageSolver solver(model, full_newton_with(linear));
+    const LinkageSweep sweep = linkage_sweep(solver, 50.0, 60.0, 1.0);
+    INFO(linear);
+    REQUIRE(sweep.limits.size() == 1);
+    const LinkageLimit& limit = sweep.limits[0];
+    const LinkagePose& before = sweep.poses[static_cast<std::size_t>(std::floor(limit.driver - 50.0))];
+    REQUIRE(before.outcome.status == Status::converged);
+    const double past = model.driver_from_user(limit.driver + limit.bracket);
+    const bool closes_past = solver.closed_form(past, before.q).failed_block < 0;
+    CHECK(limit.assembles_beyond == closes_past);
+    if (!limit.assembles_beyond) {
+      CHECK(std::abs(limit.driver - 56.45) <= 0.01);
+      CHECK(limit.block == 7);  // block 8, P10's dyad
+    }
+  }
 }

@@ -136,12 +136,27 @@ struct Jump {
   double allowed = 0.0;
 };
 
+// Where a continuation that failed got stuck: the last driver value it solved (and its pose), and
+// the one its shortest sub-step could not reach. The two bracket an assembly limit to a 256th of a
+// sub-step, and any later target past `failed_at` from the same start fails the same way.
+struct Stuck {
+  double from = 0.0;
+  double reached = 0.0;
+  Eigen::VectorXd q;
+  double failed_at = 0.0;
+  LinkageSolution failure;  // what the continuation returned (set by the sweep)
+  // Whether a continuation from `start` to `to` has to pass failed_at (and would fail there again).
+  bool blocks(double start, double to) const {
+    return start == from && (failed_at - from) * (to - from) > 0.0 && std::abs(to - from) >= std::abs(failed_at - from);
+  }
+};
+
 // From q at driver `from` to driver `to` (model units) in steps no longer than `longest`, each
 // solve started from the predictor; a step that fails, or lands on another branch, is halved. q
 // becomes the last solution (failed or not); `trial` is scratch of q's size. A solution that still
 // jumps at the last halving is returned with status no_progress, and `jump` (if given) says how far.
 LinkageFastOutcome continue_in_place(PoseSolver& poses, double from, double to, Eigen::VectorXd& q, Eigen::VectorXd& trial,
-                                     double longest, int* halvings = nullptr, Jump* jump = nullptr) {
+                                     double longest, int* halvings = nullptr, Jump* jump = nullptr, Stuck* stuck = nullptr) {
   poses.follow(from, q);
   if (from == to) return poses.solve(to, q);  // measured, never assumed
   LinkageFastOutcome last;
@@ -172,6 +187,7 @@ LinkageFastOutcome continue_in_place(PoseSolver& poses, double from, double to, 
         outcome.outcome.reason = nonlinear::StopReason::no_progress;
         if (jump != nullptr) *jump = {poses.jump(trial), poses.allowed_jump()};
       }
+      if (stuck != nullptr && !jumped) *stuck = {from, at, q, next, {}};
       q.swap(trial);
       poses.forget();
       outcome.outcome.iterations = iterations;
@@ -185,12 +201,21 @@ LinkageFastOutcome continue_in_place(PoseSolver& poses, double from, double to, 
   return last;
 }
 
+// A failure reported again for a pose that was not tried: the same status and residual, no work.
+LinkageSolution repeated_failure(const LinkageSolution& failure) {
+  LinkageSolution again = failure;
+  again.outcome.iterations = 0;
+  again.outcome.function_evaluations = 0;
+  again.outcome.jacobian_evaluations = 0;
+  return again;
+}
+
 // The same, as a LinkageSolution.
 LinkageSolution continue_to(PoseSolver& poses, double from, double to, const Eigen::VectorXd& q, double longest,
-                            int* halvings = nullptr, Jump* jump = nullptr) {
+                            int* halvings = nullptr, Jump* jump = nullptr, Stuck* stuck = nullptr) {
   LinkageSolution solution{q, {}, -1};
   Eigen::VectorXd trial(q.size());
-  const LinkageFastOutcome outcome = continue_in_place(poses, from, to, solution.q, trial, longest, halvings, jump);
+  const LinkageFastOutcome outcome = continue_in_place(poses, from, to, solution.q, trial, longest, halvings, jump, stuck);
   solution.outcome = outcome.outcome;
   solution.failed_block = outcome.failed_block;
   return solution;
@@ -302,24 +327,32 @@ LinkagePose make_pose(const LinkageSolver& solver, double user, double t, Linkag
   return pose;
 }
 
-// The block that cannot close at t, starting from q: the closed form's, or sequential Newton's.
-int failing_block(const LinkageSolver& solver, double t, const Eigen::VectorXd& q) {
+// Why the mechanism does not assemble at t: the block that cannot close (-1: none named); or that it
+// does assemble there (the closed form, else the sequential solver, closes every block at t).
+struct FailureCause {
+  int block = -1;
+  bool assembles = false;
+};
+FailureCause failure_cause(const LinkageSolver& solver, double t, const Eigen::VectorXd& q) {
   const LinkageSolution closed = solver.closed_form(t, q);
   if (closed.failed_block >= 0 && solver.blocks()[static_cast<std::size_t>(closed.failed_block)].closed_form()) {
-    return closed.failed_block;
+    return {closed.failed_block, false};
   }
+  if (all_blocks_closed(solver)) return {-1, closed.failed_block < 0};
   LinkageSolverOptions options = solver.options();
   options.solver = "sequential";
   // The reference pose is solved again here; cheap next to a bisection.
   const LinkageSolver sequential(solver.model(), options);
-  return sequential.solve(t, q).failed_block;
+  const LinkageSolution solved = sequential.solve(t, q);
+  return {solved.failed_block, converged(solved)};
 }
 
 // Bisection between a driver value that assembles (good, with its q) and one that does not.
-LinkageLimit bisect_limit(PoseSolver& poses, double good, Eigen::VectorXd q, double bad, bool upper) {
+// The bracket's target: 0.01 deg of crank, or 1e-4 of `span` (the sweep's step there) of slider travel.
+LinkageLimit bisect_limit(PoseSolver& poses, double good, Eigen::VectorXd q, double bad, bool upper, double span) {
   const LinkageSolver& solver = poses.solver();
   const LinkageModel& model = solver.model();
-  const double target = model.crank_driven() ? crank_limit_deg * std::acos(-1.0) / 180.0 : 1e-4 * std::abs(bad - good);
+  const double target = model.crank_driven() ? crank_limit_deg * std::acos(-1.0) / 180.0 : 1e-4 * std::abs(span);
   for (int i = 0; i < max_bisections && std::abs(bad - good) > target; ++i) {
     const double middle = 0.5 * (good + bad);
     LinkageSolution trial = continue_to(poses, good, middle, q, std::abs(middle - good));
@@ -334,7 +367,9 @@ LinkageLimit bisect_limit(PoseSolver& poses, double good, Eigen::VectorXd q, dou
   limit.driver = model.driver_to_user(good);
   limit.bracket = std::abs(model.driver_to_user(bad) - model.driver_to_user(good));
   limit.upper = upper;
-  limit.block = failing_block(solver, bad, q);
+  const FailureCause cause = failure_cause(solver, bad, q);
+  limit.block = cause.block;
+  limit.assembles_beyond = cause.assembles;
   const auto angles = solver.transmission_angles(q);
   limit.transmission_deg = limit.block >= 0 ? angles[static_cast<std::size_t>(limit.block)] : not_computed;
   return limit;
@@ -521,6 +556,7 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   const LinkageModel& model = solver.model();
   const std::size_t count = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
   LinkageSweep sweep;
+  sweep.status = Status::converged;  // until a pose fails
   // The fast path solves the poses, unless an observer traces them: --trace and --step follow the
   // generic solver (the same poses, checked by tests/linkage_fast/).
   PoseSolver poses(solver, !observer);
@@ -530,11 +566,16 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   double walk_to = t_start;
   if (model.crank_driven()) walk_to = reference + std::remainder(t_start - reference, 2.0 * std::acos(-1.0));
   const double longest = longest_sub_step(model, walk_to - reference, model.driver_from_user(start + step) - t_start);
-  LinkageSolution at = continue_to(poses, reference, walk_to, solver.reference(), longest);
+  std::optional<Stuck> stuck;  // where the continuation from the last good pose failed
+  Stuck stuck_now;
+  stuck_now.failed_at = not_computed;
+  LinkageSolution at = continue_to(poses, reference, walk_to, solver.reference(), longest, nullptr, nullptr, &stuck_now);
+  if (!converged(at) && !std::isnan(stuck_now.failed_at)) {
+    stuck = Stuck{stuck_now.from, stuck_now.reached, stuck_now.q, stuck_now.failed_at, at};
+  }
   poses.relabel(walk_to, t_start);  // the walk's last poses predict the sweep's first (a sweep may start on a crossing)
   Eigen::VectorXd last_good = converged(at) ? at.q : solver.reference();
   double last_good_t = converged(at) ? t_start : reference;
-  bool have_good = converged(at);
   BranchWatch watch{solver.reference_signature(), at_crossing, std::vector<int>(solver.blocks().size(), -1)};
   const double shortest = shortest_length(model);
   // 2. Each pose from the one before, through sub-steps each from the predictor; a failed pose is
@@ -544,11 +585,20 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
     const double t = model.driver_from_user(user);
     int halvings = 0;
     Jump jump;
-    const bool first = k == 0 && have_good;
-    LinkageSolution solution = first ? at : continue_to(poses, last_good_t, t, last_good, longest, &halvings, &jump);
+    // A target past where the continuation from the same pose already failed is not tried again.
+    const bool repeated = k > 0 && stuck && stuck->blocks(last_good_t, t);
+    LinkageSolution solution = k == 0 ? at : repeated ? repeated_failure(stuck->failure) : LinkageSolution{};
+    if (k > 0 && !repeated) {
+      stuck_now.failed_at = not_computed;
+      solution = continue_to(poses, last_good_t, t, last_good, longest, &halvings, &jump, &stuck_now);
+      if (!converged(solution) && !std::isnan(stuck_now.failed_at)) {
+        stuck = Stuck{stuck_now.from, stuck_now.reached, std::move(stuck_now.q), stuck_now.failed_at, solution};
+      }
+    }
     const detail::BranchGuess guess = [&, q = solution.q](double s) { return poses.guess(t, q, s); };
     LinkagePose pose = make_pose(solver, user, t, std::move(solution), guess);
     pose.step_halvings = halvings;
+    if (repeated) pose.not_tried_past = model.driver_to_user(stuck->failed_at);
     const bool ok = pose.outcome.status == Status::converged;
     pose.jumped = jump.distance > 0.0;
     if (pose.jumped) {
@@ -561,9 +611,15 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
     if (k > 0 && !pose.jumped && !sweep.poses.back().jumped) {
       const LinkagePose& before = sweep.poses.back();
       const bool was_ok = before.outcome.status == Status::converged;
-      if (was_ok && !ok) sweep.limits.push_back(bisect_limit(poses, last_good_t, last_good, t, true));
+      if (was_ok && !ok) {  // from the bracket where the continuation got stuck, when it has one
+        const bool bracketed = stuck && stuck->from == last_good_t;
+        const double span = t - last_good_t;
+        sweep.limits.push_back(bracketed ? bisect_limit(poses, stuck->reached, stuck->q, stuck->failed_at, true, span)
+                                         : bisect_limit(poses, last_good_t, last_good, t, true, span));
+      }
       if (!was_ok && ok) {
-        LinkageLimit limit = bisect_limit(poses, t, pose.q, model.driver_from_user(before.driver), false);
+        const double t_before = model.driver_from_user(before.driver);
+        LinkageLimit limit = bisect_limit(poses, t, pose.q, t_before, false, t - t_before);
         sweep.limits.push_back(limit);
       }
     }
@@ -578,7 +634,7 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
       pose.branch_kept = sweep.branch_kept;
       last_good = pose.q;
       last_good_t = t;
-      have_good = true;
+      stuck.reset();
     } else if (sweep.status == Status::converged) {
       sweep.status = pose.outcome.status;
     }
@@ -608,6 +664,7 @@ LinkageCycle solve_linkage_cycle(const LinkageSolver& solver, double start, doub
   const LinkageModel& model = solver.model();
   const std::size_t count = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
   LinkageCycle cycle;
+  cycle.status = Status::converged;  // until a pose fails
   cycle.q.resize(solver.model().unknown_count(), static_cast<Eigen::Index>(count));
   PoseSolver poses(solver, true);
   const double reference = solver.reference_driver();

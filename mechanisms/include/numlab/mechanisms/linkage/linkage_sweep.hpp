@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <string>
+#include <limits>
 #include <vector>
 
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
@@ -37,6 +38,9 @@ struct LinkagePose {
   bool branch_kept = false;           // converged, and no jump to another branch up to here
   bool jumped = false;                // solved, but further from its prediction than allowed even at the
                                       // shortest sub-step: on another branch (status no_progress)
+  double not_tried_past = std::numeric_limits<double>::quiet_NaN();  // not solved: the continuation
+                                      // from the last good pose already failed at this driver value (user
+                                      // units), short of this pose; the failure is reported again, with no work
 };
 
 // Where the linkage stops assembling between two poses of the sweep.
@@ -46,6 +50,8 @@ struct LinkageLimit {
   int block = -1;                 // the block that cannot close beyond it
   double transmission_deg = 0.0;  // that block's transmission angle at the limit (NaN: not a dyad)
   bool upper = true;              // the sweep leaves the assembling range (true) or enters it
+  bool assembles_beyond = false;  // the closed form (or the sequential solver) assembles just past it:
+                                  // the solver failed there, not the mechanism (no fold)
 };
 
 // Where two assembly branches cross: a dyad's two solutions meet (J is singular) and part again. On
@@ -65,7 +71,7 @@ enum class AtCrossing { smooth, switch_branch };
 
 struct LinkageSweep {
   std::vector<LinkagePose> poses;
-  Status status = Status::converged;  // converged when every pose did; else the first failure's
+  Status status = Status::running;    // converged when every pose did; else the first failure's
   bool branch_kept = true;            // no block's signature changed between poses but at change points
   bool closed_form_verified = true;   // every converged pose within its closed-form bound, and that bound
                                       // below half the shortest length (when there is a closed form)
@@ -95,7 +101,7 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
 struct LinkageCycle {
   Eigen::MatrixXd q;  // one column per pose, allocated once
   int iterations = 0;
-  Status status = Status::converged;  // the first failure's, if any
+  Status status = Status::running;    // converged when every pose did; else the first failure's
 };
 LinkageCycle solve_linkage_cycle(const LinkageSolver& solver, double start, double stop, double step);
 
