@@ -21,7 +21,7 @@ constexpr int scaling_poses = 10;
 
 std::vector<LinkageScalingRow> bench_linkage_scaling(bool quick) {
   std::vector<LinkageScalingRow> rows;
-  for (const int joints : {10, 100, 1000}) {
+  for (const int joints : {10, 100, 250, 500, 1000}) {
     show_progress(fmt::format("bench linkage-scaling: {} joints", joints));
     const mechanisms::LinkageModel model(
         mechanisms::parse_linkage_description(mechanisms::dyad_chain_description(joints), fmt::format("chain-{}.toml", joints)));

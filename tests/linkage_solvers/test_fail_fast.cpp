@@ -12,6 +12,7 @@
 
 #include "numlab/mechanisms/linkage/dyad_chain.hpp"
 #include "numlab/mechanisms/linkage/linkage_description.hpp"
+#include "numlab/mechanisms/linkage/linkage_fast_solver.hpp"
 #include "numlab/mechanisms/linkage/linkage_conditioning.hpp"
 #include "numlab/mechanisms/linkage/linkage_model.hpp"
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
@@ -236,5 +237,34 @@ TEST_CASE("A solver that fails where the mechanism still assembles is not report
       CHECK(std::abs(limit.driver - 56.45) <= 0.01);
       CHECK(limit.block == 7);  // block 8, P10's dyad
     }
+  }
+}
+
+TEST_CASE("Beyond 100 unknowns the fast path's sparse J gives the dense path's poses and velocities", "[linkage][scaling]") {
+  // A 60-joint chain: 116 unknowns, so the fast path keeps J sparse (linkage_fast_sparse.hpp); the
+  // generic solver factors the dense J by GEPP. The same Newton iteration to rounding: the same
+  // status and iteration count, positions within the conditioning's share of rounding.
+  const LinkageModel model = chain_model(60);
+  const LinkageSolver solver(model, {});
+  REQUIRE(model.unknown_count() > linkage_exact_conditioning_limit);
+  LinkageFastSolver fast(solver);
+  for (const double crank_deg : {61.0, 75.0, 120.0}) {
+    const double t = model.driver_from_user(crank_deg);
+    const Eigen::VectorXd start = solver.reference();
+    const LinkageSolution dense = solver.solve(t, start);
+    Eigen::VectorXd q = start;
+    const LinkageFastOutcome sparse = fast.solve(t, q);
+    INFO(crank_deg << " deg: dense " << numlab::to_string(dense.outcome.status) << " in " << dense.outcome.iterations
+                   << ", sparse " << numlab::to_string(sparse.outcome.status) << " in " << sparse.outcome.iterations);
+    REQUIRE(dense.outcome.status == Status::converged);
+    CHECK(sparse.outcome.status == Status::converged);
+    CHECK(sparse.outcome.iterations == dense.outcome.iterations);
+    const double kappa = linkage_conditioning(model, t, dense.q).condition;
+    const double scale = 1.0 + dense.q.lpNorm<Eigen::Infinity>();
+    CHECK((q - dense.q).lpNorm<Eigen::Infinity>() <= 100.0 * kappa * 1e-16 * scale + 10.0 * solver.options().newton.residual_tolerance);
+    Eigen::VectorXd fast_velocity, velocity, acceleration;
+    REQUIRE(fast.velocity(t, dense.q, fast_velocity));
+    linkage_kinematics(model, t, dense.q, velocity, acceleration);
+    CHECK((fast_velocity - velocity).lpNorm<Eigen::Infinity>() <= 100.0 * kappa * 1e-16 * (1.0 + velocity.lpNorm<Eigen::Infinity>()));
   }
 }

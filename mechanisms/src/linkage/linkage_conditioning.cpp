@@ -23,6 +23,17 @@ Eigen::SparseMatrix<double> linkage_sparse_jacobian(const Eigen::MatrixXd& J) {
   return sparse;
 }
 
+Eigen::SparseMatrix<double> linkage_sparse_jacobian(const LinkageModel& model, double t, const Eigen::VectorXd& q) {
+  std::vector<LinkageModel::JacobianEntry> entries;
+  model.jacobian_entries(q, t, entries);
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(entries.size());
+  for (const auto& e : entries) triplets.emplace_back(e.row, e.column, e.value);
+  Eigen::SparseMatrix<double> sparse(model.equation_count(), model.unknown_count());
+  sparse.setFromTriplets(triplets.begin(), triplets.end());
+  return sparse;
+}
+
 namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
@@ -86,7 +97,10 @@ double inverse_one_norm_estimate(Eigen::Index n, Solve solve, SolveTransposed so
 // and of ||J^-1||_inf = ||J^-T||_1 from it, a handful of sparse solves each: time about linear in
 // the number of joints.
 LinkageConditioning estimated_linkage_conditioning(const Eigen::MatrixXd& dense) {
-  const Eigen::SparseMatrix<double> J = linkage_sparse_jacobian(dense);
+  return estimated_linkage_conditioning(linkage_sparse_jacobian(dense));
+}
+
+LinkageConditioning estimated_linkage_conditioning(const Eigen::SparseMatrix<double>& J) {
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   lu.compute(J);
   if (lu.info() != Eigen::Success) return {infinity, infinity};  // singular to working precision
@@ -108,11 +122,9 @@ LinkageConditioning estimated_linkage_conditioning(const Eigen::MatrixXd& dense)
 
 bool sparse_linkage_kinematics(const LinkageModel& model, double t, const Eigen::VectorXd& q, Eigen::VectorXd& velocity,
                                Eigen::VectorXd& acceleration) {
-  Eigen::MatrixXd dense;
   Eigen::VectorXd phi_t, gamma;
-  model.jacobian(q, t, dense);
   model.driver_derivative(q, t, phi_t);
-  const Eigen::SparseMatrix<double> J = linkage_sparse_jacobian(dense);
+  const Eigen::SparseMatrix<double> J = linkage_sparse_jacobian(model, t, q);
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   lu.compute(J);
   if (lu.info() != Eigen::Success) {
@@ -127,10 +139,10 @@ bool sparse_linkage_kinematics(const LinkageModel& model, double t, const Eigen:
 }
 
 LinkageConditioning linkage_conditioning(const LinkageModel& model, double t, const Eigen::VectorXd& q) {
+  if (q.size() > linkage_exact_conditioning_limit) return estimated_linkage_conditioning(linkage_sparse_jacobian(model, t, q));
   Eigen::MatrixXd J;
   model.jacobian(q, t, J);
-  if (J.rows() <= linkage_exact_conditioning_limit) return exact_linkage_conditioning(J);
-  return estimated_linkage_conditioning(J);
+  return exact_linkage_conditioning(J);
 }
 
 }  // namespace numlab::mechanisms

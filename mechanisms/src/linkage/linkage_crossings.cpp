@@ -79,14 +79,18 @@ double change_point(const LinkageSolver& solver, std::size_t b, double t0, const
   return margin >= -1e-12 * scale && margin <= 1e-13 * scale ? meet : std::numeric_limits<double>::quiet_NaN();
 }
 
-bool side_defined(const LinkageSolver& solver, std::size_t b, const Eigen::VectorXd& q) {
+bool side_defined_at(const LinkageSolver& solver, std::size_t b, const Eigen::VectorXd& q, double margin) {
   const LinkageBlock& block = solver.blocks()[b];
   if (!block.dyad()) return true;
   // The two solutions are 2 sqrt(2 r margin) apart near the meeting point. The pose's joints are
   // only as exact as the residual test makes them: a margin within ten residual tolerances of zero
   // (or at rounding level) could be the other side's, and the two solutions are within about
   // sqrt(tol) of the size of each other there.
-  return solver.dyad_margins(q)[b] > 1e-14 * dyad_size(solver, block, q) + 10.0 * solver.options().newton.residual_tolerance;
+  return margin > 1e-14 * dyad_size(solver, block, q) + 10.0 * solver.options().newton.residual_tolerance;
+}
+
+bool side_defined(const LinkageSolver& solver, std::size_t b, const Eigen::VectorXd& q) {
+  return side_defined_at(solver, b, q, solver.blocks()[b].dyad() ? solver.dyad_margins(q)[b] : 0.0);
 }
 
 std::string side_word(const LinkageSolver& solver, std::size_t b, int side) {
@@ -123,10 +127,12 @@ void keep_smooth_sides(const LinkageSolver& solver, double t0, const Eigen::Vect
   const auto& blocks = solver.blocks();
   if (std::none_of(blocks.begin(), blocks.end(), [](const LinkageBlock& b) { return b.dyad(); })) return;
   const std::vector<double> m0 = solver.dyad_margins(q0), m1 = solver.dyad_margins(q);
+  std::vector<int> s0, s1;  // the sides before and after, read once when a dyad is near meeting
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     if (!blocks[b].dyad() || !(std::min(m0[b], m1[b]) <= 1e-3 * solver.size())) continue;
-    if (!side_defined(solver, b, q0) || !side_defined(solver, b, q)) continue;
-    const int before = solver.signature(q0, t0)[b], after = solver.signature(q, t)[b];
+    if (!side_defined_at(solver, b, q0, m0[b]) || !side_defined_at(solver, b, q, m1[b])) continue;
+    if (s0.empty()) s0 = solver.signature(q0, t0), s1 = solver.signature(q, t);
+    const int before = s0[b], after = s1[b];
     const double meet = change_point(solver, b, t0, q0, t, false);  // t0's side is defined: not on it
     bool crossed = false;
     if (std::isfinite(meet)) {
@@ -139,7 +145,10 @@ void keep_smooth_sides(const LinkageSolver& solver, double t0, const Eigen::Vect
     const LinkageSolution closed = solver.closed_form(t, other);
     if (closed.failed_block < 0) other = closed.q;
     if (auto polished = solve_to_rounding(solver, t, other)) {
-      if (solver.signature(*polished, t)[b] != after) q = std::move(*polished);
+      if (solver.signature(*polished, t)[b] != after) {
+        q = std::move(*polished);
+        s1 = solver.signature(q, t);  // the later blocks read q's sides as it is now
+      }
     }
   }
 }

@@ -27,6 +27,9 @@ double contact_order(const LinkageSolver& solver, std::size_t b, double t0, cons
 // Whether dyad block b's side is defined at q: its two solutions are apart by more than rounding.
 // Always true for other blocks.
 bool side_defined(const LinkageSolver& solver, std::size_t b, const Eigen::VectorXd& q);
+// The same with the block's margin at q (LinkageSolver::dyad_margins) already at hand: a sweep over
+// every block reads the margins once, not once per block.
+bool side_defined_at(const LinkageSolver& solver, std::size_t b, const Eigen::VectorXd& q, double margin);
 
 // "left" / "right" of the line between a circle-circle dyad's centres; "ahead" / "behind" along a
 // circle-line dyad's line; "+" / "-" for a Newton block's det J.

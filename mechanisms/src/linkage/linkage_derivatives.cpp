@@ -22,15 +22,13 @@ namespace {
 // tenfold.
 std::optional<Eigen::VectorXd> sparse_newton(const LinkageModel& model, double s, Eigen::VectorXd q, double tolerance) {
   Eigen::VectorXd f;
-  Eigen::MatrixXd J;
   for (int k = 0; k <= 60; ++k) {
     model.residual(q, s, f);
     const double norm = f.size() == 0 ? 0.0 : f.lpNorm<Eigen::Infinity>();
     if (!std::isfinite(norm)) return std::nullopt;
     if (norm <= tolerance) return q;
     if (k == 60) break;
-    model.jacobian(q, s, J);
-    const Eigen::SparseMatrix<double> sparse = linkage_sparse_jacobian(J);
+    const Eigen::SparseMatrix<double> sparse = linkage_sparse_jacobian(model, s, q);
     Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
     lu.compute(sparse);
     if (lu.info() != Eigen::Success) return std::nullopt;

@@ -7,9 +7,11 @@
 #include <string>
 
 #include "linkage_fast_kernels.hpp"
+#include "linkage_fast_sparse.hpp"
 #include "linkage_joints.hpp"
 #include "numlab/linalg/input_checks.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/mechanisms/linkage/linkage_conditioning.hpp"
 
 namespace numlab::mechanisms {
 
@@ -177,8 +179,12 @@ LinkageFastSolver::LinkageFastSolver(const LinkageSolver& solver) : solver_(solv
   const LinkageModel& model = solver.model();
   const int n = model.unknown_count();
   f_.setZero(n), dx_.setZero(n), rhs_.setZero(n), inverse_pivots_.setZero(n), phi_t_.setZero(n), qdot_.setZero(n);
-  J_.setZero(n, n);
-  work_.setZero(n, n);
+  if (n > linkage_exact_conditioning_limit) {
+    sparse_ = std::make_unique<Sparse>();  // J sparse: no n x n matrix at all
+  } else {
+    J_.setZero(n, n);
+    work_.setZero(n, n);
+  }
   for (const Constraint& c : model.constraints()) {
     if (c.kind == ConstraintKind::crank) crank_ = &c;
   }
@@ -235,6 +241,9 @@ void LinkageFastSolver::lay_out_full_system(int n) {
   full_f_.setZero(n), full_dx_.setZero(n);
 }
 
+LinkageFastSolver::~LinkageFastSolver() = default;
+LinkageFastSolver::LinkageFastSolver(LinkageFastSolver&&) noexcept = default;
+
 LinkageFastOutcome LinkageFastSolver::solve(double t, Eigen::VectorXd& q) {
   if (q.size() != solver_.model().unknown_count()) {
     throw std::invalid_argument("starting point has " + std::to_string(q.size()) + " entries but the system has " +
@@ -248,6 +257,10 @@ LinkageFastOutcome LinkageFastSolver::solve(double t, Eigen::VectorXd& q) {
 
 LinkageFastOutcome LinkageFastSolver::solve_full(double t, Eigen::VectorXd& q) {
   linalg::require_finite(q, "starting point");
+  if (sparse_) {
+    const detail::SparseWholeProblem whole{solver_.model(), t, crank_direction(t), *sparse_};
+    return {newton_in_place(whole, q, f_, dx_, solver_.options().newton), -1};
+  }
   WholeProblem whole{solver_.model(), t, crank_direction(t), full_row_at_, full_column_at_, work_, full_f_, full_dx_,
                      rhs_, inverse_pivots_};
   return {newton_in_place(whole, q, f_, dx_, solver_.options().newton), -1};
@@ -337,14 +350,18 @@ Eigen::Vector2d LinkageFastSolver::crank_direction(double t) const {
 // earlier blocks' A_bc qdot_c (the later blocks' entries are zero, and so are qdot's unsolved ones).
 bool LinkageFastSolver::velocity(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot) {
   const LinkageModel& model = solver_.model();
-  model.jacobian(q, t, J_);
+  if (sparse_) sparse_->read_rows(model, t, q);
+  else model.jacobian(q, t, J_);
   model.driver_derivative(q, t, phi_t_);
   qdot.setZero(model.unknown_count());
   for (Block& block : blocks_) {
     for (int i = 0; i < block.size; ++i) {
       const int row = block.rows[static_cast<std::size_t>(i)];
-      block.f(i) = phi_t_(row) + J_.row(row).dot(qdot);  // the right-hand side is -f
-      for (int j = 0; j < block.size; ++j) block.work(i, j) = J_(row, block.columns[static_cast<std::size_t>(j)]);
+      block.f(i) = phi_t_(row) + (sparse_ ? sparse_->row_dot(row, qdot) : J_.row(row).dot(qdot));  // the right-hand side is -f
+      for (int j = 0; j < block.size; ++j) {
+        const int column = block.columns[static_cast<std::size_t>(j)];
+        block.work(i, j) = sparse_ ? sparse_->rows.coeff(row, column) : J_(row, column);
+      }
     }
     Status status = Status::converged;
     if (block.size == 2) {

@@ -213,9 +213,11 @@ void LinkageModel::residual(const Eigen::VectorXd& q, double t, Eigen::VectorXd&
   }
 }
 
-void LinkageModel::jacobian(const Eigen::VectorXd& q, double /*t*/, Eigen::MatrixXd& J) const {
+// Each constraint's partial derivatives, block by block: put(row, joint, block) for every joint the
+// constraint involves (a block of the constraint's rows by the joint's x and y).
+template <typename Put>
+void LinkageModel::for_each_partial(const Eigen::VectorXd& q, Put put) const {
   const PositionReader p{*this, q};
-  J.setZero(equation_count_, unknown_count());
   const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const Constraint& c = constraints_[k];
@@ -223,8 +225,8 @@ void LinkageModel::jacobian(const Eigen::VectorXd& q, double /*t*/, Eigen::Matri
     switch (c.kind) {
       case ConstraintKind::distance: {
         const Eigen::RowVector2d g = (p(c.joints[0]) - p(c.joints[1])).transpose() / c.length;
-        put(*this, J, row, c.joints[0], g);
-        put(*this, J, row, c.joints[1], Eigen::RowVector2d(-g));
+        put(row, c.joints[0], g);
+        put(row, c.joints[1], Eigen::RowVector2d(-g));
         break;
       }
       case ConstraintKind::body_point: {
@@ -232,23 +234,39 @@ void LinkageModel::jacobian(const Eigen::VectorXd& q, double /*t*/, Eigen::Matri
         Eigen::Matrix2d rotation;
         rotation << 0.0, -1.0, 1.0, 0.0;
         const Eigen::Matrix2d along = c.coefficients.x() * identity + c.coefficients.y() * rotation;
-        put(*this, J, row, c.joints[0], Eigen::Matrix2d(along - identity));
-        put(*this, J, row, c.joints[1], Eigen::Matrix2d(-along));
-        put(*this, J, row, c.joints[2], identity);
+        put(row, c.joints[0], Eigen::Matrix2d(along - identity));
+        put(row, c.joints[1], Eigen::Matrix2d(-along));
+        put(row, c.joints[2], identity);
         break;
       }
       case ConstraintKind::slider_line:
-        put(*this, J, row, c.joints[0], Eigen::RowVector2d(-c.direction.y(), c.direction.x()));
+        put(row, c.joints[0], Eigen::RowVector2d(-c.direction.y(), c.direction.x()));
         break;
       case ConstraintKind::crank:
-        put(*this, J, row, c.joints[0], Eigen::Matrix2d(-identity));
-        put(*this, J, row, c.joints[1], identity);
+        put(row, c.joints[0], Eigen::Matrix2d(-identity));
+        put(row, c.joints[1], identity);
         break;
       case ConstraintKind::slider_travel:
-        put(*this, J, row, c.joints[0], Eigen::RowVector2d(c.direction.transpose()));
+        put(row, c.joints[0], Eigen::RowVector2d(c.direction.transpose()));
         break;
     }
   }
+}
+
+void LinkageModel::jacobian(const Eigen::VectorXd& q, double /*t*/, Eigen::MatrixXd& J) const {
+  J.setZero(equation_count_, unknown_count());
+  for_each_partial(q, [&](int row, int joint, const auto& block) { put(*this, J, row, joint, block); });
+}
+
+void LinkageModel::jacobian_entries(const Eigen::VectorXd& q, double /*t*/, std::vector<JacobianEntry>& entries) const {
+  entries.clear();
+  for_each_partial(q, [&](int row, int joint, const auto& block) {
+    const int column = column_of(joint);
+    if (column < 0) return;  // a ground joint: no unknowns
+    for (Eigen::Index r = 0; r < block.rows(); ++r) {
+      for (int xy = 0; xy < 2; ++xy) entries.push_back({row + static_cast<int>(r), column + xy, block(r, xy)});
+    }
+  });
 }
 
 void LinkageModel::driver_derivative(const Eigen::VectorXd& /*q*/, double t, Eigen::VectorXd& phi_t) const {

@@ -451,8 +451,9 @@ bool watch_branch(PoseSolver& poses, BranchWatch& watch, LinkageSweep& sweep, Li
   const LinkageModel& model = solver.model();
   bool switched = false;
   const int here = static_cast<int>(sweep.poses.size());
+  std::vector<double> margins = solver.dyad_margins(pose.q);
   for (std::size_t b = 0; b < pose.signature.size(); ++b) {
-    if (!detail::side_defined(solver, b, pose.q)) continue;  // on the meeting point: decided at the next pose
+    if (!detail::side_defined_at(solver, b, pose.q, margins[b])) continue;  // on the meeting point: decided at the next pose
     const int from = watch.defined_at[b];
     watch.defined_at[b] = here;
     // Where the side was last read: the poses between were on (or within the solve's accuracy of)
@@ -485,6 +486,7 @@ bool watch_branch(PoseSolver& poses, BranchWatch& watch, LinkageSweep& sweep, Li
       crossing.switched = switched = true;
       crossing.side_after = watch.side[b];
       pose.signature = solver.signature(pose.q, t);
+      margins = solver.dyad_margins(pose.q);  // the later dyads' centres moved with it
     }
     watch.side[b] = crossing.side_after;
     sweep.crossings.push_back(crossing);

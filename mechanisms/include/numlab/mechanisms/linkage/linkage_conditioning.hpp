@@ -24,12 +24,16 @@ inline constexpr Eigen::Index linkage_exact_conditioning_limit = 100;
 // J's nonzeros as a sparse matrix, in one column-major pass (Eigen's sparseView() inserts entry by
 // entry: it took most of a 300-joint sweep's time).
 Eigen::SparseMatrix<double> linkage_sparse_jacobian(const Eigen::MatrixXd& J);
+// The model's J at (q, t) assembled sparse from its constraints (LinkageModel::jacobian_entries),
+// never as a dense matrix: time and memory linear in the joints.
+Eigen::SparseMatrix<double> linkage_sparse_jacobian(const LinkageModel& model, double t, const Eigen::VectorXd& q);
 
 // kappa_2 and ||J^-1||_2 from the SVD of J (any size).
 LinkageConditioning exact_linkage_conditioning(const Eigen::MatrixXd& J);
 // kappa_1 and sqrt(||J^-1||_1 ||J^-1||_inf), estimated from J's sparse LU (any size); both infinite
 // when the LU finds J singular.
 LinkageConditioning estimated_linkage_conditioning(const Eigen::MatrixXd& J);
+LinkageConditioning estimated_linkage_conditioning(const Eigen::SparseMatrix<double>& J);
 
 // linkage_kinematics (linkage_sweep.hpp) from the sparse LU of J instead of a dense one: the same
 // two solves, J qdot = -Phi_t and J qddot = gamma, in time about linear in the joints (the dense

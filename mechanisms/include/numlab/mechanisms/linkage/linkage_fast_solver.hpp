@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
@@ -42,6 +43,11 @@ class LinkageFastSolver {
   // Sizes the workspace for the solver's model and blocks (the solver must outlive it). Throws
   // std::invalid_argument when applies(solver.options()) is false.
   explicit LinkageFastSolver(const LinkageSolver& solver);
+  ~LinkageFastSolver();
+  LinkageFastSolver(LinkageFastSolver&&) noexcept;
+  LinkageFastSolver(const LinkageFastSolver&) = delete;
+  LinkageFastSolver& operator=(const LinkageFastSolver&) = delete;
+  LinkageFastSolver& operator=(LinkageFastSolver&&) = delete;
 
   const LinkageSolver& solver() const { return solver_; }
 
@@ -76,6 +82,8 @@ class LinkageFastSolver {
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> work;  // bigger blocks: J, then U
     Eigen::VectorXd x, f, dx, rhs, inverse_pivots;
   };
+  // J kept sparse, beyond linkage_exact_conditioning_limit unknowns (src/linkage/linkage_fast_sparse.hpp).
+  struct Sparse;
 
  private:
   LinkageFastOutcome solve_full(double t, Eigen::VectorXd& q);
@@ -94,6 +102,7 @@ class LinkageFastSolver {
   Eigen::VectorXd f_, dx_, rhs_, inverse_pivots_, phi_t_, qdot_;
   Eigen::MatrixXd J_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> work_;
+  std::unique_ptr<Sparse> sparse_;  // beyond linkage_exact_conditioning_limit unknowns
 };
 
 }  // namespace numlab::mechanisms

@@ -81,6 +81,13 @@ class LinkageModel {
   // unknown_count() square; only nonzeros are written (J is zeroed first).
   void residual(const Eigen::VectorXd& q, double t, Eigen::VectorXd& f) const;
   void jacobian(const Eigen::VectorXd& q, double t, Eigen::MatrixXd& J) const;
+  // The same J as its entries (row, column, value), each structural entry once per constraint that
+  // writes it (a sparse matrix sums duplicates): time and memory linear in the constraints.
+  struct JacobianEntry {
+    int row, column;
+    double value;
+  };
+  void jacobian_entries(const Eigen::VectorXd& q, double t, std::vector<JacobianEntry>& entries) const;
   // d Phi / d t at (q, t) and the right-hand side of the acceleration equation,
   //   gamma = -(qdot' Phi_qq qdot + 2 Phi_qt qdot + Phi_tt)   (so that J qddot = gamma).
   void driver_derivative(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi_t) const;
@@ -92,6 +99,8 @@ class LinkageModel {
 
  private:
   void derive();
+  template <typename Put>
+  void for_each_partial(const Eigen::VectorXd& q, Put put) const;
   void add(Constraint constraint);
 
   LinkageDescription description_;
