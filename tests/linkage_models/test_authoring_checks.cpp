@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -64,6 +65,34 @@ std::string coupler_body(const std::string& p_rough = "[1.6, 3.65]", const std::
          "[[link]]\njoints = [\"Q\", \"B\"]\nlength = 3.5\n"
          "[[body]]\nname = \"coupler\"\njoints = [\"A\", \"B\", \"P\"]\nlocal = [[0.0, 0.0], [4.0, 0.0], " + p_local + "]\n"
          "[driver]\ntype = \"crank\"\npivot = \"O\"\njoint = \"A\"\nangle = 60.0\n" + extra;
+}
+
+// The four-bar of four_bar() with the coupler point P of coupler_body() held by links A-P and B-P
+// (2.5 each), then a body A, B, P with P at `p_local` (the triangle the links already make). Lines:
+// P 9, the links 10, 13, 16, 24, 27, the body 30.
+std::string links_then_body(const std::string& p_local) {
+  std::string text = four_bar();
+  text.insert(text.find("[[link]]"), "P = [1.6, 3.65]\n");
+  return text + "[[link]]\njoints = [\"A\", \"P\"]\nlength = 2.5\n[[link]]\njoints = [\"B\", \"P\"]\nlength = 2.5\n"
+                "[[body]]\nname = \"coupler\"\njoints = [\"A\", \"B\", \"P\"]\nlocal = [[0.0, 0.0], [4.0, 0.0], " + p_local + "]\n";
+}
+
+// coupler_body() and a second body over the same joints (in another order) at line 25.
+std::string two_bodies(const std::string& local) {
+  return coupler_body("[1.6, 3.65]", "[2.0, 1.5]",
+                      "[[body]]\nname = \"copy\"\njoints = [\"B\", \"P\", \"A\"]\nlocal = " + local + "\n");
+}
+
+// The error `text`'s model gives: at `line`, starting with `start` and holding `also` (when not empty).
+void check_model_error(const std::string& text, int line, const std::string& start, const std::string& also = "") {
+  try {
+    const LinkageModel model(parse_linkage_description(text, "t.toml"));
+    FAIL("the description was accepted");
+  } catch (const LinkageFileError& e) {
+    CHECK(e.problem().starts_with(start));
+    if (!also.empty()) CHECK(e.problem().find(also) != std::string::npos);
+    CHECK(e.place().line == line);
+  }
 }
 
 // A slider-crank whose slider runs at 30 deg through the pivot (S solved at (2.92, 1.686)). Lines:
@@ -205,6 +234,49 @@ TEST_CASE("Authoring checks: a redundant item is named at its own line, not by i
                                          4.2 * scale)) != std::string::npos);
       CHECK(e.place().line == 25);
     }
+  }
+}
+
+TEST_CASE("Authoring checks: a redundant body is measured against the pose the other items give", "[linkage-authoring]") {
+  const std::string with = "with it, joints A, B, P have 9 equations for 6 unknowns; ";
+  for (double scale : scales) {
+    INFO("scale " << scale);
+    // The links A-B, A-P, B-P already make the body's triangle, in its shape: the body is named.
+    check_model_error(scaled(links_then_body("[2.0, 1.5]"), scale), 30,
+                      fmt::format("body coupler is redundant: {}the other items already hold its joints in its local "
+                                  "shape (all 3 distances; A and B {:.6g} apart)",
+                                  with, 4.0 * scale));
+    // A body repeating another in a rotated and shifted frame, joints in another order: the same.
+    check_model_error(scaled(two_bodies("[[1.0, 4.0], [-0.5, 2.0], [1.0, 0.0]]"), scale), 25,
+                      fmt::format("body copy is redundant: {}the other items already hold its joints in its local "
+                                  "shape (all 3 distances; B and A {:.6g} apart)",
+                                  with, 4.0 * scale));
+  }
+}
+
+TEST_CASE("Authoring checks: a redundant body that disagrees contradicts the others: the pair and both distances, or "
+          "its mirror image",
+          "[linkage-authoring]") {
+  for (double scale : scales) {
+    INFO("scale " << scale);
+    // P at (2.3, 1.5): A-P 2.74591 (the links hold 2.5), B-P 2.26716; A-P is further off.
+    check_model_error(scaled(links_then_body("[2.3, 1.5]"), scale), 30,
+                      "body coupler contradicts the other items: with it, joints A, B, P",
+                      fmt::format("; without it they hold joints A and P {:.6g} apart, its local coordinates ask for "
+                                  "{:.6g};",
+                                  2.5 * scale, std::sqrt(7.54) * scale));
+    // The copy with P 0.4 further from A-B: B-P and P-A are equally off (either may be named).
+    check_model_error(scaled(two_bodies("[[4.0, 0.0], [2.0, 1.9], [0.0, 0.0]]"), scale), 25,
+                      "body copy contradicts the other items",
+                      fmt::format(" {:.6g} apart, its local coordinates ask for {:.6g};", 2.5 * scale, std::sqrt(7.61) * scale));
+    // Every distance agrees, but the other body holds P on the other side of A-B.
+    check_model_error(scaled(two_bodies("[[4.0, 0.0], [2.0, -1.5], [0.0, 0.0]]"), scale), 25,
+                      "body copy contradicts the other items: with it, joints A, B, P",
+                      "; without it they hold its joints at its local distances but as their mirror image (B, A, P turn "
+                      "counter-clockwise in 'local', clockwise in the others' pose);");
+    // The body mirrored against its rough positions, beside links that follow them: said so, not "redundant".
+    check_model_error(scaled(links_then_body("[2.0, -1.5]"), scale), 30, "body coupler contradicts the other items",
+                      "(A, B, P turn clockwise in 'local', counter-clockwise in the others' pose);");
   }
 }
 

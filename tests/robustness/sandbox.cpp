@@ -66,6 +66,8 @@ std::string scaled_four_bar(double scale) {
 
 std::vector<std::pair<std::string, std::string>> linkage_inputs() {
   const std::string body = "\n[[body]]\nname = \"plate\"\njoints = [\"A\", \"B\", \"C\"]\n";
+  const std::string triangle_links =
+      "\n[[link]]\njoints = [\"A\", \"C\"]\nlength = 1.2\n\n[[link]]\njoints = [\"B\", \"C\"]\nlength = 3.7\n";
   return {
       {"lk-four-bar.toml", four_bar()},
       {"lk-syntax.toml", four_bar({{"length = 3.5", "length = = 3.5"}})},
@@ -88,6 +90,11 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
       {"lk-crank-radians.toml", four_bar({{"angle = 30.0", "angle = 0.5236"}})},
       {"lk-redundant.toml", four_bar({{"B = [3.4, 2.9]", "B = [3.4, 2.9]\nC = [1.43, 2.44]"}}) + body +
                                 "local = [[0.0, 0.0], [3.5, 0.0], [1.75, 1.0]]\n"},
+      // The triangle A, B, C already made by links A-B, A-C (1.2) and B-C (3.7), then a body over it.
+      {"lk-redundant-body.toml", four_bar({{"B = [3.4, 2.9]", "B = [3.4, 2.9]\nC = [0.04, 1.37]"}}) + triangle_links + body +
+                                     "local = [[0.0, 0.0], [3.5, 0.0], [0.0, 1.2]]\n"},
+      {"lk-contradicting-body.toml", four_bar({{"B = [3.4, 2.9]", "B = [3.4, 2.9]\nC = [0.04, 1.37]"}}) + triangle_links +
+                                         body + "local = [[0.0, 0.0], [3.5, 0.0], [0.0, 1.4]]\n"},
       {"lk-mirrored-body.toml", four_bar({{"B = [3.4, 2.9]", "B = [3.4, 2.9]\nC = [1.43, 2.44]"},
                                           {"[[link]]\njoints = [\"A\", \"B\"]\nlength = 3.5\n", ""}}) +
                                     body + "local = [[0.0, 0.0], [3.5, 0.0], [1.75, -1.0]]\n"},

@@ -112,41 +112,15 @@ void warn_link_lengths(const LinkageDescription& d, std::vector<AuthoringWarning
   }
 }
 
-// The body's three points spanning it best: the two farthest apart and the one farthest from
-// their line.
-std::array<std::size_t, 3> spanning_triangle(const BodySpec& body) {
-  std::array<std::size_t, 3> t{0, 1, 2};
-  double far = -1.0;
-  for (std::size_t i = 0; i < body.local.size(); ++i) {
-    for (std::size_t j = i + 1; j < body.local.size(); ++j) {
-      if (const double d = (body.local[i] - body.local[j]).norm(); d > far) far = d, t[0] = i, t[1] = j;
-    }
-  }
-  const Eigen::Vector2d base = body.local[t[1]] - body.local[t[0]];
-  double height = -1.0;
-  for (std::size_t k = 0; k < body.local.size(); ++k) {
-    if (const double h = std::abs(cross(base, body.local[k] - body.local[t[0]])); h > height) height = h, t[2] = k;
-  }
-  return t;
-}
-
-double signed_area(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-  return 0.5 * cross(b - a, c - a);
-}
-
 void warn_mirrored_bodies(const LinkageDescription& d, std::vector<AuthoringWarning>& out) {
+  std::vector<Eigen::Vector2d> rough;
+  for (const JointSpec& j : d.joints) rough.push_back(j.position);
   for (const BodySpec& body : d.bodies) {
-    const auto t = spanning_triangle(body);
-    const auto rough = [&](std::size_t k) { return joint(d, body.joints[k]).position; };
-    const double local = signed_area(body.local[t[0]], body.local[t[1]], body.local[t[2]]);
-    const double drawn = signed_area(rough(t[0]), rough(t[1]), rough(t[2]));
-    if (local * drawn >= 0.0 || std::abs(drawn) < mirror_area_fraction * std::abs(local)) continue;
-    const auto turn = [](double area) { return area > 0 ? "counter-clockwise" : "clockwise"; };
+    const BodyTurn turn = body_turn(body, rough);
+    if (!turn.mirrored(mirror_area_fraction)) continue;
     out.push_back({body.place, fmt::format("body '{}': its local coordinates are the mirror image of its joints' rough "
-                                           "positions ({}, {}, {} turn {} in 'local', {} in [joints]); the body keeps "
-                                           "its local shape",
-                                           body.name, joint(d, body.joints[t[0]]).name, joint(d, body.joints[t[1]]).name,
-                                           joint(d, body.joints[t[2]]).name, turn(local), turn(drawn))});
+                                           "positions ({}); the body keeps its local shape",
+                                           body.name, turn.text(d, "[joints]"))});
   }
 }
 
@@ -166,6 +140,43 @@ void warn_shifted_joints(const LinkageModel& model, const Eigen::VectorXd& refer
 }
 
 }  // namespace authoring
+
+bool BodyTurn::mirrored(double fraction) const {
+  return local * placed < 0.0 && std::abs(placed) >= fraction * std::abs(local);
+}
+
+std::string BodyTurn::text(const LinkageDescription& description, const std::string& where) const {
+  const auto turn = [](double area) { return area > 0 ? "counter-clockwise" : "clockwise"; };
+  return fmt::format("{}, {}, {} turn {} in 'local', {} in {}", authoring::joint(description, joints[0]).name,
+                     authoring::joint(description, joints[1]).name, authoring::joint(description, joints[2]).name,
+                     turn(local), turn(placed), where);
+}
+
+// The spanning triangle: the two local points farthest apart and the one farthest from their line.
+BodyTurn body_turn(const BodySpec& body, const std::vector<Eigen::Vector2d>& positions) {
+  using authoring::cross;
+  std::array<std::size_t, 3> t{0, 1, 2};
+  double far = -1.0;
+  for (std::size_t i = 0; i < body.local.size(); ++i) {
+    for (std::size_t j = i + 1; j < body.local.size(); ++j) {
+      if (const double d = (body.local[i] - body.local[j]).norm(); d > far) far = d, t[0] = i, t[1] = j;
+    }
+  }
+  const Eigen::Vector2d base = body.local[t[1]] - body.local[t[0]];
+  double height = -1.0;
+  for (std::size_t k = 0; k < body.local.size(); ++k) {
+    if (const double h = std::abs(cross(base, body.local[k] - body.local[t[0]])); h > height) height = h, t[2] = k;
+  }
+  const auto area = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+    return 0.5 * cross(b - a, c - a);
+  };
+  const auto at = [&](std::size_t k) { return positions[static_cast<std::size_t>(body.joints[k])]; };
+  BodyTurn turn;
+  for (std::size_t k = 0; k < 3; ++k) turn.joints[k] = body.joints[t[k]];
+  turn.local = area(body.local[t[0]], body.local[t[1]], body.local[t[2]]);
+  turn.placed = area(at(t[0]), at(t[1]), at(t[2]));
+  return turn;
+}
 
 std::string warning_line(const std::string& file, const AuthoringWarning& warning) {
   return warning.place.line > 0 ? fmt::format("{}:{}: {}", file, warning.place.line, warning.text)

@@ -6,9 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <optional>
 #include <set>
 
+#include "numlab/mechanisms/linkage/linkage_authoring_checks.hpp"
 #include "numlab/mechanisms/linkage/linkage_model.hpp"
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
 
@@ -192,48 +193,92 @@ int redundant_item(const LinkageModel& model, const Pattern& pattern, std::size_
   return found;
 }
 
-// Whether the other items agree with a redundant [[link]] (at `place`): the model without it, its
-// reference pose solved, and the link's two joints measured there. The distance, or NaN when the
-// item is no [[link]] or the model without it does not assemble.
-double distance_without_link(const LinkageModel& model, SourcePlace place, const LinkSpec*& link) {
+// The reference pose the other items give without the [[link]] or [[body]] at `place`: the model
+// without it, solved from the rough positions (to a tolerance relative to its size). Nothing when
+// the item is neither, or the others hold no pose by themselves (still over- or under-constrained,
+// or they do not assemble).
+std::optional<JointPositions> pose_without(const LinkageModel& model, SourcePlace place) {
   LinkageDescription reduced = model.description();
-  const auto found = std::find_if(reduced.links.begin(), reduced.links.end(), [&](const LinkSpec& l) { return same_place(l.place, place); });
-  link = nullptr;
-  if (found == reduced.links.end()) return std::numeric_limits<double>::quiet_NaN();
-  link = &model.description().links[static_cast<std::size_t>(found - reduced.links.begin())];
-  reduced.links.erase(found);
+  const auto at_place = [&](const auto& item) { return same_place(item.place, place); };
+  if (std::erase_if(reduced.links, at_place) + std::erase_if(reduced.bodies, at_place) == 0) return std::nullopt;
   try {
     const LinkageModel without(std::move(reduced));
     const LinkageSolver solver(without, LinkageSolverOptions{});
-    const JointPositions joints = without.positions(solver.reference());
-    return (joints[static_cast<std::size_t>(link->first)] - joints[static_cast<std::size_t>(link->second)]).norm();
-  } catch (const std::exception&) {  // still over-constrained, or it does not assemble without the link
-    return std::numeric_limits<double>::quiet_NaN();
+    return without.positions(polished_reference(without, solver.reference()));
+  } catch (const std::exception&) {
+    return std::nullopt;
   }
 }
 
+// The pose is solved to 1e-11 of the size: a distance within 1e-6 of the item's agrees.
+constexpr double agreement = 1e-6;
+
+// A redundant [[link]] against the pose the others give: it agrees (redundant) or asks for another
+// distance (contradicts them).
+std::string link_verdict(const LinkSpec& link, const JointPositions& pose, const std::string& name, const std::string& with) {
+  const double distance = (pose[static_cast<std::size_t>(link.first)] - pose[static_cast<std::size_t>(link.second)]).norm();
+  if (std::abs(distance - link.length) > agreement * std::max(distance, link.length)) {
+    return fmt::format("{} contradicts the other items: {}; without it they hold its joints {:.6g} apart, it asks for {:.6g}",
+                       name, with, distance, link.length);
+  }
+  return fmt::format("{} is redundant: {}; the other items already hold its joints {:.6g} apart, its own length", name,
+                     with, distance);
+}
+
+// A redundant [[body]] against the pose the others give: the pair of its joints whose distance
+// there differs most from its local coordinates' (contradicts them), else its turn: held as its
+// mirror image (contradicts them) or in its own shape (redundant, named with its longest pair).
+std::string body_verdict(const LinkageDescription& d, const BodySpec& body, const JointPositions& pose,
+                         const std::string& name, const std::string& with) {
+  struct Pair {
+    std::size_t first = 0, second = 1;
+    double own = 0.0, held = 0.0;
+  };
+  Pair worst, longest;
+  for (std::size_t i = 0; i < body.joints.size(); ++i) {
+    for (std::size_t j = i + 1; j < body.joints.size(); ++j) {
+      const Pair p{i, j, (body.local[i] - body.local[j]).norm(),
+                   (pose[static_cast<std::size_t>(body.joints[i])] - pose[static_cast<std::size_t>(body.joints[j])]).norm()};
+      if (std::abs(p.held - p.own) > std::abs(worst.held - worst.own)) worst = p;
+      if (p.own > longest.own) longest = p;
+    }
+  }
+  const auto joint_name = [&](std::size_t k) { return d.joints[static_cast<std::size_t>(body.joints[k])].name; };
+  if (std::abs(worst.held - worst.own) > agreement * longest.own) {
+    return fmt::format("{} contradicts the other items: {}; without it they hold joints {} and {} {:.6g} apart, its "
+                       "local coordinates ask for {:.6g}",
+                       name, with, joint_name(worst.first), joint_name(worst.second), worst.held, worst.own);
+  }
+  const BodyTurn turn = body_turn(body, pose);
+  if (turn.mirrored(0.0)) {
+    return fmt::format("{} contradicts the other items: {}; without it they hold its joints at its local distances but "
+                       "as their mirror image ({})",
+                       name, with, turn.text(d, "the others' pose"));
+  }
+  return fmt::format("{} is redundant: {}; the other items already hold its joints in its local shape (all {} distances; "
+                     "{} and {} {:.6g} apart)",
+                     name, with, body.joints.size() * (body.joints.size() - 1) / 2, joint_name(longest.first),
+                     joint_name(longest.second), longest.held);
+}
+
 // "link A-B is redundant: with it, joints A, B have 5 equations for 4 unknowns; ..." at the item's
-// place (a body is named as a whole: "body plate"). A [[link]] is measured against the pose the
-// other items give: one that agrees is redundant, one that does not contradicts them.
+// place (a body is named as a whole: "body plate"). A [[link]] or [[body]] is measured against the
+// pose the other items give: one that agrees is redundant, one that does not contradicts them.
 StructuralProblem redundancy(const LinkageModel& model, int item, const std::set<int>& rows, const std::set<int>& columns,
                              const std::string& count) {
+  const LinkageDescription& d = model.description();
   const Constraint& c = model.constraints()[static_cast<std::size_t>(item)];
   const std::string joints = who(model, rows, columns);
   const std::string name = c.name.substr(0, c.name.find(':'));
   const std::string with = fmt::format("with it, {} {} {}", joints, joints.find(',') == std::string::npos ? "has" : "have", count);
-  const LinkSpec* link = nullptr;
-  const double distance = distance_without_link(model, c.place, link);
-  if (link != nullptr && std::isfinite(distance)) {
-    // The reference pose is solved to 1e-9 of the size: a length within 1e-6 of it agrees.
-    if (std::abs(distance - link->length) > 1e-6 * std::max(distance, link->length)) {
-      return {fmt::format("{} contradicts the other items: {}; without it they hold its joints {:.6g} apart, it asks for "
-                          "{:.6g}",
-                          name, with, distance, link->length),
-              c.place};
+  if (const std::optional<JointPositions> pose = pose_without(model, c.place)) {
+    const auto at_place = [&](const auto& spec) { return same_place(spec.place, c.place); };
+    if (const auto link = std::find_if(d.links.begin(), d.links.end(), at_place); link != d.links.end()) {
+      return {link_verdict(*link, *pose, name, with), c.place};
     }
-    return {fmt::format("{} is redundant: {}; the other items already hold its joints {:.6g} apart, its own length", name,
-                        with, distance),
-            c.place};
+    if (const auto body = std::find_if(d.bodies.begin(), d.bodies.end(), at_place); body != d.bodies.end()) {
+      return {body_verdict(d, *body, *pose, name, with), c.place};
+    }
   }
   return {fmt::format("{} is redundant: {}; the other items already hold them", name, with), c.place};
 }

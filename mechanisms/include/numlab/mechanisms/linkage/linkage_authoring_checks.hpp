@@ -16,6 +16,7 @@
 // gets the same verdicts.
 
 #include <Eigen/Core>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,20 @@ std::vector<AuthoringWarning> authoring_warnings(const LinkageModel& model, cons
 // from `start`, or from the rough positions when `start` is empty): the solver's own tolerance is
 // absolute, and a millimetre-sized file would otherwise stop at its rough positions.
 Eigen::VectorXd polished_reference(const LinkageModel& model, const Eigen::VectorXd& start);
+
+// Which way a body turns: the signed areas of its spanning triangle (its two local points farthest
+// apart and the one farthest from their line) in its local coordinates and at `positions` (one per
+// joint of the description). A body placed at its own distances is its mirror image exactly when
+// the two signs differ (the mirrored-body warning, and a redundant body held mirrored by the others).
+struct BodyTurn {
+  std::array<int, 3> joints{};       // the triangle's joints, indices into the description's joints
+  double local = 0.0, placed = 0.0;  // signed areas
+  // The triangle at `positions` turns the other way, with at least `fraction` of its local area.
+  bool mirrored(double fraction) const;
+  // "A, B, C turn clockwise in 'local', counter-clockwise in WHERE".
+  std::string text(const LinkageDescription& description, const std::string& where) const;
+};
+BodyTurn body_turn(const BodySpec& body, const std::vector<Eigen::Vector2d>& positions);
 
 // The mechanism's size: the largest link length, body extent or distance between two joints' rough
 // positions.
