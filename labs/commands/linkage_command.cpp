@@ -104,7 +104,7 @@ DerivativeReport check_poses(const LinkageSolver& solver, const LinkageSweep& sw
       continue;
     }
     if (check.singular) {
-      ++report.singular;
+      ++(check.near_meeting_point ? report.singular : report.ill_conditioned);
       continue;
     }
     ++report.poses;

@@ -279,9 +279,11 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
   }
   out["derivative_check"] = {{"poses", r.derivatives.poses},
                              {"singular_poses", r.derivatives.singular},
+                             {"ill_conditioned_poses", r.derivatives.ill_conditioned},
                              {"velocity_relative", r.derivatives.velocity},
                              {"acceleration_relative", r.derivatives.acceleration},
-                             {"agrees", r.derivatives.failure.empty()},
+                             {"agrees", r.derivatives.poses == 0 ? nlohmann::ordered_json()  // nothing checked: no verdict
+                                                                 : nlohmann::ordered_json(r.derivatives.failure.empty())},
                              {"failure", r.derivatives.failure}};
   if (r.jacobian) {
     out["jacobian_check"] = {{"poses", r.jacobian->poses},
@@ -352,11 +354,19 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
   out << fmt::format("derivatives        at {} pose{}, against finite differences of positions: velocity {:.1e}, "
                      "acceleration {:.1e} (relative): {}\n",
                      r.derivatives.poses, r.derivatives.poses == 1 ? "" : "s", r.derivatives.velocity, r.derivatives.acceleration,
-                     r.derivatives.failure.empty() ? "agree" : "DISAGREE " + r.derivatives.failure);
+                     r.derivatives.poses == 0                ? "nothing checked"
+                     : r.derivatives.failure.empty() ? "agree"
+                                                     : "DISAGREE " + r.derivatives.failure);
   if (r.derivatives.singular > 0) {
     out << fmt::format("                   {} pose{} on a crossing not checked: J is singular there, and their velocity "
                        "and acceleration are differences of positions solved along the branch\n",
                        r.derivatives.singular, r.derivatives.singular == 1 ? "" : "s");
+  }
+  if (r.derivatives.ill_conditioned > 0) {
+    out << fmt::format("                   {} pose{} not checked: kappa(J) above 1e5 with every dyad away from its meeting "
+                       "point (J is ill-conditioned, not singular): J's kinematics are good only to about eps kappa^2, "
+                       "so their velocity and acceleration are differences of positions solved along the branch\n",
+                       r.derivatives.ill_conditioned, r.derivatives.ill_conditioned == 1 ? "" : "s");
   }
   if (r.jacobian) {
     out << fmt::format("jacobian           exact J against finite differences at {} solved poses: worst relative error "

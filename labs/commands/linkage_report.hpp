@@ -24,7 +24,8 @@ struct JacobianReport {
 // Velocities and accelerations against finite differences of positions at a few poses.
 struct DerivativeReport {
   int poses = 0, unsolved = 0;
-  int singular = 0;            // poses on a crossing: not checked (their kinematics are differences already)
+  int singular = 0;            // poses on a crossing or fold: not checked (their kinematics are differences already)
+  int ill_conditioned = 0;     // poses with kappa(J) > 1e5 but every block regular: not checked either
   double velocity = 0.0;       // worst |qdot - central difference| / (|qdot| + size)
   double acceleration = 0.0;   // worst |qddot - 7-point stencil| / (|qddot| + size)
   std::string failure;         // the first pose beyond the tolerance, in words; empty when none

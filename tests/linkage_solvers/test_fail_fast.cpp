@@ -268,3 +268,25 @@ TEST_CASE("Beyond 100 unknowns the fast path's sparse J gives the dense path's p
     CHECK((fast_velocity - velocity).lpNorm<Eigen::Infinity>() <= 100.0 * kappa * 1e-16 * (1.0 + velocity.lpNorm<Eigen::Infinity>()));
   }
 }
+
+TEST_CASE("A long chain's large kappa(J) is not a crossing: the derivative check says which it skipped", "[linkage][scaling]") {
+  // A 500-joint chain: kappa(J) about 2e5 (it grows as the chain lengthens) with every dyad far from
+  // its meeting point; the parallelogram on its crossing at 0 degrees: a dyad exactly there.
+  const LinkageModel chain = chain_model(500);
+  const LinkageSolver chain_solver(chain, {});
+  const double t = chain.driver_from_user(65.0);
+  const LinkageSolution pose = chain_solver.solve(t, chain_solver.reference());
+  REQUIRE(pose.outcome.status == Status::converged);
+  const DerivativeCheck long_chain = check_derivatives(chain_solver, t, pose.q);
+  INFO("chain: kappa " << long_chain.condition);
+  CHECK(long_chain.singular);  // beyond what J's kinematics resolve
+  CHECK_FALSE(long_chain.near_meeting_point);
+
+  const LinkageModel parallelogram(read_linkage_description(std::string(NUMLAB_MODELS_DIR) + "/parallelogram.toml"));
+  const LinkageSolver solver(parallelogram, {});
+  const LinkageSweep on_crossing = linkage_sweep(solver, 0.0, 0.0, 1.0);
+  REQUIRE(on_crossing.status == Status::converged);
+  const DerivativeCheck crossing = check_derivatives(solver, 0.0, on_crossing.poses[0].q);
+  CHECK(crossing.singular);
+  CHECK(crossing.near_meeting_point);
+}

@@ -117,6 +117,9 @@ DerivativeCheck check_derivatives(const LinkageSolver& solver, double t_given, c
   check.condition = linkage_conditioning(model, t, *q).condition;
   if (!(check.condition <= detail::singular_condition)) {
     check.singular = true;  // J gives no velocity here: the sweep took it from differences already
+    for (const double margin : solver.dyad_margins(*q)) {
+      if (margin <= 1e-3 * solver.size()) check.near_meeting_point = true;  // NaN (not a dyad): false
+    }
     return check;
   }
   Eigen::VectorXd velocity, acceleration;

@@ -137,7 +137,9 @@ struct DerivativeCheck {
   double velocity_reference = 1.0;   // the mechanism's size in the velocity's units (a crank's: its longest link)
   double acceleration_reference = 1.0;
   bool solved = true;                // false when a neighbouring pose did not solve
-  bool singular = false;             // J is singular at the pose (a crossing): its kinematics are differences already
+  bool singular = false;             // kappa(J) above 1e5 at the pose: its kinematics are differences already
+  bool near_meeting_point = false;   // ... with a dyad at (within 1e-3 of the size of) its meeting point:
+                                     // a crossing or a fold; else J is ill-conditioned but no block is singular
   double condition = 1.0;            // kappa_2(J) at the pose
   double acceleration_reference_spread = 0.0;  // |stencil(h) - stencil(h/2)|: how far the reference itself is sure
   // Relative readings, in the units' own scale: difference / (max |qdot| + the mechanism's size).
