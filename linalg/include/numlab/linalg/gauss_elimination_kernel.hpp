@@ -20,12 +20,14 @@ struct EliminationOutcome {
   int columns;
 };
 
-// Solves the system held in U (row-major, n x n) and c in place: U becomes upper triangular,
-// inverse_pivots[k] = 1/u_kk, and x the solution. A pivot with |u_kk| <= negligible_pivot stops
-// it with Status::singular, a non-finite pivot or unknown with Status::non_finite.
-template <int N, typename WorkMatrix, typename VectorType>
-EliminationOutcome gepp_kernel(WorkMatrix& U, VectorType& c, VectorType& inverse_pivots, VectorType& x,
-                               double negligible_pivot, bool partial_pivoting) {
+// Solves the system held in U (row-major, n x n) and c in place: U's upper triangle becomes U, its
+// strictly lower part keeps the multipliers l_ik (LAPACK's packed LU, moved with their rows by
+// later swaps), pivot_rows[k] = the row swapped with row k, inverse_pivots[k] = 1/u_kk, and x the
+// solution. A pivot with |u_kk| <= negligible_pivot stops it with Status::singular, a non-finite
+// pivot or unknown with Status::non_finite.
+template <int N, typename WorkMatrix, typename VectorType, typename PivotRows>
+EliminationOutcome gepp_kernel(WorkMatrix& U, VectorType& c, VectorType& inverse_pivots, PivotRows& pivot_rows,
+                               VectorType& x, double negligible_pivot, bool partial_pivoting) {
   const int n = N == Eigen::Dynamic ? static_cast<int>(U.rows()) : N;
   // Differs from the textbook: rows as raw pointers (row-major, so each row is contiguous).
   double* const rows = U.data();
@@ -50,6 +52,7 @@ EliminationOutcome gepp_kernel(WorkMatrix& U, VectorType& c, VectorType& inverse
       U.row(k).swap(U.row(i));
       std::swap(c(k), c(i));
     }
+    pivot_rows(k) = pivot_row;
 
     const double pivot = row(k)[k];
     if (!std::isfinite(pivot)) return {Status::non_finite, k};
@@ -61,7 +64,7 @@ EliminationOutcome gepp_kernel(WorkMatrix& U, VectorType& c, VectorType& inverse
     for (int i = k + 1; i < n; ++i) {
       double* entries = row(i);
       const double multiplier = entries[k] * inverse_pivot;
-      entries[k] = 0.0;
+      entries[k] = multiplier;  // kept for L (the textbook sets a_ik to 0 and keeps l_ik apart)
       for (int j = k + 1; j < n; ++j) entries[j] -= multiplier * pivot_entries[j];
       c(i) -= multiplier * c(k);
     }
