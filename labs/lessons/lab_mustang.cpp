@@ -60,22 +60,22 @@ MustangSweep fixed_sweep(const std::string& solver, double start, double stop, d
   return mustang_sweep(*pose_solver, start, stop, step, {}, trace);
 }
 
-}  // namespace
-
-int run_mustang_lab(LabSession& session) {
-  const MustangLinkage linkage;
+// Step 1: the model's four loops, and its hand-derived Jacobian checked against finite differences.
+void show_the_model(LabSession& session, const MustangStart& start) {
   session.begin_step("The model",
                      "Seed 003's four loops, each a 2x2 system: (A, B) closes 1-2-4-3, (C, D) closes 0-2-6-5, "
                      "(E, F) closes 6-7-10-8 given C, (G, H) closes 8-10-11-9 given C and F. The three major links "
                      "are rigid bodies bent by 20 degrees. The model's assumptions are written next to the code "
                      "(mechanisms/mustang_closure.hpp, mustang_linkage.hpp). First, the hand-derived 8x8 Jacobian "
                      "against central finite differences at the seed's start:");
-  const MustangStart start = mustang_seed_start();
   const MustangClosure closure(45.0 * degrees);
   const auto check = nonlinear::check_jacobian(nonlinear::AsDynamicSystem(closure), Eigen::VectorXd(start.x));
   session.say(fmt::format("{} (worst entry {}). It is block lower-triangular: each loop reads only the loops before it.",
                           check.agrees ? "It agrees" : "It DOES NOT agree", nonlinear::describe_worst_entry(check)));
+}
 
+// Step 2: the seed's method run as written on the seed's own grid, and where it stops.
+void show_the_seed_method_as_written(LabSession& session, const MustangLinkage& linkage) {
   session.begin_step("Seed 003's method as written",
                      "At every theta each loop restarts from [pi/18, pi/2]; Newton stops when |f_i + f_j| <= 0.001; "
                      "loop 3's second Jacobian row has both signs flipped and loop 4's dJ/dH reads D for H; |2 6| is "
@@ -103,7 +103,10 @@ int run_mustang_lab(LabSession& session) {
               "step. Where it runs out, its E and F are wherever the last step left them, so loop 4 solves for a "
               "linkage that does not close. Where a loop does stop, |f_i + f_j| can be small while f_i = -f_j is "
               "not: the test passes away from a root.");
+}
 
+// Step 3: the seed's errors fixed one after another, each variant counted over the assembly range.
+void show_each_error_in_turn(LabSession& session, const MustangLinkage& linkage, const MustangStart& start) {
   session.begin_step("Each error in turn",
                      "The same method over theta = -41 ... 56 deg (1 deg apart, inside the assembly range found "
                      "below), fixing one error after another. 'on branch' counts poses within 1e-2 of the closed "
@@ -142,12 +145,15 @@ int run_mustang_lab(LabSession& session) {
   session.say("Restarting from one fixed guess is what confines the seed to 30-60 degrees: far from the guess Newton "
               "reaches the other assembly of a loop (or none), and loop 4 is near its collinear kite around 43 "
               "degrees, where its Jacobian is singular. Continuation from the last pose keeps the branch.");
+}
 
+// Step 4: the fixed method (continuation) over the whole range with full and sequential Newton;
+// full_trace keeps every solve of the full sweep. Returns the full sweep, whose verdict is the lab's.
+MustangSweep show_the_fixed_method_over_the_range(LabSession& session, SweepRecorder<MustangSweepStepper>& full_trace) {
   session.begin_step("The fixed method over the whole range",
                      "Continuation from the seed's start at 45 deg (every loop from [pi/18, pi/2], damped), a predictor "
                      "from the last two poses, and step halving that becomes a bisection on theta near a limit. "
                      "Sweep -90:90:0.5 with full and sequential Newton:");
-  SweepRecorder<MustangSweepStepper> full_trace;
   const MustangSweep full = fixed_sweep("full", -90.0, 90.0, 0.5, &full_trace);
   const MustangSweep sequential = fixed_sweep("sequential", -90.0, 90.0, 0.5);
   double agreement = 0.0;
@@ -170,7 +176,11 @@ int run_mustang_lab(LabSession& session) {
                           full.lower.last_assembled_deg, full.upper.last_assembled_deg,
                           mustang_loop_names[static_cast<std::size_t>(std::max(full.lower.loop, 1) - 1)],
                           mustang_loop_names[static_cast<std::size_t>(std::max(full.upper.loop, 1) - 1)], agreement));
+  return full;
+}
 
+// Step 5: every solve the sweep tried near the upper limit, where the step halves into a bisection.
+void show_the_sweep_near_the_upper_limit(LabSession& session, const SweepRecorder<MustangSweepStepper>& full_trace) {
   session.begin_step("Newton near the upper limit",
                      "Every solve the sweep tried above 55 deg: the step halves into a bisection, Newton needs more "
                      "iterations, and the Jacobian's condition grows as the loop's margin goes to zero (a fold: two "
@@ -187,7 +197,10 @@ int run_mustang_lab(LabSession& session) {
                   attempt.accepted ? "yes" : "no"});
   }
   session.show(near, "upper-limit-trace");
+}
 
+// Step 5, continued: Newton one solve at a time near the limit, iteration by iteration.
+void show_newton_iterations_near_the_limit(LabSession& session, const MustangLinkage& linkage, const MustangStart& start) {
   // Newton iteration by iteration: each solve starts from the pose 0.05 deg before it.
   Table iterations({"theta (deg)", "k", "||f||_inf", "||f_k|| / ||f_k-1||^2", "kappa(J)"});
   for (const double theta : {50.0, 56.0, 56.4, 56.45}) {
@@ -210,7 +223,10 @@ int run_mustang_lab(LabSession& session) {
   session.say("Far from the limit the residual squares each iteration with a small constant; near it the constant "
               "||f_k|| / ||f_k-1||^2 grows with kappa(J), the first steps gain less, and the basin in which Newton "
               "converges shrinks, which is why the sweep must halve its step there.");
+}
 
+// Step 6: the linkage drawn at 45 deg with its roof tip's path, and the sweep animated.
+void show_the_scenes(LabSession& session) {
   session.begin_step("The scenes", "The linkage at 45 deg with the path of the roof tip P12, and the sweep animated "
                                    "forth and back (open the SVG files in a browser).");
   const MustangSweep scene = fixed_sweep("full", -41.0, 56.0, 1.0);
@@ -220,7 +236,10 @@ int run_mustang_lab(LabSession& session) {
   const std::string moving = write_lab_file(session, "mustang-animated.svg", mustang_animation_svg(scene, 8.0));
   session.figure(still, "the roof linkage at 45 deg, the three major links heavy, with the path of the roof tip P12");
   session.figure(moving, "the sweep over the assembly range, animated forth and back");
+}
 
+// Step 7: every solver timed over the range, as ratios to full Newton.
+void compare_every_solver(LabSession& session) {
   session.begin_step("Every solver over the range", "One sweep -41:56:0.5 per solver (median of repeated runs, "
                                                     "tolerance 1e-10), as ratios to full Newton:");
   const auto rows = bench_mustang(1e-10, true);
@@ -232,6 +251,22 @@ int run_mustang_lab(LabSession& session) {
   session.show(compare, "solvers");
   session.say("'error' is the worst joint distance from the closed form over the sweep. A quick timing (few runs): "
               "`numlab bench mustang` measures properly and includes all eight GSL types.");
+}
+
+}  // namespace
+
+int run_mustang_lab(LabSession& session) {
+  const MustangLinkage linkage;
+  const MustangStart start = mustang_seed_start();
+  show_the_model(session, start);
+  show_the_seed_method_as_written(session, linkage);
+  show_each_error_in_turn(session, linkage, start);
+  SweepRecorder<MustangSweepStepper> full_trace;
+  const MustangSweep full = show_the_fixed_method_over_the_range(session, full_trace);
+  show_the_sweep_near_the_upper_limit(session, full_trace);
+  show_newton_iterations_near_the_limit(session, linkage, start);
+  show_the_scenes(session);
+  compare_every_solver(session);
   return full.status == Status::cannot_assemble && full.branch_kept ? exit_success : exit_method_failed;
 }
 
