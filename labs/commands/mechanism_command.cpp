@@ -187,15 +187,55 @@ bool built_in(const std::string& name) { return name == "jansen" || name == "jan
 
 }  // namespace
 
+namespace {
+
+// The Jansen sweep's report in the format asked for.
+void print_jansen_report(const CommonOptions& common, const std::string& name, const std::string& solver,
+                         JansenModel model, const mechanisms::JansenSweep& sweep, const Tracer& tracer, double time_s) {
+  if (common.format == Format::json) {
+    std::cout << json_of(name, solver, model, sweep, common.trace ? &tracer : nullptr, time_s).dump(2) << '\n';
+  } else if (common.format == Format::csv) {
+    print_csv(std::cout, model, sweep);
+  } else {
+    print_text(std::cout, name, solver, model, sweep, time_s);
+  }
+}
+
+}  // namespace
+
 int MechanismCommand::run() const {
   // 1. Every flag and every output file checked before any work (docs/cli.md, "Which flags apply where").
   const CommonOptions common = checked_common_options(common_, "mechanism");
+  const std::string file = linkage_file();
+  const bool from_file = !file.empty();
+  check_flags(common, from_file);
+  if (explain_) return explain(common, file);
+  if (!crank_ && sweep_.empty()) throw std::invalid_argument("give --crank DEG or --sweep START:STOP:STEP");
+  if (crank_ && !std::isfinite(*crank_)) throw std::invalid_argument("--crank must be a finite number of degrees");
+  const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : parse_sweep(sweep_);
+  if (!beest_.empty()) require_full_turn(range);
+  const OutputPaths paths = checked_outputs(common, file);
+  // 2. Dispatch: a description file, the Mustang or the Jansen leg.
+  if (from_file) return solve_file(common, file, paths);
+  if (name_ == "mustang") {
+    if (!beest_.empty()) throw std::invalid_argument("--beest draws the Jansen leg's beest, not the mustang");
+    return run_mustang({range.start, range.stop, range.step, solver_, linear_, common, paths.svg, paths.animate});
+  }
+  return sweep_jansen(common, range, paths);
+}
+
+// The description file NAME stands for; empty for the built-in jansen, jansen10 and mustang.
+std::string MechanismCommand::linkage_file() const {
   const std::string file = built_in(name_) ? std::string() : linkage_file_for(name_);
   if (!built_in(name_) && file.empty()) {
     throw std::invalid_argument("mechanism name '" + printable(std::string_view(name_).substr(0, 40)) + (name_.size() > 40 ? "...'" : "'") +
                                 ": not jansen, jansen10, mustang, a shipped model (numlab models) or a file");
   }
-  const bool from_file = !file.empty();
+  return file;
+}
+
+// Each flag given only where it applies, each file flag with a name.
+void MechanismCommand::check_flags(const CommonOptions& common, bool from_file) const {
   for (const auto* flag : {"--explain", "--check-jacobian", "--arrows", "--strict", "--at-crossing"}) {
     require_applies(given(*command_, flag), from_file, flag, "a linkage description file or shipped model");
   }
@@ -213,60 +253,64 @@ int MechanismCommand::run() const {
   if (given(*command_, "--beest-animated") && !(beest_seconds_ > 0.0 && std::isfinite(beest_seconds_))) {
     throw std::invalid_argument("--beest-animated: the stride time must be a positive number of seconds");
   }
-  if (explain_) {
-    for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--strict",
-                             "--at-crossing"}) {
-      require_applies(given(*command_, flag), false, flag, "a solve, not --explain");
-    }
-    for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
-      require_applies(given(common, flag), false, flag, "a solve, not --explain");
-    }
-    if (common.format == Format::csv) throw std::invalid_argument("--explain prints text or JSON, not CSV");
-    LinkageRun run;
-    run.file = file;
-    run.explain = true;
-    run.common = common;
-    return run_linkage(run);
+}
+
+// --explain: the derived model of a description file, no solve.
+int MechanismCommand::explain(const CommonOptions& common, const std::string& file) const {
+  for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--strict",
+                           "--at-crossing"}) {
+    require_applies(given(*command_, flag), false, flag, "a solve, not --explain");
   }
-  if (!crank_ && sweep_.empty()) throw std::invalid_argument("give --crank DEG or --sweep START:STOP:STEP");
-  if (crank_ && !std::isfinite(*crank_)) throw std::invalid_argument("--crank must be a finite number of degrees");
-  const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : parse_sweep(sweep_);
-  if (!beest_.empty()) require_full_turn(range);
-  const std::string svg = output_path(common, svg_), animate = output_path(common, animate_),
-                    beest = output_path(common, beest_);
+  for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
+    require_applies(given(common, flag), false, flag, "a solve, not --explain");
+  }
+  if (common.format == Format::csv) throw std::invalid_argument("--explain prints text or JSON, not CSV");
+  LinkageRun run;
+  run.file = file;
+  run.explain = true;
+  run.common = common;
+  return run_linkage(run);
+}
+
+// The output files inside --out, checked writable (and not the description file) before any work.
+MechanismCommand::OutputPaths MechanismCommand::checked_outputs(const CommonOptions& common, const std::string& file) const {
+  const OutputPaths paths{output_path(common, svg_), output_path(common, animate_), output_path(common, beest_)};
   std::vector<PlannedFile> outputs;
-  for (const auto& [path, flag] : {std::pair{svg, "--svg"}, std::pair{animate, "--animate"}, std::pair{beest, "--beest"}}) {
+  for (const auto& [path, flag] : {std::pair{paths.svg, "--svg"}, std::pair{paths.animate, "--animate"}, std::pair{paths.beest, "--beest"}}) {
     if (!path.empty()) outputs.push_back({path, flag});
   }
-  check_outputs(outputs, from_file ? std::vector<std::string>{file} : std::vector<std::string>{});
-  if (from_file) {
-    LinkageRun run;
-    run.file = file;
-    run.driver = crank_;
-    run.sweep = sweep_;
-    run.solver = solver_;
-    run.linear = linear_;
-    run.linear_given = given(*command_, "--linear");
-    run.check_jacobian = check_jacobian_;
-    run.arrows = arrows_;
-    run.strict = strict_;
-    run.switch_at_crossing = at_crossing_ == "switch";
-    run.common = common;
-    run.svg = svg;
-    run.animate = animate;
-    return run_linkage(run);
-  }
-  if (name_ == "mustang") {
-    if (!beest_.empty()) throw std::invalid_argument("--beest draws the Jansen leg's beest, not the mustang");
-    return run_mustang({range.start, range.stop, range.step, solver_, linear_, common, svg, animate});
-  }
+  check_outputs(outputs, !file.empty() ? std::vector<std::string>{file} : std::vector<std::string>{});
+  return paths;
+}
+
+// A description file or shipped model, solved by the linkage command.
+int MechanismCommand::solve_file(const CommonOptions& common, const std::string& file, const OutputPaths& paths) const {
+  LinkageRun run;
+  run.file = file;
+  run.driver = crank_;
+  run.sweep = sweep_;
+  run.solver = solver_;
+  run.linear = linear_;
+  run.linear_given = given(*command_, "--linear");
+  run.check_jacobian = check_jacobian_;
+  run.arrows = arrows_;
+  run.strict = strict_;
+  run.switch_at_crossing = at_crossing_ == "switch";
+  run.common = common;
+  run.svg = paths.svg;
+  run.animate = paths.animate;
+  return run_linkage(run);
+}
+
+// The Jansen leg (8 or 10 equations): sweep, write the files, print the report.
+int MechanismCommand::sweep_jansen(const CommonOptions& common, const SweepRange& range, const OutputPaths& paths) const {
   const JansenModel model = name_ == "jansen" ? JansenModel::eight_equations : JansenModel::ten_equations;
 
   nonlinear::NewtonOptions options;
   if (common.tolerance) options.residual_tolerance = *common.tolerance;
   if (common.max_iterations) options.max_iterations = *common.max_iterations;
   const auto solver = mechanisms::make_jansen_solver(model, solver_, linear_, options);
-  // 2. Sweep. --trace: every pose attempt, printed as it happens (stderr) or kept for the JSON;
+  // --trace: every pose attempt, printed as it happens (stderr) or kept for the JSON;
   // --step shows each one on stderr in every format and pauses after it. The time leaves out the pauses.
   Tracer tracer(common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr, common.step);
   const double paused_before = paused_seconds();
@@ -284,19 +328,13 @@ int MechanismCommand::run() const {
   const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
                         (paused_seconds() - paused_before);
 
-  // 3. Files, then the report.
+  // Files, then the report.
   if (!sweep.poses.empty()) {
-    if (!svg.empty()) write_file_atomically(svg, jansen_pose_svg(sweep, 0));
-    if (!animate.empty()) write_file_atomically(animate, jansen_animation_svg(sweep, 4.0));
-    if (!beest.empty()) write_file_atomically(beest, beest_svg(sweep, beest_seconds_));
+    if (!paths.svg.empty()) write_file_atomically(paths.svg, jansen_pose_svg(sweep, 0));
+    if (!paths.animate.empty()) write_file_atomically(paths.animate, jansen_animation_svg(sweep, 4.0));
+    if (!paths.beest.empty()) write_file_atomically(paths.beest, beest_svg(sweep, beest_seconds_));
   }
-  if (common.format == Format::json) {
-    std::cout << json_of(name_, solver_, model, sweep, common.trace ? &tracer : nullptr, time_s).dump(2) << '\n';
-  } else if (common.format == Format::csv) {
-    print_csv(std::cout, model, sweep);
-  } else {
-    print_text(std::cout, name_, solver_, model, sweep, time_s);
-  }
+  print_jansen_report(common, name_, solver_, model, sweep, tracer, time_s);
   return exit_code_for(sweep.status);
 }
 

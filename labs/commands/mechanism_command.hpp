@@ -9,6 +9,10 @@
 
 namespace numlab::cli {
 
+struct SweepRange {
+  double start, stop, step;
+};
+
 class MechanismCommand {
  public:
   explicit MechanismCommand(CLI::App& app);
@@ -16,6 +20,17 @@ class MechanismCommand {
   int run() const;
 
  private:
+  // The files --svg, --animate and --beest name, inside --out (empty: not asked for).
+  struct OutputPaths {
+    std::string svg, animate, beest;
+  };
+  std::string linkage_file() const;
+  void check_flags(const CommonOptions& common, bool from_file) const;
+  int explain(const CommonOptions& common, const std::string& file) const;
+  OutputPaths checked_outputs(const CommonOptions& common, const std::string& file) const;
+  int solve_file(const CommonOptions& common, const std::string& file, const OutputPaths& paths) const;
+  int sweep_jansen(const CommonOptions& common, const SweepRange& range, const OutputPaths& paths) const;
+
   CLI::App* command_;
   CommonOptions common_;
   std::string name_;
@@ -32,10 +47,6 @@ class MechanismCommand {
   bool arrows_ = false;
   bool strict_ = false;
   std::string at_crossing_ = "smooth";
-};
-
-struct SweepRange {
-  double start, stop, step;
 };
 
 // "START:STOP:STEP" in degrees; throws std::invalid_argument naming the problem.
