@@ -71,6 +71,15 @@ nonlinear::ForcingOptions forcing_option(const std::optional<std::string>& text,
   return text ? forcing_named(*text) : nonlinear::ForcingOptions{};
 }
 
+int reuse_jacobian_option(std::optional<int> every, bool is_newton, nonlinear::LinearMethod linear) {
+  if (every && *every < 1) {
+    throw std::invalid_argument(fmt::format("--reuse-jacobian {}: K must be at least 1 (1 is plain Newton)", *every));
+  }
+  require_applies(every.has_value(), is_newton && linear == nonlinear::LinearMethod::gepp, "--reuse-jacobian",
+                  "--method newton with --linear gepp (the chord method reuses GEPP's kept factors)");
+  return every.value_or(1);
+}
+
 NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::DynamicSystem& system,
                                   const Eigen::VectorXd& x0, const NonlinearSettings& settings,
                                   NewtonTraceObserver* observer) {
@@ -79,7 +88,7 @@ NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::Dy
     return NonlinearRun{result.x,          result.status,
                         result.iterations, result.residual_norm,
                         result.step_norm,  result.function_evaluations,
-                        result.jacobian_evaluations, std::move(termination)};
+                        result.jacobian_evaluations, std::move(termination), result.factorizations};
   };
   if (method == "newton") {
     const nonlinear::DynamicReference reference{system};

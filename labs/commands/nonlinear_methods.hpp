@@ -31,7 +31,9 @@ nonlinear::ForcingOptions forcing_named(const std::string& text);
 // must apply (require_applies: --method newton with an iterative --linear, gauss-seidel).
 nonlinear::ForcingOptions forcing_option(const std::optional<std::string>& text, bool is_newton,
                                          nonlinear::LinearMethod linear);
-
+// settings.options.reuse_jacobian from --reuse-jacobian K: 1 (Newton) when not given. Given, K must
+// be at least 1 and apply (--method newton with --linear gepp, the solver that keeps its factors).
+int reuse_jacobian_option(std::optional<int> every, bool is_newton, nonlinear::LinearMethod linear);
 
 struct NonlinearRun {
   Eigen::VectorXd x;
@@ -42,6 +44,7 @@ struct NonlinearRun {
   int function_evaluations = 0;
   int jacobian_evaluations = 0;
   std::string termination;  // the closing "Termination: ..." line
+  int factorizations = 0;   // linear solves with a new J (newton; fewer than iterations with --reuse-jacobian)
 };
 
 // Throws std::invalid_argument for an unknown method, a linear solver that does not fit, or a bad start.

@@ -71,6 +71,8 @@ SolveNonlinearCommand::SolveNonlinearCommand(CLI::App& solve) {
       ->check(finite_non_negative());
   command_->add_option("--forcing", forcing_, std::string("Inexact Newton's forcing term eta_k: ") + forcing_choices +
                                                    " (default eisenstat-walker; newton with gauss-seidel only)");
+  command_->add_option("--reuse-jacobian", reuse_jacobian_,
+                       "Chord method: factor J every K iterations, reuse its factors between (newton with gepp; 1: Newton)");
   add_common_options(*command_, common_);
 }
 
@@ -93,6 +95,7 @@ int SolveNonlinearCommand::run() const {
   if (common.max_iterations) settings.options.max_iterations = *common.max_iterations;
   if (step_tolerance_) settings.options.step_tolerance = *step_tolerance_;
   settings.options.forcing = forcing_option(forcing_, is_newton, settings.linear);
+  settings.options.reuse_jacobian = reuse_jacobian_option(reuse_jacobian_, is_newton, settings.linear);
 
   // 2. Solve, traced: text and CSV traces go to stderr (JSON's too with --step, so that each pause
   // follows a shown step); the time leaves out the pauses.
@@ -128,6 +131,10 @@ int SolveNonlinearCommand::run() const {
       out["linear"] = linear_;
       out["damped"] = damped_;
     }
+    if (reuse_jacobian_) {
+      out["reuse_jacobian"] = *reuse_jacobian_;
+      out["factorizations"] = run.factorizations;
+    }
     out["step_inf"] = number_or_null(run.step_norm);
     if (problem.known_root) out["distance_to_root"] = number_or_null(distance);
     out["termination"] = run.termination;
@@ -157,7 +164,12 @@ int SolveNonlinearCommand::run() const {
               << fmt::format("||f||_inf          {:.3g}\n", run.residual_norm);
     if (problem.known_root) std::cout << fmt::format("distance to root   {:.3g}   (||x - x*||_inf)\n", distance);
     std::cout << fmt::format("evaluations        {} of f, {} of J\n", run.function_evaluations,
-                             run.jacobian_evaluations)
+                             run.jacobian_evaluations);
+    if (reuse_jacobian_) {
+      std::cout << fmt::format("factorizations     {} (J refactored every {} iterations)\n", run.factorizations,
+                               *reuse_jacobian_);
+    }
+    std::cout
               << fmt::format("time               {:.3g} s\n", time_s) << run.termination << '\n';
   }
   return exit_code_for(run.status);

@@ -21,6 +21,7 @@ class SolveNonlinearCommand {
   CLI::App* command_;
   CommonOptions common_;
   std::optional<std::string> forcing_;  // --forcing
+  std::optional<int> reuse_jacobian_;   // --reuse-jacobian K: the chord method, J factored every K iterations
   std::string problem_;
   std::string method_;
   std::string linear_ = "gepp";

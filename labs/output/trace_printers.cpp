@@ -91,21 +91,26 @@ void NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
     entry["linear_iterations"] = record.linear_iterations;
   }
   entry["damping"] = record.damping;
+  const bool chord = record.jacobian_refactored != nonlinear::NewtonRecord::every_iteration;
+  if (chord) entry["jacobian"] = record.jacobian_refactored == 1 ? "refactored" : "reused";
   entry["time_s"] = record.elapsed_s - paused_since_start();
   records_.push_back(entry);
   if (text_out_ == nullptr) return;
   if (!header_printed_) {
     if (sequential) *text_out_ << fmt::format("  {:>5}", "block");
-    *text_out_ << fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>9}  {:>7}  {:>10}\n", "k", "||f||_inf",
-                              "||f||_2", "||dx||_inf", "linear solve", "inner its", "lambda", "time (s)");
+    *text_out_ << fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>9}  {:>7}  {:>10}", "k", "||f||_inf",
+                              "||f||_2", "||dx||_inf", "linear solve", "inner its", "lambda", "time (s)")
+               << (chord ? fmt::format("  {:>10}", "J") : "") << '\n';
     header_printed_ = true;
   }
   if (sequential) *text_out_ << fmt::format("  {:>5}", block + 1);
-  *text_out_ << fmt::format("  {:>4}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>14}  {:>9}  {:>7.4g}  {:>10.3e}\n",
+  *text_out_ << fmt::format("  {:>4}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>14}  {:>9}  {:>7.4g}  {:>10.3e}",
                             record.iteration, record.residual_norm, record.residual_2norm, record.step_norm,
                             has_linear_solve ? std::string(to_string(record.linear_status)) : "-",
                             has_linear_solve ? std::to_string(record.linear_iterations) : "-", record.damping,
-                            record.elapsed_s - paused_since_start());
+                            record.elapsed_s - paused_since_start())
+             << (chord ? fmt::format("  {:>10}", record.jacobian_refactored == 1 ? "refactored" : "reused") : "")
+             << '\n';
   pause_if_stepping(step_);
 }
 

@@ -50,4 +50,9 @@ linalg::LinearResult<Eigen::Dynamic> RuntimeLinearStep::solve(const Eigen::Matri
   return result;
 }
 
+linalg::LinearResult<Eigen::Dynamic> RuntimeLinearStep::solve_with_factors(const Eigen::VectorXd& rhs) const {
+  if (!keeps_factors()) throw std::logic_error("only gepp keeps its factors for another right-hand side");
+  return gepp_.solve_with_factors(rhs);
+}
+
 }  // namespace numlab::nonlinear

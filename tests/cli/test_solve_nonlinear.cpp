@@ -129,3 +129,39 @@ TEST_CASE("solve nonlinear: a size or start the problem does not have is bad inp
   require_bad_input("--problem wood --method newton --start 5", "--start");
   require_bad_input("--problem wood --method newton --start 10 --x0 1,2,3,4", "--start");
 }
+
+TEST_CASE("solve nonlinear --reuse-jacobian K: the chord method, traced, counted and refused where it does not apply",
+          "[cli][nonlinear][chord]") {
+  const json newton = solve_json("--problem powell-singular --method newton", 0);
+  CHECK_FALSE(newton.contains("factorizations"));  // plain Newton's output is unchanged
+  const json k1 = solve_json("--problem powell-singular --method newton --reuse-jacobian 1", 0);
+  CHECK(k1["x"] == newton["x"]);
+  CHECK(k1["iterations"] == newton["iterations"]);
+  CHECK(k1["factorizations"] == newton["iterations"]);
+  const json k5 = solve_json("--problem powell-singular --method newton --reuse-jacobian 5 --max-iter 100 --trace", 0);
+  CHECK(k5["status"] == "converged");
+  CHECK(k5["reuse_jacobian"] == 5);
+  CHECK(k5["iterations"] == 38);  // Newton: 17 iterations and 17 factorizations
+  CHECK(k5["factorizations"] == 8);
+  CHECK(k5["jacobian_evaluations"] == 8);
+  const json& trace = k5["trace"];
+  REQUIRE(trace.size() == 38);
+  for (std::size_t k = 0; k < trace.size(); ++k) CHECK(trace[k]["jacobian"] == (k % 5 == 0 ? "refactored" : "reused"));
+  CHECK_FALSE(newton.contains("trace"));
+
+  // Chord fails where the old J points the wrong way: a named status, exit 1.
+  const json helical = solve_json("--problem helical-valley --method newton --reuse-jacobian 2 --max-iter 100", 1);
+  CHECK(helical["status"] == "diverged");
+
+  const auto text = run_numlab("solve nonlinear --problem broyden-tridiagonal --method newton --reuse-jacobian 3 --trace");
+  CHECK(text.exit_code == 0);
+  CHECK_THAT(text.err, Contains("refactored") && Contains("reused"));
+  CHECK_THAT(text.out, Contains("factorizations     3 (J refactored every 3 iterations)"));
+
+  require_bad_input("--problem rosenbrock --method newton --reuse-jacobian 0", "K must be at least 1");
+  require_bad_input("--problem rosenbrock --method newton --reuse-jacobian -2", "K must be at least 1");
+  require_bad_input("--problem rosenbrock --method gsl-hybridsj --reuse-jacobian 2",
+                    "--reuse-jacobian applies only to --method newton with --linear gepp");
+  require_bad_input("--problem rosenbrock --method newton --linear eigen-lu --reuse-jacobian 2",
+                    "--reuse-jacobian applies only to --method newton with --linear gepp");
+}

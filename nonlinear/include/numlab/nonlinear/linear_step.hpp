@@ -81,6 +81,10 @@ class RuntimeLinearStep {
   // the direct methods solve exactly and ignore it.
   bool iterative() const { return method_ == LinearMethod::gauss_seidel; }
   void set_relative_residual_tolerance(double eta) { gauss_seidel_.set_relative_residual_tolerance(eta); }
+  // GEPP keeps the factors of its last J: the chord method (NewtonOptions::reuse_jacobian) solves
+  // another right-hand side with them. The other methods keep none.
+  bool keeps_factors() const { return method_ == LinearMethod::gepp; }
+  linalg::LinearResult<Eigen::Dynamic> solve_with_factors(const Eigen::VectorXd& rhs) const;
 
  private:
   LinearMethod method_;

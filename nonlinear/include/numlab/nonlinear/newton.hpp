@@ -11,6 +11,11 @@
 //            iterates stopped moving, but a small step is not a root; only the residual test
 //            gives converged
 //
+// The chord method (Shamanskii's, reuse_jacobian = K > 1): J is evaluated and factored only every
+// K-th iteration (1, K+1, 2K+1, ...); the iterations between solve J_old dx = -f with the kept
+// factors (GEPP's solve_with_factors). Cheaper iterations, converging linearly rather than
+// quadratically: more of them, fewer factorizations. K = 1 is Newton.
+//
 // Other endings, each a status with the numbers behind it: max_iterations; singular (the linear
 // solve found J singular); non_finite (f, J or x stopped being finite); diverged (||f||_inf grew
 // past divergence_factor times its start); no_progress (damping found no sufficient decrease).
@@ -48,7 +53,13 @@ struct NewtonOptions {
                                      // direct solvers ignore it
   bool stop_on_failed_inner_step = false;  // end at the first capped inner solve whose step does not
                                            // decrease ||f|| (inner_step_failed); off: only the three-in-a-row rule
+  int reuse_jacobian = 1;  // K: J evaluated and factored every K iterations, its factors reused between
+                           // (chord / Shamanskii); 1: Newton. K > 1 needs a linear step that keeps its factors
 };
+
+// A linear step that keeps the factors of its last J and solves another right-hand side with them.
+template <typename Step, typename V>
+concept KeepsFactors = requires(const Step& step, const V& rhs) { step.solve_with_factors(rhs); };
 
 // A linear step that can be told a relative residual target (an iterative one: Gauss-Seidel, or
 // RuntimeLinearStep, which says whether its method is iterative).
@@ -65,6 +76,7 @@ struct NewtonCounts {
   double step_norm = std::numeric_limits<double>::quiet_NaN();      // ||dx||_inf of the last step
   int function_evaluations = 0;
   int jacobian_evaluations = 0;
+  int factorizations = 0;  // linear solves with a new J (Newton's direct solves: one per iteration)
   std::string_view message;  // GSL's own words (a static string) when it stopped on an error; else empty
 };
 
@@ -85,6 +97,8 @@ struct NewtonRecord {
   double damping;          // lambda (1 unless damped)
   double elapsed_s;        // since start()
   double forcing_term = std::numeric_limits<double>::quiet_NaN();  // eta_k; NaN: exact inner solve
+  static constexpr int every_iteration = -1;  // jacobian_refactored when J is new at every iteration
+  int jacobian_refactored = every_iteration;  // chord (reuse_jacobian > 1): 1 J evaluated and factored, 0 reused
 };
 
 // "Termination: CONVERGED (||f||_inf = 3e-13 <= 1e-09 after 5 iterations)" and the like.
@@ -118,6 +132,23 @@ class Newton {
     require_tolerance(options_.step_tolerance, "step tolerance");
     if (options_.max_iterations < 1) {
       throw std::invalid_argument("iteration limit must be at least 1, got " + std::to_string(options_.max_iterations));
+    }
+    if (options_.reuse_jacobian < 1) {
+      throw std::invalid_argument("Jacobian reuse must be at least 1 (1 is Newton), got " +
+                                  std::to_string(options_.reuse_jacobian));
+    }
+    if (options_.reuse_jacobian > 1 && !keeps_factors()) {
+      throw std::invalid_argument("reusing the Jacobian needs a linear solver that keeps its factors (GEPP)");
+    }
+  }
+
+  bool keeps_factors() const {
+    if constexpr (!KeepsFactors<LinearStep, Vector<N>>) {
+      return false;
+    } else if constexpr (requires { linear_step_.keeps_factors(); }) {
+      return linear_step_.keeps_factors();
+    } else {
+      return true;
     }
   }
 
@@ -156,17 +187,23 @@ class Newton {
     if (!running_) return false;
     ++result_.iterations;
 
-    // 1. The Jacobian at x (already there when the system evaluates f and J together).
-    if (!jacobian_fresh_) {
-      system_.jacobian(x_, J_);
-      ++result_.jacobian_evaluations;
+    // 1. The Jacobian at x (already there when the system evaluates f and J together); with
+    //    reuse_jacobian = K, only at iterations 1, K+1, 2K+1, ... (the chord method).
+    const bool refactor = (result_.iterations - 1) % options_.reuse_jacobian == 0;
+    if (refactor) {
+      if (!jacobian_fresh_) {
+        system_.jacobian(x_, J_);
+        ++result_.jacobian_evaluations;
+      }
+      if (!linalg::all_finite(J_)) return finish(StopReason::non_finite);
+      ++result_.factorizations;
     }
-    if (!linalg::all_finite(J_)) return finish(StopReason::non_finite);
 
     // 2. The Newton step: solve J dx = -f to relative residual eta_k, ||J dx + f|| <= eta_k ||f||
-    //    (exactly, for a direct solver, which takes no eta_k).
+    //    (exactly, for a direct solver, which takes no eta_k); between refactorizations, with the
+    //    factors of the last J kept.
     const double eta = forcing_for_step();
-    const auto linear = solve_for_step();
+    const auto linear = refactor ? solve_for_step() : solve_with_kept_factors();
     if (linear.status == Status::singular) return finish(StopReason::singular_jacobian);
     if (linear.status == Status::non_finite || linear.status == Status::diverged || !linalg::all_finite(linear.x)) {
       return finish(StopReason::non_finite);
@@ -221,7 +258,7 @@ class Newton {
       // sweep limit again at every iteration
       finish(StopReason::inner_limit);
     }
-    notify(linear.status, linear.iterations, lambda, eta);  // after the tests: the observer sees the verdict
+    notify(linear.status, linear.iterations, lambda, eta, refactor);  // after the tests: the observer sees the verdict
     return running_;
   }
 
@@ -288,6 +325,15 @@ class Newton {
     }
   }
 
+  // J_old dx = -f with the factors of the last J (the chord iterations; checked in check_options()).
+  linalg::LinearResult<N> solve_with_kept_factors() {
+    if constexpr (KeepsFactors<LinearStep, Vector<N>>) {
+      return linear_step_.solve_with_factors(-f_);
+    } else {
+      throw std::logic_error("the linear step keeps no factors");
+    }
+  }
+
   bool finish(StopReason reason) {
     result_.status = status_of(reason);
     result_.reason = reason;
@@ -295,11 +341,12 @@ class Newton {
     return false;
   }
 
-  void notify(Status linear_status, int linear_iterations, double lambda, double eta) {
+  void notify(Status linear_status, int linear_iterations, double lambda, double eta, bool refactored) {
     if (observer_ == nullptr) return;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_at_).count();
+    const int jacobian = options_.reuse_jacobian > 1 ? int{refactored} : NewtonRecord::every_iteration;
     observer_->on_step(*this, {result_.iterations, result_.residual_norm, f_.norm(), result_.step_norm,
-                               linear_status, linear_iterations, lambda, elapsed, eta});
+                               linear_status, linear_iterations, lambda, elapsed, eta, jacobian});
   }
 
   const S& system_;
