@@ -160,107 +160,143 @@ void draw_seidel_chart(const ChartFiles& files, const std::vector<SeidelRow>& ro
   draw_chart(files, csv, script);
 }
 
-}  // namespace
+// --- bench all: the steps ---
 
-int run_bench_all(const CommonOptions& common, const std::string& chart, bool quick) {
-  // 1. Every file name is checked before any measuring starts.
-  const ChartFiles work_precision = chart_files(chart.empty() ? common.out_dir + "/work-precision.svg" : chart);
-  const ChartFiles linear_chart = chart_files(common.out_dir + "/bench-linear.svg");
-  const ChartFiles seidel_chart = chart_files(common.out_dir + "/bench-seidel.svg");
-  const ChartFiles fit_chart = chart_files(common.out_dir + "/bench-fit.svg");
-  const ChartFiles mustang_chart = chart_files(common.out_dir + "/work-precision-mustang.svg");
-  std::vector<PlannedFile> outputs = planned_files(work_precision, chart.empty() ? "the work-precision chart" : "--chart");
-  for (const auto& [files, name] : {std::pair{&mustang_chart, "the Mustang chart"}, std::pair{&linear_chart, "the linear chart"},
-                                    std::pair{&seidel_chart, "the Gauss-Seidel chart"}, std::pair{&fit_chart, "the fit chart"}}) {
+// The five charts, each with its CSV and gnuplot script beside it.
+struct AllCharts {
+  ChartFiles work_precision, linear, seidel, fit, mustang;
+  std::vector<ChartFiles> in_order() const { return {work_precision, mustang, linear, seidel, fit}; }
+};
+
+// 1. Every file name is checked before any measuring starts.
+AllCharts checked_charts(const CommonOptions& common, const std::string& chart) {
+  const AllCharts charts{chart_files(chart.empty() ? common.out_dir + "/work-precision.svg" : chart),
+                         chart_files(common.out_dir + "/bench-linear.svg"), chart_files(common.out_dir + "/bench-seidel.svg"),
+                         chart_files(common.out_dir + "/bench-fit.svg"),
+                         chart_files(common.out_dir + "/work-precision-mustang.svg")};
+  std::vector<PlannedFile> outputs = planned_files(charts.work_precision, chart.empty() ? "the work-precision chart" : "--chart");
+  for (const auto& [files, name] : {std::pair{&charts.mustang, "the Mustang chart"}, std::pair{&charts.linear, "the linear chart"},
+                                    std::pair{&charts.seidel, "the Gauss-Seidel chart"}, std::pair{&charts.fit, "the fit chart"}}) {
     for (const PlannedFile& file : planned_files(*files, name)) outputs.push_back(file);
   }
   check_outputs(outputs, {});
-  const fitting::DataSet wampler = fitting::read_nist_data(nist_data_dir() + "/Wampler4.dat");
+  return charts;
+}
 
-  // 2. Measure: warm-up, repeated runs, medians (timing.hpp).
+// Everything bench all measures.
+struct AllMeasurements {
   // The rows at tolerance 1e-10 are kept whole for the ratio tables.
   std::vector<JansenBenchRow> jansen_at_1e10;
   std::vector<MustangBenchRow> mustang_at_1e10;
-  const std::vector<WorkPrecisionPoint> jansen = work_precision_points("Jansen cycle", quick, [&](double tolerance) {
-    auto rows = bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick);
-    if (tolerance == 1e-10) jansen_at_1e10 = rows;
-    return rows;
-  });
-  const std::vector<WorkPrecisionPoint> mustang = work_precision_points("Mustang sweep", quick, [&](double tolerance) {
-    auto rows = bench_mustang(tolerance, quick);
-    if (tolerance == 1e-10) mustang_at_1e10 = rows;
-    return rows;
-  });
-  const std::vector<int> sizes = quick ? std::vector<int>{2, 8, 64} : std::vector<int>{2, 8, 64, 256, 512, 1024};
-  const std::vector<BenchRow> linear = bench_linear(sizes, quick);
-  const std::vector<SeidelRow> seidel = seidel_rows(quick);
-  show_progress("bench: fitting degree sweep on Wampler4");
-  const std::vector<FitBenchRow> fits = bench_fit("Wampler4", wampler, 12, quick);
+  std::vector<WorkPrecisionPoint> jansen, mustang;
+  std::vector<int> sizes;
+  std::vector<BenchRow> linear;
+  std::vector<SeidelRow> seidel;
+  std::vector<FitBenchRow> fits;
   std::vector<DegreeSweepRow> sweep;
-  for (const FitBenchRow& row : fits) sweep.push_back(row.sweep);
+};
+
+// 2. Measure: warm-up, repeated runs, medians (timing.hpp).
+AllMeasurements measure_all(const fitting::DataSet& wampler, bool quick) {
+  AllMeasurements m;
+  m.jansen = work_precision_points("Jansen cycle", quick, [&](double tolerance) {
+    auto rows = bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick);
+    if (tolerance == 1e-10) m.jansen_at_1e10 = rows;
+    return rows;
+  });
+  m.mustang = work_precision_points("Mustang sweep", quick, [&](double tolerance) {
+    auto rows = bench_mustang(tolerance, quick);
+    if (tolerance == 1e-10) m.mustang_at_1e10 = rows;
+    return rows;
+  });
+  m.sizes = quick ? std::vector<int>{2, 8, 64} : std::vector<int>{2, 8, 64, 256, 512, 1024};
+  m.linear = bench_linear(m.sizes, quick);
+  m.seidel = seidel_rows(quick);
+  show_progress("bench: fitting degree sweep on Wampler4");
+  m.fits = bench_fit("Wampler4", wampler, 12, quick);
+  for (const FitBenchRow& row : m.fits) m.sweep.push_back(row.sweep);
   show_progress("");
+  return m;
+}
 
-  // 3. Draw.
-  draw_work_precision(work_precision, "Jansen leg, 360-pose cycle", jansen);
-  draw_work_precision(mustang_chart, "Mustang roof linkage, 195-pose sweep over its assembly range", mustang);
-  draw_linear_chart(linear_chart, linear, sizes);
-  draw_seidel_chart(seidel_chart, seidel);
-  draw_degree_sweep_chart(fit_chart, "NIST Wampler4: digits and residual against degree", sweep);
-  const std::vector<ChartFiles> charts = {work_precision, mustang_chart, linear_chart, seidel_chart, fit_chart};
+// 3. Draw.
+void draw_all(const AllCharts& charts, const AllMeasurements& m) {
+  draw_work_precision(charts.work_precision, "Jansen leg, 360-pose cycle", m.jansen);
+  draw_work_precision(charts.mustang, "Mustang roof linkage, 195-pose sweep over its assembly range", m.mustang);
+  draw_linear_chart(charts.linear, m.linear, m.sizes);
+  draw_seidel_chart(charts.seidel, m.seidel);
+  draw_degree_sweep_chart(charts.fit, "NIST Wampler4: digits and residual against degree", m.sweep);
+}
 
-  // 4. Report.
-  if (common.format == Format::json) {
-    nlohmann::ordered_json out = {{"benchmark", "all"}, {"charts", nlohmann::ordered_json::array()},
-                                  {"rows", nlohmann::ordered_json::array()}};
-    for (const auto& files : charts) out["charts"].push_back({{"chart", files.chart}, {"data", files.data}, {"script", files.script}});
-    for (const auto& [bench, points] : {std::pair{"jansen", &jansen}, std::pair{"mustang", &mustang}}) {
-      for (const auto& point : *points) {
-        out["rows"].push_back({{"bench", bench}, {"solver", point.solver}, {"tolerance", point.tolerance},
-                               {"time_s", point.time_s}, {"error", number_or_null(point.error)},
-                               {"iterations", point.iterations}});
-      }
+// 4. Report, JSON: the charts and one row per measurement.
+void print_all_json(const AllCharts& charts, const AllMeasurements& m, const fitting::DataSet& wampler) {
+  nlohmann::ordered_json out = {{"benchmark", "all"}, {"charts", nlohmann::ordered_json::array()},
+                                {"rows", nlohmann::ordered_json::array()}};
+  for (const auto& files : charts.in_order()) out["charts"].push_back({{"chart", files.chart}, {"data", files.data}, {"script", files.script}});
+  for (const auto& [bench, points] : {std::pair{"jansen", &m.jansen}, std::pair{"mustang", &m.mustang}}) {
+    for (const auto& point : *points) {
+      out["rows"].push_back({{"bench", bench}, {"solver", point.solver}, {"tolerance", point.tolerance},
+                             {"time_s", point.time_s}, {"error", number_or_null(point.error)},
+                             {"iterations", point.iterations}});
     }
-    for (const auto& row : linear) {
-      out["rows"].push_back({{"bench", "linear"}, {"solver", row.solver}, {"tolerance", nullptr}, {"time_s", row.time_s},
-                             {"error", number_or_null(row.error)}, {"n", row.n}});
-    }
-    for (const auto& row : seidel) {
-      out["rows"].push_back({{"bench", "seidel"}, {"solver", "gauss-seidel"}, {"tolerance", 1e-9}, {"time_s", row.time_s},
-                             {"error", number_or_null(row.error)}, {"n", 8}, {"kappa", row.kappa}, {"sweeps", row.sweeps}});
-    }
-    for (const auto& row : fits) {
-      out["rows"].push_back({{"bench", "fit"}, {"solver", row.sweep.method}, {"tolerance", nullptr},
-                             {"time_s", row.time_s},
-                             // error: the relative coefficient error behind the digits (10^-digits)
-                             {"error", std::isfinite(row.sweep.residual_sd) ? number_or_null(std::pow(10.0, -row.sweep.digits))
-                                                                            : nlohmann::ordered_json()},
-                             {"n", wampler.x.size()}, {"data", row.data}, {"degree", row.sweep.degree},
-                             {"digits", row.sweep.digits}, {"status", std::string(to_string(row.sweep.status))}});
-    }
-    std::cout << out.dump(2) << '\n';
-    return exit_success;
   }
-  print_jansen_bench(std::cout, jansen_at_1e10);
+  for (const auto& row : m.linear) {
+    out["rows"].push_back({{"bench", "linear"}, {"solver", row.solver}, {"tolerance", nullptr}, {"time_s", row.time_s},
+                           {"error", number_or_null(row.error)}, {"n", row.n}});
+  }
+  for (const auto& row : m.seidel) {
+    out["rows"].push_back({{"bench", "seidel"}, {"solver", "gauss-seidel"}, {"tolerance", 1e-9}, {"time_s", row.time_s},
+                           {"error", number_or_null(row.error)}, {"n", 8}, {"kappa", row.kappa}, {"sweeps", row.sweeps}});
+  }
+  for (const auto& row : m.fits) {
+    out["rows"].push_back({{"bench", "fit"}, {"solver", row.sweep.method}, {"tolerance", nullptr},
+                           {"time_s", row.time_s},
+                           // error: the relative coefficient error behind the digits (10^-digits)
+                           {"error", std::isfinite(row.sweep.residual_sd) ? number_or_null(std::pow(10.0, -row.sweep.digits))
+                                                                          : nlohmann::ordered_json()},
+                           {"n", wampler.x.size()}, {"data", row.data}, {"degree", row.sweep.degree},
+                           {"digits", row.sweep.digits}, {"status", std::string(to_string(row.sweep.status))}});
+  }
+  std::cout << out.dump(2) << '\n';
+}
+
+// 4. Report, text: one table per benchmark, then where the charts are.
+void print_all_text(const AllCharts& charts, const AllMeasurements& m, bool quick) {
+  print_jansen_bench(std::cout, m.jansen_at_1e10);
   std::cout << "\nJansen work-precision: median time per cycle (worst joint error) at each Newton tolerance.\n";
-  work_precision_table(jansen, tolerance_sweep(quick)).print(std::cout);
+  work_precision_table(m.jansen, tolerance_sweep(quick)).print(std::cout);
   std::cout << '\n';
-  print_mustang_bench(std::cout, mustang_at_1e10);
+  print_mustang_bench(std::cout, m.mustang_at_1e10);
   std::cout << "\nMustang work-precision: median time per sweep (worst joint error) at each Newton tolerance.\n";
-  work_precision_table(mustang, tolerance_sweep(quick)).print(std::cout);
+  work_precision_table(m.mustang, tolerance_sweep(quick)).print(std::cout);
   std::cout << "\nLinear solvers: median time per solve (diagonally dominant A), and the ratio to GSL LU\n";
-  linear_bench_table(linear, sizes).print(std::cout);
+  linear_bench_table(m.linear, m.sizes).print(std::cout);
   std::cout << "\nGauss-Seidel on the normal equations (n = 8): sweeps against kappa(A)\n";
   Table sweeps({"kappa", "sweeps", "sweeps / kappa^2", "time", "forward error"});
-  for (const auto& row : seidel) {
+  for (const auto& row : m.seidel) {
     sweeps.add_row({fmt::format("{:g}", row.kappa), std::to_string(row.sweeps),
                     fmt::format("{:.2f}", row.sweeps / (row.kappa * row.kappa)), fmt::format("{:.3g} s", row.time_s),
                     scientific(row.error)});
   }
   sweeps.print(std::cout);
   std::cout << "\nFitting, NIST Wampler4: correct digits (weighted, vs a long-double reference) per degree\n";
-  print_fit_digits(std::cout, fits);
+  print_fit_digits(std::cout, m.fits);
   std::cout << "\nCharts (each with its CSV and gnuplot script beside it):\n";
-  for (const auto& files : charts) std::cout << "  " << files.chart << '\n';
+  for (const auto& files : charts.in_order()) std::cout << "  " << files.chart << '\n';
+}
+
+}  // namespace
+
+int run_bench_all(const CommonOptions& common, const std::string& chart, bool quick) {
+  const AllCharts charts = checked_charts(common, chart);
+  const fitting::DataSet wampler = fitting::read_nist_data(nist_data_dir() + "/Wampler4.dat");
+  const AllMeasurements measured = measure_all(wampler, quick);
+  draw_all(charts, measured);
+  if (common.format == Format::json) {
+    print_all_json(charts, measured, wampler);
+  } else {
+    print_all_text(charts, measured, quick);
+  }
   return exit_success;
 }
 
