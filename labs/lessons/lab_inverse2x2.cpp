@@ -14,19 +14,23 @@
 
 namespace numlab::cli {
 
-int run_inverse2x2_lab(LabSession& session) {
+namespace {
+
+// Step 1: the 2x2 closed form on A = [4 3; 6 3].
+void show_the_closed_form(LabSession& session, const Eigen::Matrix2d& A) {
   session.begin_step("The closed form",
                      "For A = [a b; c d]: det A = ad - bc and A^-1 = (1/det A) [d -b; -c a]. Four multiplications, "
                      "one division: this is what seed 003 uses inside each 2x2 Newton loop.");
-  Eigen::Matrix2d A;
-  A << 4, 3, 6, 3;
   const linalg::Inverse2x2 closed = linalg::inverse2x2(A);
   session.say(fmt::format("A = [4 3; 6 3]: det = {:.6g}, A^-1 = [{:.6g} {:.6g}; {:.6g} {:.6g}], kappa_2 = {:.6g}; "
                           "||A A^-1 - I||_max = {:.2g}.",
                           closed.determinant, closed.inverse(0, 0), closed.inverse(0, 1), closed.inverse(1, 0),
                           closed.inverse(1, 1), closed.condition_number,
                           (A * closed.inverse - Eigen::Matrix2d::Identity()).cwiseAbs().maxCoeff()));
+}
 
+// Step 2: a singularity test judged by the scale of A, not by |det A| alone.
+void show_singular_relative_to_scale(LabSession& session, const Eigen::Matrix2d& A) {
   const Eigen::Matrix2d tiny = (Eigen::Matrix2d() << 1e-7, 0, 0, 1e-7).finished();
   const Eigen::Matrix2d parallel = (Eigen::Matrix2d() << 1e10, 1e10, 1e10, 1e10 + 2e-6).finished();
   session.begin_step("Singular relative to what? The scale of A",
@@ -55,26 +59,26 @@ int run_inverse2x2_lab(LabSession& session) {
                           "doubles: computed, they are {:g} and {:g}. numlab therefore first scales A by a power of "
                           "two (exact) and tests the determinant of the scaled matrix; their status: {} and {}.",
                           small.determinant, large.determinant, to_string(small.status), to_string(large.status)));
+}
 
-  session.begin_step("Where it fails: a nearly singular 2x2",
-                     "A = [1 1; 1 1+d], b = A * (0.1, 0.7), rounded. As d shrinks the rows become parallel and "
-                     "kappa grows like 4/d. The closed form's forward error grows like kappa * eps: it multiplies "
-                     "b by the rounded entries of A^-1 (as large as 1/d) and then subtracts, so each rounding is "
-                     "amplified by 1/d. At d = 1e-16, 1+d rounds to 1: exactly singular, and both methods say so.");
+// Each method's worst forward error (and where), and its residuals' range, over the solved rows.
+struct Worst {
+  double error = 0.0, kappa = 0.0;
+  std::string where;
+  std::vector<double> residuals;
+  void add(const Eigen::VectorXd& x, const Eigen::Vector2d& exact, double residual, double d, double k) {
+    if (!x.allFinite()) return;
+    const double e = linalg::forward_error(x, exact);
+    if (e > error || where.empty()) error = e, kappa = k, where = fmt::format("d = {:g}", d);
+    residuals.push_back(residual);
+  }
+};
+
+// The nearly singular 2x2 solved by the closed form and GSL LU for shrinking d, each method's
+// worst row kept.
+Table nearly_singular_table(Worst& closed_worst, Worst& lu_worst) {
   Table nearly({"d", "kappa_2", "closed form", "forward error", "rel. residual", "GSL LU", "forward error",
                 "rel. residual"});
-  // Each method's worst forward error (and where), and its residuals' range, over the solved rows.
-  struct Worst {
-    double error = 0.0, kappa = 0.0;
-    std::string where;
-    std::vector<double> residuals;
-    void add(const Eigen::VectorXd& x, const Eigen::Vector2d& exact, double residual, double d, double k) {
-      if (!x.allFinite()) return;
-      const double e = linalg::forward_error(x, exact);
-      if (e > error || where.empty()) error = e, kappa = k, where = fmt::format("d = {:g}", d);
-      residuals.push_back(residual);
-    }
-  } closed_worst, lu_worst;
   for (double d : {1e-2, 1e-6, 1e-10, 1e-13, 1e-15, 1e-16}) {
     Eigen::Matrix2d M;
     M << 1, 1, 1, 1 + d;
@@ -95,6 +99,18 @@ int run_inverse2x2_lab(LabSession& session) {
     if (closed_x.allFinite()) closed_worst.add(closed_x, exact, linalg::relative_residual(M, b, closed_x), d, inverse.condition_number);
     if (lu.x.allFinite()) lu_worst.add(lu.x, exact, linalg::relative_residual(M, b, lu.x), d, inverse.condition_number);
   }
+  return nearly;
+}
+
+// Step 3: where the closed form fails, a nearly singular 2x2, against GSL LU.
+void show_a_nearly_singular_2x2(LabSession& session) {
+  session.begin_step("Where it fails: a nearly singular 2x2",
+                     "A = [1 1; 1 1+d], b = A * (0.1, 0.7), rounded. As d shrinks the rows become parallel and "
+                     "kappa grows like 4/d. The closed form's forward error grows like kappa * eps: it multiplies "
+                     "b by the rounded entries of A^-1 (as large as 1/d) and then subtracts, so each rounding is "
+                     "amplified by 1/d. At d = 1e-16, 1+d rounds to 1: exactly singular, and both methods say so.");
+  Worst closed_worst, lu_worst;
+  const Table nearly = nearly_singular_table(closed_worst, lu_worst);
   session.show(nearly, "nearly-singular");
   const double lu_residual = *std::max_element(lu_worst.residuals.begin(), lu_worst.residuals.end());
   session.say(fmt::format("The residual columns show why they differ. GSL LU's relative residual is {} for every d: "
@@ -106,12 +122,26 @@ int run_inverse2x2_lab(LabSession& session) {
               " " + digits_lost_sentence("GSL LU", lu_worst.error, lu_worst.where, lu_worst.kappa) +
               " Both forward errors are bounded only by about kappa * eps; on a 2x2 inside a Newton loop, where "
               "kappa is moderate, the closed form's speed wins.");
+}
 
+// Step 4: the closed form against GEPP, GSL LU and Eigen LU on A.
+void compare_with_gsl(LabSession& session, const Eigen::Matrix2d& A) {
   session.begin_step("The closed form against GSL",
                      "A = [4 3; 6 3], b = A * (1, 1). Both are exact to rounding here; the closed form needs no "
                      "pivoting, workspace or loop, which is why seed 003 uses it inside every Newton iteration.");
   const Eigen::Vector2d exact(1, 1);
   session.show(linear_comparison_table(A, A * exact, exact, {"inverse2x2", "gepp", "gsl-lu", "eigen-lu"}), "comparison");
+}
+
+}  // namespace
+
+int run_inverse2x2_lab(LabSession& session) {
+  Eigen::Matrix2d A;
+  A << 4, 3, 6, 3;
+  show_the_closed_form(session, A);
+  show_singular_relative_to_scale(session, A);
+  show_a_nearly_singular_2x2(session);
+  compare_with_gsl(session, A);
   return 0;
 }
 
