@@ -215,6 +215,31 @@ void print_linkage_csv(std::ostream& out, const LinkageReport& r) {
   }
 }
 
+// The crossings, jumps and limits of a sweep, into its JSON.
+void add_branch_events(nlohmann::ordered_json& out, const LinkageReport& r) {
+  out["crossings"] = nlohmann::ordered_json::array();
+  for (const auto& c : r.sweep.crossings) {
+    const std::size_t b = static_cast<std::size_t>(c.block);
+    out["crossings"].push_back({{"kind", c.tangency ? "tangency" : "crossing"},
+                                {"driver", c.driver},
+                                {"block", describe_block(r.model, r.solver.blocks()[b])},
+                                {"side_before", c.side_before},
+                                {"side_after", c.side_after},
+                                {"followed", c.switched ? "other" : "smooth"}});
+  }
+  out["jumps"] = r.sweep.jumps;
+  out["limits"] = nlohmann::ordered_json::array();
+  for (const auto& limit : r.sweep.limits) {
+    out["limits"].push_back({{"kind", limit.assembles_beyond ? "solver_failure" : "fold"},
+                             {"driver", limit.driver},
+                             {"bracket", limit.bracket},
+                             {"upper", limit.upper},
+                             {"block", limit.block >= 0 ? nlohmann::ordered_json(describe_block(r.model, r.solver.blocks()[static_cast<std::size_t>(limit.block)])) : nlohmann::ordered_json()},
+                             {"transmission_deg", number(limit.transmission_deg)},
+                             {"text", limit_text(r, limit)}});
+  }
+}
+
 nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::ordered_json* trace) {
   const auto& joints = r.model.description().joints;
   const auto dyad_blocks = dyads(r.solver);
@@ -256,27 +281,7 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
   out["worst_closed_form_bound"] = number(worst_closed_form(r.sweep).bound);
   out["flips"] = r.sweep.flips;
   out["change_points"] = r.sweep.change_points;
-  out["crossings"] = nlohmann::ordered_json::array();
-  for (const auto& c : r.sweep.crossings) {
-    const std::size_t b = static_cast<std::size_t>(c.block);
-    out["crossings"].push_back({{"kind", c.tangency ? "tangency" : "crossing"},
-                                {"driver", c.driver},
-                                {"block", describe_block(r.model, r.solver.blocks()[b])},
-                                {"side_before", c.side_before},
-                                {"side_after", c.side_after},
-                                {"followed", c.switched ? "other" : "smooth"}});
-  }
-  out["jumps"] = r.sweep.jumps;
-  out["limits"] = nlohmann::ordered_json::array();
-  for (const auto& limit : r.sweep.limits) {
-    out["limits"].push_back({{"kind", limit.assembles_beyond ? "solver_failure" : "fold"},
-                             {"driver", limit.driver},
-                             {"bracket", limit.bracket},
-                             {"upper", limit.upper},
-                             {"block", limit.block >= 0 ? nlohmann::ordered_json(describe_block(r.model, r.solver.blocks()[static_cast<std::size_t>(limit.block)])) : nlohmann::ordered_json()},
-                             {"transmission_deg", number(limit.transmission_deg)},
-                             {"text", limit_text(r, limit)}});
-  }
+  add_branch_events(out, r);
   out["derivative_check"] = {{"poses", r.derivatives.poses},
                              {"singular_poses", r.derivatives.singular},
                              {"ill_conditioned_poses", r.derivatives.ill_conditioned},
@@ -295,6 +300,25 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
   out["time_s"] = r.time_s;
   if (trace != nullptr) out["trace"] = *trace;
   return out;
+}
+
+// The derivative check's lines: the poses checked and the verdict, then the poses skipped and why.
+void print_derivative_check(std::ostream& out, const DerivativeReport& d) {
+  out << fmt::format("derivatives        at {} pose{}, against finite differences of positions: velocity {:.1e}, "
+                     "acceleration {:.1e} (relative): {}\n",
+                     d.poses, d.poses == 1 ? "" : "s", d.velocity, d.acceleration,
+                     d.poses == 0 ? "nothing checked" : d.failure.empty() ? "agree" : "DISAGREE " + d.failure);
+  if (d.singular > 0) {
+    out << fmt::format("                   {} pose{} on a crossing not checked: J is singular there, and their velocity "
+                       "and acceleration are differences of positions solved along the branch\n",
+                       d.singular, d.singular == 1 ? "" : "s");
+  }
+  if (d.ill_conditioned > 0) {
+    out << fmt::format("                   {} pose{} not checked: kappa(J) above 1e5 with every dyad away from its meeting "
+                       "point (J is ill-conditioned, not singular): J's kinematics are good only to about eps kappa^2, "
+                       "so their velocity and acceleration are differences of positions solved along the branch\n",
+                       d.ill_conditioned, d.ill_conditioned == 1 ? "" : "s");
+  }
 }
 
 void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::string& file) {
@@ -351,23 +375,7 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
   }
   if (std::isfinite(low)) out << fmt::format("kappa(J)           {:.3g} .. {:.3g} (largest at {:g})\n", low, high, at);
   for (std::size_t b : dyads(r.solver)) out << "transmission       " << transmission_summary(r, b) << '\n';
-  out << fmt::format("derivatives        at {} pose{}, against finite differences of positions: velocity {:.1e}, "
-                     "acceleration {:.1e} (relative): {}\n",
-                     r.derivatives.poses, r.derivatives.poses == 1 ? "" : "s", r.derivatives.velocity, r.derivatives.acceleration,
-                     r.derivatives.poses == 0                ? "nothing checked"
-                     : r.derivatives.failure.empty() ? "agree"
-                                                     : "DISAGREE " + r.derivatives.failure);
-  if (r.derivatives.singular > 0) {
-    out << fmt::format("                   {} pose{} on a crossing not checked: J is singular there, and their velocity "
-                       "and acceleration are differences of positions solved along the branch\n",
-                       r.derivatives.singular, r.derivatives.singular == 1 ? "" : "s");
-  }
-  if (r.derivatives.ill_conditioned > 0) {
-    out << fmt::format("                   {} pose{} not checked: kappa(J) above 1e5 with every dyad away from its meeting "
-                       "point (J is ill-conditioned, not singular): J's kinematics are good only to about eps kappa^2, "
-                       "so their velocity and acceleration are differences of positions solved along the branch\n",
-                       r.derivatives.ill_conditioned, r.derivatives.ill_conditioned == 1 ? "" : "s");
-  }
+  print_derivative_check(out, r.derivatives);
   if (r.jacobian) {
     out << fmt::format("jacobian           exact J against finite differences at {} solved poses: worst relative error "
                        "{:.1e} at {:g}: {}\n",

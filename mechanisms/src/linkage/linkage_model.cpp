@@ -35,74 +35,53 @@ void LinkageModel::add(Constraint constraint) {
   constraints_.push_back(std::move(constraint));
 }
 
-void LinkageModel::derive() {
-  const auto& d = description_;
-  column_.assign(d.joints.size(), -1);
-  for (std::size_t j = 0; j < d.joints.size(); ++j) {
-    if (!d.joints[j].ground) {
-      column_[j] = 2 * static_cast<int>(moving_.size());
-      moving_.push_back(static_cast<int>(j));
+namespace {
+
+// Whether joints i and j are the driving crank's pivot and joint (either way round).
+bool driven_pair(const DriverSpec& driver, int i, int j) {
+  return driver.kind == DriverKind::crank &&
+         ((i == driver.pivot && j == driver.joint) || (i == driver.joint && j == driver.pivot));
+}
+
+// A body's constraints: its base pair's distance (the crank's pair when the crank turns this body:
+// then the crank holds that distance), then each further joint placed by the base pair.
+std::vector<Constraint> body_constraints(const LinkageDescription& d, const BodySpec& body) {
+  const DriverSpec& driver = d.driver;
+  std::size_t b0 = 0, b1 = 1;
+  for (std::size_t i = 0; i < body.joints.size(); ++i) {
+    for (std::size_t k = 0; k < body.joints.size(); ++k) {
+      if (i != k && driven_pair(driver, body.joints[i], body.joints[k]) && body.joints[i] == driver.pivot) b0 = i, b1 = k;
     }
   }
-  const DriverSpec& driver = d.driver;
-  const auto driven_pair = [&](int i, int j) {
-    return driver.kind == DriverKind::crank &&
-           ((i == driver.pivot && j == driver.joint) || (i == driver.joint && j == driver.pivot));
-  };
-  // 1. Links: one distance each, but the crank's own link is the driver's.
-  for (const LinkSpec& link : d.links) {
-    if (driven_pair(link.first, link.second)) continue;
+  std::vector<Constraint> out;
+  const int j0 = body.joints[b0], j1 = body.joints[b1];
+  if (!driven_pair(driver, j0, j1)) {
     Constraint c;
     c.kind = ConstraintKind::distance;
-    c.joints = {link.first, link.second, -1};
-    c.length = link.length;
-    c.name = "link " + pair_name(d, link.first, link.second);
-    c.place = link.place;
-    add(std::move(c));
+    c.joints = {j0, j1, -1};
+    c.length = (body.local[b1] - body.local[b0]).norm();
+    c.name = "body " + body.name + ": " + pair_name(d, j0, j1);
+    c.place = body.place;
+    out.push_back(std::move(c));
   }
-  // 2. Bodies: the base pair's distance (the crank's pair when the crank turns this body), then
-  // each further joint placed by the base pair.
-  for (const BodySpec& body : d.bodies) {
-    std::size_t b0 = 0, b1 = 1;
-    for (std::size_t i = 0; i < body.joints.size(); ++i) {
-      for (std::size_t k = 0; k < body.joints.size(); ++k) {
-        if (i != k && driven_pair(body.joints[i], body.joints[k]) && body.joints[i] == driver.pivot) b0 = i, b1 = k;
-      }
-    }
-    const int j0 = body.joints[b0], j1 = body.joints[b1];
-    if (!driven_pair(j0, j1)) {
-      Constraint c;
-      c.kind = ConstraintKind::distance;
-      c.joints = {j0, j1, -1};
-      c.length = (body.local[b1] - body.local[b0]).norm();
-      c.name = "body " + body.name + ": " + pair_name(d, j0, j1);
-      c.place = body.place;
-      add(std::move(c));
-    }
-    for (std::size_t k = 0; k < body.joints.size(); ++k) {
-      if (k == b0 || k == b1) continue;
-      Constraint c;
-      c.kind = ConstraintKind::body_point;
-      c.joints = {j0, j1, body.joints[k]};
-      c.coefficients = body_coefficients(body.local[b0], body.local[b1], body.local[k]);
-      c.name = "body " + body.name + ": " + d.joints[static_cast<std::size_t>(body.joints[k])].name + " from " +
-               pair_name(d, j0, j1);
-      c.place = body.place;
-      add(std::move(c));
-    }
-  }
-  // 3. Sliders: the joint on its line.
-  for (const SliderSpec& slider : d.sliders) {
+  for (std::size_t k = 0; k < body.joints.size(); ++k) {
+    if (k == b0 || k == b1) continue;
     Constraint c;
-    c.kind = ConstraintKind::slider_line;
-    c.joints = {slider.joint, -1, -1};
-    c.point = slider.through;
-    c.direction = unit(slider.angle_deg * std::numbers::pi / 180.0);
-    c.name = "slider " + d.joints[static_cast<std::size_t>(slider.joint)].name;
-    c.place = slider.place;
-    add(std::move(c));
+    c.kind = ConstraintKind::body_point;
+    c.joints = {j0, j1, body.joints[k]};
+    c.coefficients = body_coefficients(body.local[b0], body.local[b1], body.local[k]);
+    c.name = "body " + body.name + ": " + d.joints[static_cast<std::size_t>(body.joints[k])].name + " from " +
+             pair_name(d, j0, j1);
+    c.place = body.place;
+    out.push_back(std::move(c));
   }
-  // 4. The driver.
+  return out;
+}
+
+// The driver's constraint: the crank's joint on its circle at angle t, or the slider's joint at
+// travel t along its line.
+Constraint driver_constraint(const LinkageDescription& d) {
+  const DriverSpec& driver = d.driver;
   Constraint c;
   c.kind = driver.kind == DriverKind::crank ? ConstraintKind::crank : ConstraintKind::slider_travel;
   c.place = driver.place;
@@ -117,7 +96,48 @@ void LinkageModel::derive() {
     c.direction = unit(slider.angle_deg * std::numbers::pi / 180.0);
     c.name = "slider driver " + d.joints[static_cast<std::size_t>(driver.joint)].name;
   }
-  add(std::move(c));
+  return c;
+}
+
+}  // namespace
+
+void LinkageModel::derive() {
+  const auto& d = description_;
+  column_.assign(d.joints.size(), -1);
+  for (std::size_t j = 0; j < d.joints.size(); ++j) {
+    if (!d.joints[j].ground) {
+      column_[j] = 2 * static_cast<int>(moving_.size());
+      moving_.push_back(static_cast<int>(j));
+    }
+  }
+  // 1. Links: one distance each, but the crank's own link is the driver's.
+  for (const LinkSpec& link : d.links) {
+    if (driven_pair(d.driver, link.first, link.second)) continue;
+    Constraint c;
+    c.kind = ConstraintKind::distance;
+    c.joints = {link.first, link.second, -1};
+    c.length = link.length;
+    c.name = "link " + pair_name(d, link.first, link.second);
+    c.place = link.place;
+    add(std::move(c));
+  }
+  // 2. Bodies: the base pair's distance, then each further joint placed by the base pair.
+  for (const BodySpec& body : d.bodies) {
+    for (Constraint& c : body_constraints(d, body)) add(std::move(c));
+  }
+  // 3. Sliders: the joint on its line.
+  for (const SliderSpec& slider : d.sliders) {
+    Constraint c;
+    c.kind = ConstraintKind::slider_line;
+    c.joints = {slider.joint, -1, -1};
+    c.point = slider.through;
+    c.direction = unit(slider.angle_deg * std::numbers::pi / 180.0);
+    c.name = "slider " + d.joints[static_cast<std::size_t>(slider.joint)].name;
+    c.place = slider.place;
+    add(std::move(c));
+  }
+  // 4. The driver.
+  add(driver_constraint(d));
 }
 
 std::string LinkageModel::row_name(int row) const {

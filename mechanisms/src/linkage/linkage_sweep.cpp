@@ -549,6 +549,65 @@ bool pose_verified(const LinkageSolver& solver, const LinkagePose& pose, double 
 
 }  // namespace
 
+namespace {
+
+// Where a sweep stands between poses: the last pose that assembled, and where the continuation
+// from it failed, if it did.
+struct Continuation {
+  PoseSolver& poses;
+  double longest;  // the longest sub-step
+  Eigen::VectorXd last_good;
+  double last_good_t;
+  std::optional<Stuck> stuck;
+
+  // The pose at t, by continuation from the last good one; or, when t lies past where that already
+  // failed, the same failure again without a solve (repeated).
+  LinkageSolution solve(double t, int& halvings, Jump& jump, bool& repeated) {
+    repeated = stuck && stuck->blocks(last_good_t, t);
+    if (repeated) return repeated_failure(stuck->failure);
+    Stuck now;
+    now.failed_at = not_computed;
+    LinkageSolution solution = continue_to(poses, last_good_t, t, last_good, longest, &halvings, &jump, &now);
+    if (!converged(solution) && !std::isnan(now.failed_at)) {
+      now.failure = solution;
+      stuck = std::move(now);
+    }
+    return solution;
+  }
+  void assembled(double t, const Eigen::VectorXd& q) {
+    last_good = q;
+    last_good_t = t;
+    stuck.reset();
+  }
+};
+
+// 3. A change between assembling and not, from the pose before to this one, is a limit: bracketed
+// (from where the continuation got stuck, when it has that bracket) and named.
+void note_limit(Continuation& c, LinkageSweep& sweep, const LinkagePose& pose, double t) {
+  if (sweep.poses.empty() || pose.jumped || sweep.poses.back().jumped) return;
+  const LinkagePose& before = sweep.poses.back();
+  const bool was_ok = before.outcome.status == Status::converged, ok = pose.outcome.status == Status::converged;
+  if (was_ok && !ok) {
+    const double span = t - c.last_good_t;
+    const bool bracketed = c.stuck && c.stuck->from == c.last_good_t;
+    sweep.limits.push_back(bracketed ? bisect_limit(c.poses, c.stuck->reached, c.stuck->q, c.stuck->failed_at, true, span)
+                                     : bisect_limit(c.poses, c.last_good_t, c.last_good, t, true, span));
+  }
+  if (!was_ok && ok) {
+    const double t_before = c.poses.solver().model().driver_from_user(before.driver);
+    sweep.limits.push_back(bisect_limit(c.poses, t, pose.q, t_before, false, t - t_before));
+  }
+}
+
+void note_jump(LinkageSweep& sweep, double user, const Jump& jump) {
+  sweep.branch_kept = false;
+  sweep.jumps.push_back(fmt::format("the pose at {:g} lands {:.3g} from where its branch leads (the predictor allows "
+                                    "{:.3g}): it left its branch",
+                                    user, jump.distance, jump.allowed));
+}
+
+}  // namespace
+
 LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
                            const LinkagePoseObserver& observer, AtCrossing at_crossing) {
   if (!std::isfinite(start) || !std::isfinite(stop) || !std::isfinite(step) || step == 0.0 ||
@@ -568,16 +627,13 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
   double walk_to = t_start;
   if (model.crank_driven()) walk_to = reference + std::remainder(t_start - reference, 2.0 * std::acos(-1.0));
   const double longest = longest_sub_step(model, walk_to - reference, model.driver_from_user(start + step) - t_start);
-  std::optional<Stuck> stuck;  // where the continuation from the last good pose failed
-  Stuck stuck_now;
-  stuck_now.failed_at = not_computed;
-  LinkageSolution at = continue_to(poses, reference, walk_to, solver.reference(), longest, nullptr, nullptr, &stuck_now);
-  if (!converged(at) && !std::isnan(stuck_now.failed_at)) {
-    stuck = Stuck{stuck_now.from, stuck_now.reached, stuck_now.q, stuck_now.failed_at, at};
-  }
+  Continuation continuation{poses, longest, solver.reference(), reference, {}};
+  int walk_halvings = 0;
+  Jump walk_jump;
+  bool unused = false;
+  const LinkageSolution at = continuation.solve(walk_to, walk_halvings, walk_jump, unused);
   poses.relabel(walk_to, t_start);  // the walk's last poses predict the sweep's first (a sweep may start on a crossing)
-  Eigen::VectorXd last_good = converged(at) ? at.q : solver.reference();
-  double last_good_t = converged(at) ? t_start : reference;
+  if (converged(at)) continuation.assembled(t_start, at.q);
   BranchWatch watch{solver.reference_signature(), at_crossing, std::vector<int>(solver.blocks().size(), -1)};
   const double shortest = shortest_length(model);
   // 2. Each pose from the one before, through sub-steps each from the predictor; a failed pose is
@@ -587,45 +643,16 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
     const double t = model.driver_from_user(user);
     int halvings = 0;
     Jump jump;
-    // A target past where the continuation from the same pose already failed is not tried again.
-    const bool repeated = k > 0 && stuck && stuck->blocks(last_good_t, t);
-    LinkageSolution solution = k == 0 ? at : repeated ? repeated_failure(stuck->failure) : LinkageSolution{};
-    if (k > 0 && !repeated) {
-      stuck_now.failed_at = not_computed;
-      solution = continue_to(poses, last_good_t, t, last_good, longest, &halvings, &jump, &stuck_now);
-      if (!converged(solution) && !std::isnan(stuck_now.failed_at)) {
-        stuck = Stuck{stuck_now.from, stuck_now.reached, std::move(stuck_now.q), stuck_now.failed_at, solution};
-      }
-    }
+    bool repeated = false;
+    LinkageSolution solution = k == 0 ? at : continuation.solve(t, halvings, jump, repeated);
     const detail::BranchGuess guess = [&, q = solution.q](double s) { return poses.guess(t, q, s); };
     LinkagePose pose = make_pose(solver, user, t, std::move(solution), guess);
     pose.step_halvings = halvings;
-    if (repeated) pose.not_tried_past = model.driver_to_user(stuck->failed_at);
-    const bool ok = pose.outcome.status == Status::converged;
+    if (repeated) pose.not_tried_past = model.driver_to_user(continuation.stuck->failed_at);
     pose.jumped = jump.distance > 0.0;
-    if (pose.jumped) {
-      sweep.branch_kept = false;
-      sweep.jumps.push_back(fmt::format("the pose at {:g} lands {:.3g} from where its branch leads (the predictor allows "
-                                        "{:.3g}): it left its branch",
-                                        user, jump.distance, jump.allowed));
-    }
-    // 3. A change between assembling and not is a limit, bracketed and named.
-    if (k > 0 && !pose.jumped && !sweep.poses.back().jumped) {
-      const LinkagePose& before = sweep.poses.back();
-      const bool was_ok = before.outcome.status == Status::converged;
-      if (was_ok && !ok) {  // from the bracket where the continuation got stuck, when it has one
-        const bool bracketed = stuck && stuck->from == last_good_t;
-        const double span = t - last_good_t;
-        sweep.limits.push_back(bracketed ? bisect_limit(poses, stuck->reached, stuck->q, stuck->failed_at, true, span)
-                                         : bisect_limit(poses, last_good_t, last_good, t, true, span));
-      }
-      if (!was_ok && ok) {
-        const double t_before = model.driver_from_user(before.driver);
-        LinkageLimit limit = bisect_limit(poses, t, pose.q, t_before, false, t - t_before);
-        sweep.limits.push_back(limit);
-      }
-    }
-    if (ok) {
+    if (pose.jumped) note_jump(sweep, user, jump);
+    note_limit(continuation, sweep, pose, t);  // 3.
+    if (pose.outcome.status == Status::converged) {
       // 4. The branch (compared with the reference pose across the walk for the first pose).
       if (watch_branch(poses, watch, sweep, pose, t, !sweep.poses.empty())) {
         pose = make_pose(solver, user, t, LinkageSolution{pose.q, pose.outcome, -1});  // the tangent's guess: J is regular past the crossing
@@ -634,9 +661,7 @@ LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double sto
       watch_tangency(solver, watch, sweep, pose, t);
       if (!pose_verified(solver, pose, shortest)) sweep.closed_form_verified = false;
       pose.branch_kept = sweep.branch_kept;
-      last_good = pose.q;
-      last_good_t = t;
-      stuck.reset();
+      continuation.assembled(t, pose.q);
     } else if (sweep.status == Status::converged) {
       sweep.status = pose.outcome.status;
     }
