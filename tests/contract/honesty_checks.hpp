@@ -1,5 +1,5 @@
 #pragma once
-// Issue 14's numerical honesty checks, one helper for every contract test: whenever a status is
+// The numerical honesty checks, one helper for every contract test: whenever a status is
 // converged, the test that justifies it is asserted here, computed again from the inputs.
 //
 //   Newton-type (Newton, GSL's adapter, sequential Newton, the dyad): ||f(x)||_inf <= tolerance,
