@@ -10,6 +10,7 @@
 #include "lessons/lab.hpp"
 #include "lessons/lab_sentences.hpp"
 #include "commands/linear_methods.hpp"
+#include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gsl_reference.hpp"
 #include "numlab/linalg/measures.hpp"
 #include "numlab/linalg/matrix_generators.hpp"
@@ -31,6 +32,30 @@ std::string digits(double relative_error) {
   return fmt::format("{:.1f}", digits_of(relative_error));
 }
 
+// The elimination kept its factors: P (the swaps), L (the multipliers) and U, and P A = L U checked.
+void show_the_factors(LabSession& session, const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
+  linalg::GaussElimination<Eigen::Dynamic> gepp;
+  gepp.solve(A, b);
+  const Eigen::MatrixXd L = gepp.lower(), U = gepp.upper();
+  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P = gepp.permutation();
+  const Eigen::MatrixXd difference = (P * A - L * U).cwiseAbs();
+  const int n = static_cast<int>(A.rows());
+  session.say("The elimination kept its factors, P A = L U: row i of P A is row 'row of A' of A, L holds the "
+              "multipliers, U the reduced matrix.");
+  Table table({"i", "row of A", "l_i1", "l_i2", "l_i3", "u_i1", "u_i2", "u_i3", "max|PA - LU| in row"});
+  Eigen::VectorXi rows(n);  // row i of P A is row rows(i) of A
+  for (int j = 0; j < n; ++j) rows(P.indices()(j)) = j;
+  for (int i = 0; i < n; ++i) {
+    std::vector<std::string> cells = {std::to_string(i + 1), std::to_string(rows(i) + 1)};
+    for (int j = 0; j < n; ++j) cells.push_back(fmt::format("{:.6g}", L(i, j)));
+    for (int j = 0; j < n; ++j) cells.push_back(fmt::format("{:.6g}", U(i, j)));
+    cells.push_back(fmt::format("{:.3g}", difference.row(i).maxCoeff()));
+    table.add_row(cells);
+  }
+  session.show(table, "factors");
+  session.say(lu_factors_sentence(difference.maxCoeff(), A.cwiseAbs().maxCoeff(), n, gepp.growth_factor()));
+}
+
 void trace_a_small_system(LabSession& session) {
   session.begin_step("Elimination, one column at a time",
                      "For each column: search the column for the largest pivot, swap it onto the diagonal, and "
@@ -46,6 +71,7 @@ void trace_a_small_system(LabSession& session) {
   const DynamicResult result = run_linear_method("gepp", A, b, {}, {&tracer, nullptr});
   session.say(fmt::format("Solution x = ({:.12g}, {:.12g}, {:.12g}), exact (2, 3, -1); growth factor {:.3g}.",
                           result.x(0), result.x(1), result.x(2), result.growth_factor));
+  show_the_factors(session, A, b);
 }
 
 void show_a_tiny_pivot(LabSession& session) {

@@ -106,6 +106,22 @@ std::string condition_limit_sentence(const std::vector<ConditionRow>& rows) {
   return text;
 }
 
+std::string lu_factors_sentence(double max_difference, double matrix_max, int n, double growth) {
+  if (max_difference == 0.0) {
+    return "P A = L U exactly: every entry of L U equals the entry of P A (max|PA - LU| = 0).";
+  }
+  const double relative = max_difference / matrix_max;
+  const double bound = n * eps * std::max(growth, 1.0);
+  if (relative <= bound) {
+    return fmt::format("P A = L U to rounding: max|PA - LU| / max|a_ij| = {:.2g}, within n*eps*growth = {:.2g}; the "
+                       "kept L, U and P solve any other right-hand side without eliminating again.",
+                       relative, bound);
+  }
+  return fmt::format("P A = L U only to {:.2g} relative (max|PA - LU| / max|a_ij|), beyond n*eps*growth = {:.2g}: "
+                     "more than rounding separates the factors from A.",
+                     relative, bound);
+}
+
 double digits_lost(double forward_error) { return std::max(0.0, std::log10(forward_error / eps)); }
 
 std::string digits_lost_sentence(const std::string& method, double worst_error, const std::string& where,

@@ -41,6 +41,10 @@ struct ConditionRow {
 // Where kappa first exceeds 1/eps and where the solver first says singular, as the rows show.
 std::string condition_limit_sentence(const std::vector<ConditionRow>& rows);
 
+// GEPP's kept factors checked: max|PA - LU| relative to max|a_ij|, against the n * eps * growth that
+// rounding allows ("exactly" at 0, "to rounding" within it, "only to" beyond it).
+std::string lu_factors_sentence(double max_difference, double matrix_max, int n, double growth);
+
 // Correct digits lost to a relative forward error, against the unit roundoff: log10(error / eps),
 // at least 0.
 double digits_lost(double forward_error);

@@ -22,6 +22,19 @@ TEST_CASE("The Hilbert sentence names the first n with kappa > 1/eps, from the r
              Contains("Up to n = 8 kappa stays below") && Contains("never says 'singular' up to n = 8"));
 }
 
+TEST_CASE("The PA = LU sentence: exact, to rounding, or beyond it, from max|PA - LU|", "[labs][sentences]") {
+  const double eps = std::numeric_limits<double>::epsilon();
+  // The gauss lab's 3x3: max|PA - LU| = 1.11e-16 against max|a_ij| = 3, growth 1.
+  CHECK_THAT(lu_factors_sentence(1.11e-16, 3.0, 3, 1.0),
+             Contains("to rounding: max|PA - LU| / max|a_ij| = 3.7e-17, within n*eps*growth = 6.7e-16"));
+  CHECK_THAT(lu_factors_sentence(0.0, 3.0, 3, 1.0), Contains("exactly") && !Contains("rounding"));
+  // Either side of n*eps*growth (growth below 1 counts as 1; above, it widens the bound).
+  CHECK_THAT(lu_factors_sentence(0.99 * 3 * eps, 1.0, 3, 0.5), Contains("to rounding"));
+  CHECK_THAT(lu_factors_sentence(1.01 * 3 * eps, 1.0, 3, 0.5), Contains("only to") && Contains("beyond"));
+  CHECK_THAT(lu_factors_sentence(1e-10, 1.0, 3, 1e7), Contains("to rounding"));
+  CHECK_THAT(lu_factors_sentence(1e-10, 1.0, 3, 1e5), Contains("only to 1e-10 relative"));
+}
+
 TEST_CASE("Digits lost are log10(forward error / eps), judged against kappa * eps", "[labs][sentences]") {
   const double eps = std::numeric_limits<double>::epsilon();
   CHECK(digits_lost(3.17e-11) == Approx(std::log10(3.17e-11 / eps)));

@@ -2,9 +2,11 @@
 // the CSV files the lab saved, and every sentence made from them must name the same rows and
 // ratios. No lab talks about developers' targets. Each test case runs its lab once.
 
+#include <Eigen/LU>
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -75,6 +77,37 @@ TEST_CASE("Gauss lab: the Hilbert and Wilkinson sentences name the rows where th
   }
   REQUIRE_FALSE(lost.empty());
   CHECK_THAT(lab.text, Contains("From n = " + lost + " "));
+}
+
+TEST_CASE("Gauss lab: the kept factors are Eigen's P, L and U, and the PA = LU sentence quotes the table", "[labs][gauss]") {
+  const LabOutput lab = run_lab("gauss");
+  REQUIRE(lab.exit_code == 0);
+  // The lab's 3x3 system of step 1, factored independently.
+  Eigen::MatrixXd A(3, 3);
+  A << 2, 1, -1, -3, -1, 2, -2, 1, 2;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+  const Eigen::MatrixXd L = lu.matrixLU().triangularView<Eigen::UnitLower>();
+  const Eigen::MatrixXd U = lu.matrixLU().triangularView<Eigen::Upper>();
+  const Eigen::MatrixXd PA = lu.permutationP() * A;
+  const auto factors = lab.table("step1-factors.csv");
+  REQUIRE(factors.size() == 4);
+  const std::size_t row_of_a = column(factors, "row of A"), largest = column(factors, "max|PA - LU| in row");
+  double max_difference = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const auto& row = factors[static_cast<std::size_t>(i) + 1];
+    INFO("row " << i + 1);
+    // Row i of P A is the row of A the table names.
+    CHECK(A.row(static_cast<Eigen::Index>(number(row[row_of_a])) - 1) == PA.row(i));
+    for (int j = 0; j < 3; ++j) {
+      CHECK(number(row[column(factors, fmt::format("l_i{}", j + 1))]) == Approx(L(i, j)).margin(1e-6));
+      CHECK(number(row[column(factors, fmt::format("u_i{}", j + 1))]) == Approx(U(i, j)).margin(1e-6));
+    }
+    max_difference = std::max(max_difference, number(row[largest]));
+  }
+  // The sentence's number is the table's largest |PA - LU| over max|a_ij| = 3, within rounding.
+  CHECK(max_difference <= 3 * eps * 3.0);
+  CHECK_THAT(lab.text, Contains(fmt::format("P A = L U to rounding: max|PA - LU| / max|a_ij| = {:.2g},",
+                                            max_difference / 3.0)));
 }
 
 TEST_CASE("Mustang lab: where loop 3 stops is read from the row above it", "[labs][mustang]") {
