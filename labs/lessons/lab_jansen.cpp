@@ -73,9 +73,9 @@ void show_cycle_comparison(LabSession& session, const std::vector<JansenBenchRow
                           "saves.", speed_ratio_phrase(std_sin, full.time_s)));
 }
 
-}  // namespace
-
-int run_jansen_lab(LabSession& session) {
+// Step 1 of lab jansen: Newton with its trace on seed 000's model at the seed's crank angle, the
+// pose checked against the circle-intersection solution.
+void solve_at_the_seed_angle(LabSession& session, const mechanisms::JansenLeg& leg) {
   session.begin_step("Seed 000's model at the seed's own angle",
                      "Eight loop-closure equations in theta1 ... theta8 at crank angle theta_i = 1.57 rad, solved by "
                      "Newton (hand-written GEPP inside) from seed 000's Table 3 estimates.");
@@ -87,7 +87,6 @@ int run_jansen_lab(LabSession& session) {
   const NonlinearRun run =
       run_nonlinear_method("newton", dynamic, Eigen::VectorXd(JansenClosure::seed_estimates()), settings, &tracer);
   session.out() << "  " << run.termination << "\n\n";
-  const mechanisms::JansenLeg leg;
   const auto joints = leg.joints(JansenClosure::seed_crank_angle, JansenClosure::Vector(run.x));
   const auto exact = leg.closed_form_joints(JansenClosure::seed_crank_angle);
   double distance = 0.0;
@@ -96,12 +95,20 @@ int run_jansen_lab(LabSession& session) {
   session.say(fmt::format("Foot F = ({:.6f}, {:.6f}). Every joint is within {:.2g} of the circle-intersection "
                           "solution, and every link length holds to {:.2g}.",
                           foot.x(), foot.y(), distance, leg.worst_length_error(joints)));
+}
 
+// Step 2: the hand-derived Jacobian against central finite differences at the seed's estimates.
+void check_the_jacobian(LabSession& session) {
   session.begin_step("Is the Jacobian right?", "The hand-derived 8x8 Jacobian against central finite differences:");
+  const JansenClosure closure(JansenClosure::seed_crank_angle);
+  const nonlinear::AsDynamicSystem dynamic(closure);
   const auto check = nonlinear::check_jacobian(dynamic, Eigen::VectorXd(JansenClosure::seed_estimates()));
   session.say(fmt::format("{} (worst entry {}).", check.agrees ? "It agrees" : "It DOES NOT agree",
                           nonlinear::describe_worst_entry(check)));
+}
 
+// Step 3: one crank cycle by every solver, timed and checked against the closed form.
+void compare_every_solver_over_a_cycle(LabSession& session) {
   session.begin_step("One crank cycle, every solver, against the closed form",
                      "360 poses, 1 degree apart, Newton tolerance 1e-10, each pose warm-started by extrapolating the "
                      "two before it. 'error' is the worst distance of any joint from the circle-intersection "
@@ -111,8 +118,34 @@ int run_jansen_lab(LabSession& session) {
                      "difference between it and 'full' is what the table saves.");
   const auto rows = bench_jansen(JansenModel::eight_equations, 1e-10, false);
   show_cycle_comparison(session, rows);
+}
 
-  const auto cycle = full_cycle(JansenModel::eight_equations, "full", 1e-10);
+// The stance: the flat bottom of the foot path, within 1 length unit of its lowest point; its poses
+// and the foot's speeds summed on it and over the rest of the cycle (the swing).
+struct Stance {
+  int poses = 0;
+  double speed_sum = 0.0, swing_speed_sum = 0.0;
+};
+
+Stance stance_of(const mechanisms::JansenLeg& leg, const mechanisms::JansenSweep& cycle) {
+  const std::size_t F = static_cast<std::size_t>(mechanisms::JansenJoint::F);
+  double lowest = 1e300;
+  for (const auto& pose : cycle.poses) lowest = std::min(lowest, pose.joints[F].y());
+  Stance stance;
+  for (const auto& pose : cycle.poses) {
+    const double speed = leg.rates(pose.crank_deg * std::numbers::pi / 180.0, JansenClosure::Vector(pose.angles)).foot_speed;
+    if (pose.joints[F].y() <= lowest + 1.0) {
+      stance.speed_sum += speed;
+      ++stance.poses;
+    } else {
+      stance.swing_speed_sum += speed;
+    }
+  }
+  return stance;
+}
+
+// Step 4: the foot's speed from one more solve with the Jacobian, against finite differences.
+void show_the_foot_speed(LabSession& session, const mechanisms::JansenLeg& leg, const mechanisms::JansenSweep& cycle) {
   session.begin_step("How fast does the foot move?",
                      "Differentiating the closure f(theta; theta_i) = 0 with respect to the crank angle gives "
                      "J dtheta/dtheta_i = -df/dtheta_i: one more 8x8 solve with the Jacobian already at hand gives "
@@ -136,34 +169,36 @@ int run_jansen_lab(LabSession& session) {
     }
   }
   session.show(speeds, "foot-speed");
-  // Stance: the flat bottom of the foot path, within 1 length unit of its lowest point.
-  const std::size_t F = static_cast<std::size_t>(mechanisms::JansenJoint::F);
-  double lowest = 1e300;
-  for (const auto& pose : cycle.poses) lowest = std::min(lowest, pose.joints[F].y());
-  double stance_sum = 0.0, swing_sum = 0.0;
-  int stance = 0;
-  for (const auto& pose : cycle.poses) {
-    const double speed = leg.rates(pose.crank_deg * std::numbers::pi / 180.0, JansenClosure::Vector(pose.angles)).foot_speed;
-    if (pose.joints[F].y() <= lowest + 1.0) {
-      stance_sum += speed;
-      ++stance;
-    } else {
-      swing_sum += speed;
-    }
-  }
-  const int swing = static_cast<int>(cycle.poses.size()) - stance;
+  const Stance stance = stance_of(leg, cycle);
+  const int swing = static_cast<int>(cycle.poses.size()) - stance.poses;
   session.say(fmt::format(
       "Over the cycle the foot's speed ranges from {:.2f} to {:.2f} per radian of crank. On the flat bottom of its "
       "path (within 1 unit of the lowest point: {} of {} poses) its mean speed is {:.1f}; over the rest of the "
       "cycle it is {:.1f}. The rates agree with finite differences to {:.1g} (relative) at every pose.",
-      slowest, fastest, stance, cycle.poses.size(), stance_sum / stance, swing_sum / swing, worst_difference));
+      slowest, fastest, stance.poses, cycle.poses.size(), stance.speed_sum / stance.poses, stance.swing_speed_sum / swing,
+      worst_difference));
+}
 
+// Step 5: the leg drawn at crank angle 0 with its foot path, and the cycle animated.
+void show_the_scene(LabSession& session, const mechanisms::JansenSweep& cycle) {
   session.begin_step("The scene", "The leg at crank angle 0 with the whole foot path, and an animation of the cycle "
                                   "(open either in a browser).");
   const std::string still = saved_file(session, "leg.svg", jansen_pose_svg(cycle, 0));
   const std::string animated = saved_file(session, "leg-animated.svg", jansen_animation_svg(cycle, 4.0));
   session.figure(still, "the leg at crank angle 0, with the foot's path over the cycle");
   session.figure(animated, "one crank cycle, animated (4 s per turn)");
+}
+
+}  // namespace
+
+int run_jansen_lab(LabSession& session) {
+  const mechanisms::JansenLeg leg;
+  solve_at_the_seed_angle(session, leg);
+  check_the_jacobian(session);
+  compare_every_solver_over_a_cycle(session);
+  const auto cycle = full_cycle(JansenModel::eight_equations, "full", 1e-10);
+  show_the_foot_speed(session, leg, cycle);
+  show_the_scene(session, cycle);
   return 0;
 }
 
