@@ -189,20 +189,8 @@ void show_the_scene(LabSession& session, const mechanisms::JansenSweep& cycle) {
   session.figure(animated, "one crank cycle, animated (4 s per turn)");
 }
 
-}  // namespace
-
-int run_jansen_lab(LabSession& session) {
-  const mechanisms::JansenLeg leg;
-  solve_at_the_seed_angle(session, leg);
-  check_the_jacobian(session);
-  compare_every_solver_over_a_cycle(session);
-  const auto cycle = full_cycle(JansenModel::eight_equations, "full", 1e-10);
-  show_the_foot_speed(session, leg, cycle);
-  show_the_scene(session, cycle);
-  return 0;
-}
-
-int run_jansen_sequential_lab(LabSession& session) {
+// Step 1 of lab jansen-sequential: the block lower-triangular Jacobian, in words.
+void explain_why_both_find_the_same_pose(LabSession& session) {
   session.begin_step("Why sequential and full Newton find the same pose",
                      "Seed 000 solves the eight equations as four 2x2 systems, in order, and argues that the result must "
                      "differ from the full 8x8 solution because the sequential blocks ignore the derivatives with "
@@ -210,7 +198,28 @@ int run_jansen_sequential_lab(LabSession& session) {
                      "1-2 contain only theta1, theta2; 3-4 add theta3, theta4; 5-6 only theta6, theta7; 7-8 add "
                      "theta5, theta8. Solving the blocks in that order solves the whole system exactly; a root of one "
                      "is a root of the other. What differs is only where each method stops iterating.");
+}
 
+// Seed 000's Figure 4 drawn from its CSV rows, in the lab's folder.
+ChartFiles draw_figure4(LabSession& session, const std::string& csv) {
+  ensure_directory(session.folder());
+  const ChartFiles files = chart_files(session.folder() + "/figure4.svg");
+  std::string script = "# Seed 000's Figure 4, redrawn: RMSE of the foot, sequential vs full, against the tolerance.\n";
+  script += gnuplot_output_lines(files);
+  script += "set datafile separator ','\nset logscale xy\nset grid\nset key top left box opaque\n"
+            "set xlabel 'Newton tolerance on ||f||_{inf}'\nset ylabel 'distance (length units)'\nset format x '10^{%T}'\n"
+            "set format y '10^{%T}'\nset title 'Sequential vs full Newton over one crank cycle'\n";
+  script += fmt::format("plot '{0}' using 1:2 skip 1 with linespoints lw 2 pt 7 title 'RMSE, foot: sequential vs full', "
+                        "'{0}' using 1:3 skip 1 with linespoints lw 2 pt 5 title 'full: worst joint error vs closed form', "
+                        "'{0}' using 1:4 skip 1 with linespoints lw 2 pt 9 title 'sequential: worst joint error vs closed form', "
+                        "x with lines dt 2 lc rgb 'gray40' title 'y = tolerance'\n",
+                        files.data);
+  draw_chart(files, csv, script);
+  return files;
+}
+
+// Step 2: seed 000's Figure 4, the feet of full and sequential Newton apart for each tolerance.
+void redraw_figure4(LabSession& session) {
   session.begin_step("Seed 000's Figure 4, done right",
                      "For each Newton tolerance: one cycle by full Newton, one by sequential Newton, and the RMSE of "
                      "the distance between their feet over the 360 poses (seed 000 eq 27). Beside it, each method's "
@@ -238,26 +247,17 @@ int run_jansen_sequential_lab(LabSession& session) {
                        std::max(sequential.worst_closed_form_distance, 1e-17));
   }
   session.show(table, "figure4");
-  ensure_directory(session.folder());
-  const ChartFiles files = chart_files(session.folder() + "/figure4.svg");
-  std::string script = "# Seed 000's Figure 4, redrawn: RMSE of the foot, sequential vs full, against the tolerance.\n";
-  script += gnuplot_output_lines(files);
-  script += "set datafile separator ','\nset logscale xy\nset grid\nset key top left box opaque\n"
-            "set xlabel 'Newton tolerance on ||f||_{inf}'\nset ylabel 'distance (length units)'\nset format x '10^{%T}'\n"
-            "set format y '10^{%T}'\nset title 'Sequential vs full Newton over one crank cycle'\n";
-  script += fmt::format("plot '{0}' using 1:2 skip 1 with linespoints lw 2 pt 7 title 'RMSE, foot: sequential vs full', "
-                        "'{0}' using 1:3 skip 1 with linespoints lw 2 pt 5 title 'full: worst joint error vs closed form', "
-                        "'{0}' using 1:4 skip 1 with linespoints lw 2 pt 9 title 'sequential: worst joint error vs closed form', "
-                        "x with lines dt 2 lc rgb 'gray40' title 'y = tolerance'\n",
-                        files.data);
-  draw_chart(files, csv, script);
+  const ChartFiles files = draw_figure4(session, csv);
   session.figure(files.chart, "seed 000's Figure 4 redrawn: foot RMSE, sequential vs full, against the tolerance");
   session.say(fmt::format("Chart: {} (data {}, script {}). As the tolerance falls from 1e-2 to 1e-12, the RMSE {}, "
                           "as seed 000 found; full Newton's own worst error {}, and sequential Newton's {}: both "
                           "converge to the same root, and their difference is where each stops.",
                           files.chart, files.data, files.script, trend_phrase(rmses), trend_phrase(full_errors),
                           trend_phrase(sequential_errors)));
+}
 
+// Step 3: the time per cycle of each model and solver, and what the 10-equation model costs.
+void show_what_each_costs(LabSession& session) {
   session.begin_step("What each costs, and what over-modelling costs",
                      "The time per cycle at tolerance 1e-10 (medians of repeated runs). Seed 001 models the same leg "
                      "with 10 equations: two more unknowns and a closure pair for the triangle D-E-F, which is rigid "
@@ -285,6 +285,25 @@ int run_jansen_sequential_lab(LabSession& session) {
       "blocks derived from the Jacobian's pattern and solved on dynamic-size vectors, where the 8-equation model "
       "has its four dyads written out.) Model no more than the scene needs.",
       full_error[0], full_error[1], full_time[1] / full_time[0]));
+}
+
+}  // namespace
+
+int run_jansen_lab(LabSession& session) {
+  const mechanisms::JansenLeg leg;
+  solve_at_the_seed_angle(session, leg);
+  check_the_jacobian(session);
+  compare_every_solver_over_a_cycle(session);
+  const auto cycle = full_cycle(JansenModel::eight_equations, "full", 1e-10);
+  show_the_foot_speed(session, leg, cycle);
+  show_the_scene(session, cycle);
+  return 0;
+}
+
+int run_jansen_sequential_lab(LabSession& session) {
+  explain_why_both_find_the_same_pose(session);
+  redraw_figure4(session);
+  show_what_each_costs(session);
   return 0;
 }
 
