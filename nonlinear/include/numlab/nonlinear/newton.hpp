@@ -270,9 +270,7 @@ class Newton {
   }
 
   NewtonResult<N> result() const {
-    NewtonResult<N> result;
-    static_cast<NewtonCounts&>(result) = result_;
-    result.x = x_;
+    NewtonResult<N> result{result_, x_};
     result.residual_norm = f_.template lpNorm<Eigen::Infinity>();
     return result;
   }
