@@ -68,9 +68,8 @@ const CheckResult* median_timed_check(const std::vector<CheckResult>& results) {
 // The first line of `text` (a message's first line is its verdict).
 std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 
-}  // namespace
-
-int run_exercises_lab(LabSession& session) {
+// Step 1: the exercises a student can be given.
+void list_the_exercises(LabSession& session) {
   session.begin_step("The exercises",
                      "`numlab exercise list` names the methods a student writes in their own language. The "
                      "checker runs the student's program as a child process, sends it requests as JSON lines and "
@@ -79,14 +78,10 @@ int run_exercises_lab(LabSession& session) {
   Table list({"exercise", "what the student writes"});
   for (const exercises::Exercise& exercise : exercises::all_exercises()) list.add_row({exercise.name, exercise.summary});
   session.show(list, "exercises");
+}
 
-  if (!python_with_numpy()) {
-    session.say("This lab runs Python solutions, and `python3 -c 'import numpy'` fails here: python3 with numpy "
-                "is needed (Debian: apt-get install python3 python3-numpy). The lab stops.");
-    return 1;
-  }
-
-  const exercises::Exercise& gepp = exercises::find_exercise("gepp");
+// Step 2: the Python starter for gepp written into the lab's folder; returns its solution.py.
+std::string write_a_python_starter(LabSession& session, const exercises::Exercise& gepp) {
   const std::string starter = session.folder() + "/gepp-starter";
   const std::vector<exercises::StarterFile> files = exercises::starter_files(gepp, exercises::Language::python);
   exercises::write_starter_files(starter, files);
@@ -100,8 +95,11 @@ int run_exercises_lab(LabSession& session) {
                                  "already reads the requests and prints the replies; the student writes only "
                                  "solve(request), which as generated raises \"not implemented\".",
                                  starter, written));
+  return starter + "/solution.py";
+}
 
-  const std::string program = starter + "/solution.py";
+// Step 3: the starter checked: every check fails honestly ("not implemented"), none errs.
+void check_the_starter(LabSession& session, const exercises::Exercise& gepp, const std::string& program) {
   session.begin_step("The starter, checked", "Before a line of the method is written, the check runs: the "
                                              "starter must fail honestly, not crash.");
   const auto starter_results = check(session, gepp, program, "check-starter");
@@ -115,14 +113,16 @@ int run_exercises_lab(LabSession& session) {
                           "error would mean it gave no usable reply (a crash, a hang, garbage).",
                           count_of(not_implemented, total),
                           count_of(count_status(starter_results, CheckStatus::error), total)));
+}
 
-  const std::string examples = examples_dir();
+// Step 4: a correct GEPP checked, and its speed shown beside a reference.
+std::vector<CheckResult> check_a_correct_gepp(LabSession& session, const exercises::Exercise& gepp,
+                                              const std::string& examples) {
   session.begin_step("A correct GEPP",
                      "gepp_solution.py does Gaussian elimination with partial pivoting by hand on numpy arrays, "
                      "and reports its pivots as a trace, one entry per column.");
   const auto correct = check(session, gepp, examples + "/gepp_solution.py", "check-correct");
-  const int correct_passes = count_status(correct, CheckStatus::pass);
-  session.say(fmt::format("{} checks pass.", count_of(correct_passes, static_cast<int>(correct.size()))));
+  session.say(fmt::format("{} checks pass.", count_of(count_status(correct, CheckStatus::pass), static_cast<int>(correct.size()))));
   if (const CheckResult* median = median_timed_check(correct)) {
     const exercises::ReferenceTime& reference = median->references.front();
     session.say(fmt::format("Speed is shown, never judged. On the check of median time, \"{}\", the Python "
@@ -132,14 +132,18 @@ int run_exercises_lab(LabSession& session) {
                             speed_ratio_phrase(median->seconds_per_request, reference.seconds_per_request),
                             reference.name, reference.seconds_per_request * 1e3));
   }
+  return correct;
+}
 
+// Step 5: a GEPP without pivoting checked, each failing check's message and hint read.
+std::vector<CheckResult> check_a_gepp_without_pivoting(LabSession& session, const exercises::Exercise& gepp,
+                                                       const std::string& examples) {
   session.begin_step("A GEPP without pivoting",
                      "gepp_no_pivoting.py is the same program with one bug, named in its header: it never swaps "
                      "rows, and eliminates each column with its diagonal entry.");
   const auto buggy = check(session, gepp, examples + "/gepp_no_pivoting.py", "check-no-pivoting");
-  const int buggy_fails = count_status(buggy, CheckStatus::fail);
   const int buggy_total = static_cast<int>(buggy.size());
-  session.say(fmt::format("{} checks fail, {} give an error, and {} pass.", count_of(buggy_fails, buggy_total),
+  session.say(fmt::format("{} checks fail, {} give an error, and {} pass.", count_of(count_status(buggy, CheckStatus::fail), buggy_total),
                           count_of(count_status(buggy, CheckStatus::error), buggy_total),
                           count_of(count_status(buggy, CheckStatus::pass), buggy_total)));
   for (const CheckResult& result : buggy) {
@@ -147,15 +151,39 @@ int run_exercises_lab(LabSession& session) {
     session.say(fmt::format("\"{}\" fails. The message: {}. {}", result.name, first_line(result.message),
                             result.hint.empty() ? std::string("No hint fits.") : "The hint: " + result.hint + "."));
   }
+  return buggy;
+}
 
+// Step 6: where the verdicts were written, and what each program passed.
+void read_the_verdicts(LabSession& session, const std::vector<CheckResult>& correct, const std::vector<CheckResult>& buggy) {
+  const int buggy_total = static_cast<int>(buggy.size());
   session.begin_step("Reading the verdicts",
                      fmt::format("Each check run above also wrote results.json (the Exercism test-runner v3 shape, "
                                  "for graders and CI) and report.html into {}/check-*. The correct solution passes "
                                  "{}; the one without pivoting passes {}.",
-                                 session.folder(), count_of(correct_passes, static_cast<int>(correct.size())),
+                                 session.folder(), count_of(count_status(correct, CheckStatus::pass), static_cast<int>(correct.size())),
                                  count_of(count_status(buggy, CheckStatus::pass), buggy_total)));
+}
+
+}  // namespace
+
+int run_exercises_lab(LabSession& session) {
+  list_the_exercises(session);
+  if (!python_with_numpy()) {
+    session.say("This lab runs Python solutions, and `python3 -c 'import numpy'` fails here: python3 with numpy "
+                "is needed (Debian: apt-get install python3 python3-numpy). The lab stops.");
+    return 1;
+  }
+  const exercises::Exercise& gepp = exercises::find_exercise("gepp");
+  const std::string program = write_a_python_starter(session, gepp);
+  check_the_starter(session, gepp, program);
+  const std::string examples = examples_dir();
+  const auto correct = check_a_correct_gepp(session, gepp, examples);
+  const auto buggy = check_a_gepp_without_pivoting(session, gepp, examples);
+  read_the_verdicts(session, correct, buggy);
   // The lab's lesson holds only if the checker told the two programs apart.
-  return correct_passes == static_cast<int>(correct.size()) && buggy_fails > 0 ? 0 : 1;
+  const int correct_passes = count_status(correct, CheckStatus::pass);
+  return correct_passes == static_cast<int>(correct.size()) && count_status(buggy, CheckStatus::fail) > 0 ? 0 : 1;
 }
 
 }  // namespace numlab::cli
