@@ -76,6 +76,89 @@ SolveNonlinearCommand::SolveNonlinearCommand(CLI::App& solve) {
   add_common_options(*command_, common_);
 }
 
+namespace {
+
+// What solve nonlinear prints: the command's choices and the run's outcome.
+struct NonlinearOutcome {
+  const std::string& problem_name;
+  const std::string& method;
+  const std::string& linear;
+  bool damped;
+  std::optional<int> reuse_jacobian;
+  const ChosenProblem& chosen;
+  const NonlinearRun& run;
+  double time_s;
+  double distance;  // to the known root; NaN when none is known
+  bool newton() const { return method == "newton"; }
+};
+
+void print_nonlinear_json(const NonlinearOutcome& o, const nlohmann::ordered_json* trace) {
+  const NonlinearRun& run = o.run;
+  nlohmann::ordered_json out = {{"problem", o.problem_name},
+                                {"method", o.method},
+                                {"size", o.chosen.problem.system->dimension()},
+                                {"start", o.chosen.start},
+                                {"x", nlohmann::ordered_json::array()},
+                                {"status", std::string(to_string(run.status))},
+                                {"iterations", run.iterations},
+                                {"residual_inf", number_or_null(run.residual_norm)},
+                                {"function_evaluations", run.function_evaluations},
+                                {"jacobian_evaluations", run.jacobian_evaluations},
+                                {"time_s", o.time_s}};
+  for (double value : run.x) out["x"].push_back(number_or_null(value));
+  if (o.newton()) {
+    out["linear"] = o.linear;
+    out["damped"] = o.damped;
+  }
+  if (o.reuse_jacobian) {
+    out["reuse_jacobian"] = *o.reuse_jacobian;
+    out["factorizations"] = run.factorizations;
+  }
+  out["step_inf"] = number_or_null(run.step_norm);
+  if (o.chosen.problem.known_root) out["distance_to_root"] = number_or_null(o.distance);
+  out["termination"] = run.termination;
+  if (trace != nullptr) out["trace"] = *trace;
+  std::cout << out.dump(2) << '\n';
+}
+
+void print_nonlinear_csv(const NonlinearOutcome& o) {
+  const NonlinearRun& run = o.run;
+  const int n = o.chosen.problem.system->dimension();
+  std::cout << "problem,method,status,iterations,residual_inf,function_evaluations,jacobian_evaluations,time_s,size,"
+               "start";
+  for (int i = 0; i < n; ++i) std::cout << ",x" << i + 1;
+  std::cout << '\n'
+            << fmt::format("{},{},{},{},{:.6g},{},{},{:.6g}", o.problem_name, o.method, to_string(run.status),
+                           run.iterations, run.residual_norm, run.function_evaluations, run.jacobian_evaluations,
+                           o.time_s)
+            << fmt::format(",{},{}", n, o.chosen.start);
+  for (double value : run.x) std::cout << fmt::format(",{:.17g}", value);
+  std::cout << '\n';
+}
+
+void print_nonlinear_text(const NonlinearOutcome& o) {
+  const NonlinearRun& run = o.run;
+  std::string x_text;
+  for (double value : run.x) x_text += fmt::format("{:.12g} ", value);
+  std::cout << fmt::format("problem            {} - {}\n", o.problem_name, o.chosen.problem.description)
+            << fmt::format("size, start        n = {}, {}\n", o.chosen.problem.system->dimension(), o.chosen.start)
+            << fmt::format("method             {}{}\n", o.method,
+                           o.newton() ? fmt::format(" (linear solver {}{})", o.linear, o.damped ? ", damped" : "") : "")
+            << fmt::format("status             {}\n", to_string(run.status))
+            << fmt::format("x                  {}\n", x_text)
+            << fmt::format("iterations         {}\n", run.iterations)
+            << fmt::format("||f||_inf          {:.3g}\n", run.residual_norm);
+  if (o.chosen.problem.known_root) std::cout << fmt::format("distance to root   {:.3g}   (||x - x*||_inf)\n", o.distance);
+  std::cout << fmt::format("evaluations        {} of f, {} of J\n", run.function_evaluations, run.jacobian_evaluations);
+  if (o.reuse_jacobian) {
+    std::cout << fmt::format("factorizations     {} (J refactored every {} iterations)\n", run.factorizations,
+                             *o.reuse_jacobian);
+  }
+  std::cout << fmt::format("time               {:.3g} s\n", o.time_s) << run.termination << '\n';
+}
+
+}  // namespace
+
 int SolveNonlinearCommand::run() const {
   // 1. Every flag checked against the method before any work (docs/cli.md, "Which flags apply where").
   const CommonOptions common = checked_common_options(common_, "solve nonlinear");
@@ -86,7 +169,6 @@ int SolveNonlinearCommand::run() const {
                                               given(*command_, "--x0") ? std::optional(x0_) : std::nullopt);
   const nonlinear::TestProblem& problem = chosen.problem;
   const Eigen::VectorXd& x0 = chosen.x0;
-  const int n = problem.system->dimension();
 
   NonlinearSettings settings;
   settings.linear = nonlinear::linear_method_named(linear_);
@@ -114,63 +196,13 @@ int SolveNonlinearCommand::run() const {
   const double distance = problem.known_root ? (run.x - *problem.known_root).lpNorm<Eigen::Infinity>()
                                              : std::numeric_limits<double>::quiet_NaN();
 
+  const NonlinearOutcome outcome{problem_, method_, linear_, damped_, reuse_jacobian_, chosen, run, time_s, distance};
   if (common.format == Format::json) {
-    nlohmann::ordered_json out = {{"problem", problem_},
-                                  {"method", method_},
-                                  {"size", n},
-                                  {"start", chosen.start},
-                                  {"x", nlohmann::ordered_json::array()},
-                                  {"status", std::string(to_string(run.status))},
-                                  {"iterations", run.iterations},
-                                  {"residual_inf", number_or_null(run.residual_norm)},
-                                  {"function_evaluations", run.function_evaluations},
-                                  {"jacobian_evaluations", run.jacobian_evaluations},
-                                  {"time_s", time_s}};
-    for (double value : run.x) out["x"].push_back(number_or_null(value));
-    if (is_newton) {
-      out["linear"] = linear_;
-      out["damped"] = damped_;
-    }
-    if (reuse_jacobian_) {
-      out["reuse_jacobian"] = *reuse_jacobian_;
-      out["factorizations"] = run.factorizations;
-    }
-    out["step_inf"] = number_or_null(run.step_norm);
-    if (problem.known_root) out["distance_to_root"] = number_or_null(distance);
-    out["termination"] = run.termination;
-    if (common.trace) out["trace"] = tracer.records();
-    std::cout << out.dump(2) << '\n';
+    print_nonlinear_json(outcome, common.trace ? &tracer.records() : nullptr);
   } else if (common.format == Format::csv) {
-    std::cout << "problem,method,status,iterations,residual_inf,function_evaluations,jacobian_evaluations,time_s,size,"
-                 "start";
-    for (int i = 0; i < n; ++i) std::cout << ",x" << i + 1;
-    std::cout << '\n'
-              << fmt::format("{},{},{},{},{:.6g},{},{},{:.6g}", problem_, method_, to_string(run.status),
-                             run.iterations, run.residual_norm, run.function_evaluations, run.jacobian_evaluations,
-                             time_s)
-              << fmt::format(",{},{}", n, chosen.start);
-    for (double value : run.x) std::cout << fmt::format(",{:.17g}", value);
-    std::cout << '\n';
+    print_nonlinear_csv(outcome);
   } else {
-    std::string x_text;
-    for (double value : run.x) x_text += fmt::format("{:.12g} ", value);
-    std::cout << fmt::format("problem            {} - {}\n", problem_, problem.description)
-              << fmt::format("size, start        n = {}, {}\n", n, chosen.start)
-              << fmt::format("method             {}{}\n", method_,
-                             is_newton ? fmt::format(" (linear solver {}{})", linear_, damped_ ? ", damped" : "") : "")
-              << fmt::format("status             {}\n", to_string(run.status))
-              << fmt::format("x                  {}\n", x_text)
-              << fmt::format("iterations         {}\n", run.iterations)
-              << fmt::format("||f||_inf          {:.3g}\n", run.residual_norm);
-    if (problem.known_root) std::cout << fmt::format("distance to root   {:.3g}   (||x - x*||_inf)\n", distance);
-    std::cout << fmt::format("evaluations        {} of f, {} of J\n", run.function_evaluations,
-                             run.jacobian_evaluations);
-    if (reuse_jacobian_) {
-      std::cout << fmt::format("factorizations     {} (J refactored every {} iterations)\n", run.factorizations,
-                               *reuse_jacobian_);
-    }
-    std::cout
-              << fmt::format("time               {:.3g} s\n", time_s) << run.termination << '\n';
+    print_nonlinear_text(outcome);
   }
   return exit_code_for(run.status);
 }
