@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "linkage_fast_kernels.hpp"
+#include "numlab/mechanisms/linkage/linkage_conditioning.hpp"
 
 namespace numlab::mechanisms {
 
@@ -43,11 +44,7 @@ Status LinkageFastSolver::Sparse::solve(const Eigen::VectorXd& f, Eigen::VectorX
 }
 
 void LinkageFastSolver::Sparse::read_rows(const LinkageModel& model, double t, const Eigen::VectorXd& q) {
-  model.jacobian_entries(q, t, model_entries);
-  entries.clear();
-  for (const auto& e : model_entries) entries.emplace_back(e.row, e.column, e.value);
-  rows.resize(model.equation_count(), model.unknown_count());
-  rows.setFromTriplets(entries.begin(), entries.end());
+  rows = linkage_sparse_jacobian(model, t, q);  // LinkageModel::jacobian's entries, by rows
 }
 
 double LinkageFastSolver::Sparse::row_dot(int row, const Eigen::VectorXd& v) const {

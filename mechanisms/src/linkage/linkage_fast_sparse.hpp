@@ -28,7 +28,6 @@ struct LinkageFastSolver::Sparse {
   Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx);
 
   // The velocity's J (LinkageModel::jacobian's, by rows) at (q, t), and what it reads of it.
-  std::vector<LinkageModel::JacobianEntry> model_entries;
   Eigen::SparseMatrix<double, Eigen::RowMajor> rows;
   void read_rows(const LinkageModel& model, double t, const Eigen::VectorXd& q);
   double row_dot(int row, const Eigen::VectorXd& v) const;
