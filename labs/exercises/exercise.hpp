@@ -62,6 +62,7 @@ struct Exercise {
   std::string summary;  // one line for `exercise list`
   // The task in Markdown: what to write, the request and reply fields, the exact equations, the
   // numbered tasks (task_id), and hints. `exercise show` prints it; `exercise init` saves TASK.md.
+  // An exercise's task is the file tasks/NAME.md, embedded at build time (task_texts.hpp).
   std::string task;
   Stubs stubs;
   std::function<std::vector<Check>()> battery;

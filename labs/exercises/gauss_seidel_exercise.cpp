@@ -11,6 +11,7 @@
 #include "exercises/linear_checks.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
+#include "exercises/task_texts.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/linalg/gsl_reference.hpp"
 #include "numlab/linalg/matrix_generators.hpp"
@@ -54,9 +55,10 @@ nlohmann::json request_for(const Problem& p) {
 
 class SweepRecorder final : public linalg::GaussSeidel<>::Observer {
  public:
-  void on_step(const linalg::GaussSeidel<>& stepper, const linalg::SweepRecord& record) override {
+  StepControl on_step(const linalg::GaussSeidel<>& stepper, const linalg::SweepRecord& record) override {
     xs.push_back(stepper.x());
     updates.push_back(record.step_norm);
+    return StepControl::proceed;
   }
   std::vector<Eigen::VectorXd> xs;
   std::vector<double> updates;
@@ -339,55 +341,13 @@ std::vector<Check> gauss_seidel_battery() {
   };
 }
 
-const char* const gauss_seidel_task = R"md(# gauss-seidel: Gauss-Seidel sweeps, plain and on the normal equations
-
-Write `solve(request)`: solve a linear system by Gauss-Seidel iteration, by hand (arrays for storage only).
-
-## Request and reply
-- Request: `A` (m lists of n numbers, the rows), `b` (m numbers), `x0` (n numbers), `tolerance`,
-  `max_iterations`, `normal_equations` (true or false).
-- The system you sweep, M x = c: with `normal_equations` false, M = A and c = b (A is square);
-  with `normal_equations` true (seed 001's form), M = AᵀA and c = Aᵀb (A may have more rows than columns).
-- Reply: `x` (n numbers), `status` (`"converged"`, `"max_iterations"` or `"diverged"`), `iterations`
-  (the number of sweeps done).
-- Optional `trace`: one entry per sweep, in order: `{"x": x after the sweep, "update_inf": max_i |x_i(new) - x_i(old)|}`.
-
-## The method
-One sweep: for i = 0 ... n-1, x_i <- (c_i - sum_{j != i} m_ij x_j) / m_ii, using the new x_0 ... x_{i-1} at once.
-After each sweep k (counted from 1), with u_k = max_i |x_i(new) - x_i(old)|, test in this order:
-1. `converged` if u_k <= tolerance * max(1, max_i |x_i(new)|);
-2. `diverged` if u_k > 1e8 * max(u_1, tolerance);
-3. `max_iterations` if k = max_iterations.
-
-## Task 1: the plain sweep and the stop test
-On a diagonally dominant system, converge in numlab's number of sweeps (+-1) with x as accurate as numlab's
-Gauss-Seidel (within 10x, or the tolerance, or n*kappa*eps). A start above the solution must not fool the
-stop test.
-
-## Task 2: the other endings
-A system on which plain Gauss-Seidel diverges must end `diverged` or `max_iterations`, never `converged`; a
-slow system must end `max_iterations` with `iterations` = max_iterations.
-
-## Task 3: the normal equations
-With `normal_equations` true, sweep AᵀA x = Aᵀb: it converges for any A with independent columns,
-including non-square A (least squares) and matrices on which plain Gauss-Seidel diverges.
-
-## Task 4: the trace
-Send `trace`. Every sweep's x must agree with numlab's stepper within 100*sweep*n*eps*max(1, |x|).
-
-## Hints
-- The stop test needs the absolute value: a change of -5 is not below a tolerance of 1e-9 (seed 001).
-- Use each new x_i at once (Gauss-Seidel), not only at the end of the sweep (that is Jacobi).
-- `normal_equations: true` means AᵀA and Aᵀb: plain Gauss-Seidel on A may diverge.
-)md";
-
 }  // namespace
 
 Exercise gauss_seidel_exercise() {
   Exercise exercise;
   exercise.name = "gauss-seidel";
   exercise.summary = "Gauss-Seidel sweeps, plain or on A^T A: status, sweep count, x and the sweep trace";
-  exercise.task = gauss_seidel_task;
+  exercise.task = task_text("gauss-seidel");
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: Gauss-Seidel (reply x, status, iterations)\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: Gauss-Seidel (reply x, status, iterations)\");\n";
   exercise.stubs.octave = "  error('not implemented: Gauss-Seidel (reply x, status, iterations)');\n";

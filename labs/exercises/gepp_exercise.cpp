@@ -10,6 +10,7 @@
 #include "exercises/linear_checks.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
+#include "exercises/task_texts.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gsl_reference.hpp"
 #include "numlab/linalg/matrix_generators.hpp"
@@ -49,14 +50,15 @@ class PivotRecorder final : public linalg::GaussElimination<>::Observer {
  public:
   explicit PivotRecorder(const Eigen::MatrixXd& A) : candidates_(A.col(0)) {}
 
-  void on_step(const linalg::GaussElimination<>& stepper, const linalg::EliminationRecord& record) override {
+  StepControl on_step(const linalg::GaussElimination<>& stepper, const linalg::EliminationRecord& record) override {
     if (record.event == linalg::EliminationEvent::row_swap) swapped_with_ = record.other_row;
-    if (record.event != linalg::EliminationEvent::elimination) return;
+    if (record.event != linalg::EliminationEvent::elimination) return StepControl::proceed;
     const int k = record.column;
     choices.push_back({swapped_with_ < 0 ? k : swapped_with_, record.value, candidates_});
     swapped_with_ = -1;
     const int n = stepper.size();
     if (k + 1 < n) candidates_ = stepper.reduced_matrix().col(k + 1).tail(n - k - 1);
+    return StepControl::proceed;
   }
 
   std::vector<PivotChoice> choices;
@@ -339,57 +341,13 @@ std::vector<Check> gepp_battery() {
   };
 }
 
-const char* const gepp_task = R"md(# gepp: Gaussian elimination with partial pivoting
-
-Write `solve(request)`: solve `A x = b` by Gaussian elimination with partial pivoting (GEPP), by hand.
-Use arrays for storage only: no library solver, LU or inverse.
-
-## Request and reply
-- Request: `A` (n lists of n numbers, the rows), `b` (n numbers).
-- Reply: `x` (n numbers), or `"status": "singular"` when a pivot is negligible (below).
-- Optional `trace`: one entry per column k = 0 ... n-1, in order:
-  `{"column": k, "pivot_row": p, "pivot": a_kk}`, where `p` is the 0-based row of the matrix *as it
-  stands at column k* (after the earlier swaps) that you swap into row k, and `pivot` is a_kk after the swap.
-  The trace checks compare it with numlab's own GEPP, column by column.
-
-## The method
-For each column k = 0 ... n-1:
-1. pivot: the row p >= k with the largest |a_pk| (the first such row on a tie);
-2. swap rows k and p of A (the whole row) and entries k and p of b;
-3. if |a_kk| <= n * eps * max|a_ij| (eps = 2.220446049250313e-16, max over the original A), stop: reply
-   `{"status": "singular"}`;
-4. eliminate: for each row i > k, l = a_ik / a_kk, row_i -= l * row_k, b_i -= l * b_k.
-
-Then back-substitute: x_i = (b_i - sum_{j=i+1}^{n-1} a_ij x_j) / a_ii for i = n-1 down to 0.
-
-## Task 1: solve accurately
-The checks compare x with GSL's LU: the relative forward error may be at most 10*n*kappa*eps*growth
-(kappa: the condition number, growth: max|u_ij| / max|a_ij|) and the relative residual
-||b - A x|| / (||A|| ||x||) at most 10*n*eps*growth. The systems include Hilbert(10), Wilkinson's growth matrix,
-a matrix with a tiny leading entry, and a nearly singular (kappa = 1e10) matrix that must still be solved.
-
-## Task 2: report singular matrices
-Exactly singular matrices, and matrices whose pivot falls below n*eps*max|a_ij| in rounding, must give
-`{"status": "singular"}`, never a huge or infinite x.
-
-## Task 3: the pivot trace
-Send `trace`. Each column's pivot row must be numlab's; each pivot value must agree within
-10*n*eps*growth*max|a_ij|.
-
-## Hints
-- Compare |a_ik|, not a_ik: a large negative entry is a good pivot.
-- Swap the whole row, every column of it, and b with it.
-- In back substitution the sum runs over j = i+1 ... n-1: check both ends.
-- Test the pivot after the swap and before dividing by it.
-)md";
-
 }  // namespace
 
 Exercise gepp_exercise() {
   Exercise exercise;
   exercise.name = "gepp";
   exercise.summary = "Gaussian elimination with partial pivoting: x, the singular verdict, the pivot trace";
-  exercise.task = gepp_task;
+  exercise.task = task_text("gepp");
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: GEPP (reply x, or status singular)\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: GEPP (reply x, or status singular)\");\n";
   exercise.stubs.octave = "  error('not implemented: GEPP (reply x, or status singular)');\n";

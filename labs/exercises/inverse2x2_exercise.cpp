@@ -9,6 +9,7 @@
 #include "exercises/linear_checks.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
+#include "exercises/task_texts.hpp"
 #include "numlab/linalg/gsl_reference.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
 
@@ -150,43 +151,13 @@ std::vector<Check> inverse2x2_battery() {
   };
 }
 
-const char* const inverse2x2_task = R"md(# inverse2x2: the closed-form inverse of a 2x2 matrix
-
-Write `solve(request)`: the inverse of a 2x2 matrix by the closed form (seed 003's inner solve), by hand.
-
-## Request and reply
-- Request: `A`, two rows `[[a, b], [c, d]]`.
-- Reply: `inverse` (two rows), or `"status": "singular"`.
-
-## The closed form
-det A = a d - b c and A^-1 = (1 / det A) [[d, -b], [-c, a]].
-A is singular to working precision when |det A| <= eps * (a^2 + b^2 + c^2 + d^2), eps = 2.220446049250313e-16
-(for a 2x2 matrix this means kappa_2(A) >= 1/eps): reply `{"status": "singular"}`.
-
-## Task 1: invert accurately
-The inverse must agree with the closed form (and GSL LU) to 10*kappa*eps, relative, including matrices with
-entries of very different sizes and a nearly singular (kappa ~ 7e12) matrix that is still invertible.
-
-## Task 2: report singular matrices
-Exactly singular matrices and matrices singular to working precision must give `"status": "singular"`.
-
-## Task 3: scale first
-A = 1e-170 [[4, 7], [2, 6]]: a d = 2.4e-339 underflows, and 1e170 [[4, 7], [2, 6]] overflows. Scale A by a power
-of two s (exact: `math.frexp`/`math.ldexp`, `std::frexp`/`std::ldexp`) so max|a_ij| is near 1, invert, and
-divide the result by s.
-
-## Hints
-- det = a d - b c, not b c - a d: a sign error negates the whole inverse.
-- The inverse is [[d, -b], [-c, a]] / det: the off-diagonal entries stay where they are (not transposed).
-)md";
-
 }  // namespace
 
 Exercise inverse2x2_exercise() {
   Exercise exercise;
   exercise.name = "inverse2x2";
   exercise.summary = "the closed-form 2x2 inverse, its singular test, and scaling";
-  exercise.task = inverse2x2_task;
+  exercise.task = task_text("inverse2x2");
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: 2x2 inverse (reply inverse, or status singular)\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: 2x2 inverse (reply inverse, or status singular)\");\n";
   exercise.stubs.octave = "  error('not implemented: 2x2 inverse (reply inverse, or status singular)');\n";

@@ -14,6 +14,7 @@
 #include "exercises/linkage_checks.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
+#include "exercises/task_texts.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
@@ -198,72 +199,13 @@ Verdict check_J(Session& session) {
   return Verdict::pass(closure_time(list.front()));
 }
 
-std::string equations_markdown() {
-  return R"(### The model: seed 001's Jansen leg, 10 equations in theta3 ... theta12
-
-Frame (as `numlab mechanism jansen10`): crank pivot O at the origin, fixed joint P1 = (-b, -a) =
-(-38, -7.8). The crank O->A has length li = 15 at `crank_angle` theta2 (radians, counter-clockwise
-from +x). Every unknown is the direction of one of seed 001's vectors, from +x, in radians:
-
-| unknown | vector | from->to | length | | unknown | vector | from->to | length |
-| --- | --- | --- | --- | --- | --- | --- | --- | --- |
-| theta3 | r3 | A->B | 50 | | theta8 | r8 | P1->D | 39.3 |
-| theta4 | r4 | B->P1 | 41.5 | | theta9 | r9 | E->D | 36.7 |
-| theta5 | r5 | B->C | 55.8 | | theta10 | r10 | D->A | 61.9 |
-| theta6 | r6 | C->P1 | 40.1 | | theta11 | r11 | D->F | 49 |
-| theta7 | r7 | C->E | 39.4 | | theta12 | r12 | F->E | 65.7 |
-
-With c_k = cos(theta_k), s_k = sin(theta_k), X = b + li cos(theta2) and Y = a + li sin(theta2)
-(the vector P1->A), f has exactly these 10 entries (index 0 first; f[i] is seed 001's f(i+1),
-its eq 8+i). Each pair closes one loop, x component first:
-
-    f[0] = X + 50 c3 + 41.5 c4                      (P1->A->B->P1, x)
-    f[1] = Y + 50 s3 + 41.5 s4                      (P1->A->B->P1, y)
-    f[2] = -41.5 c4 + 55.8 c5 + 40.1 c6             (P1->B->C->P1, x)
-    f[3] = -41.5 s4 + 55.8 s5 + 40.1 s6             (P1->B->C->P1, y)
-    f[4] = 40.1 c6 - 39.4 c7 + 39.3 c8 - 36.7 c9    (C->P1->D->E->C, x)
-    f[5] = 40.1 s6 - 39.4 s7 + 39.3 s8 - 36.7 s9    (C->P1->D->E->C, y)
-    f[6] = X - 39.3 c8 - 61.9 c10                   (P1->A->D->P1, x)
-    f[7] = Y - 39.3 s8 - 61.9 s10                   (P1->A->D->P1, y)
-    f[8] = 36.7 c9 + 49 c11 + 65.7 c12              (E->D->F->E, x)
-    f[9] = 36.7 s9 + 49 s11 + 65.7 s12              (E->D->F->E, y)
-
-J[i][k] = d f[i] / d theta_(k+3): d(l cos t)/dt = -l sin t and d(l sin t)/dt = l cos t. The
-crank angle is fixed, so X and Y have no derivative.
-)";
-}
-
 }  // namespace
 
 Exercise jansen10_jacobian_exercise() {
   Exercise exercise;
   exercise.name = "jansen10-jacobian";
   exercise.summary = "f and J of seed 001's 10-equation Jansen leg closure, entry by entry";
-  exercise.task = R"(# jansen10-jacobian: seed 001's ten closure equations and their Jacobian
-
-Write `solve(request)` that evaluates the loop-closure residual f and its Jacobian J of seed 001's
-10-equation Jansen leg at given angles.
-
-- **Request:** `crank_angle` (theta2, radians), `theta` (10 angles theta3 ... theta12, radians).
-- **Reply:** `f` (10 numbers, in the order below), `J` (10 rows of 10: J[i][k] = d f[i] / d theta_(k+3)).
-
-)" + equations_markdown() + R"(
-## Task 1
-f follows the equations above exactly (same rows, same signs), at the model's start, at solved
-poses and at poses far from any root. Checked against numlab's `Jansen10Closure` to 1e3 eps of the
-links' sum.
-
-## Task 2
-J is the derivative of f, entry by entry. Checked against numlab's analytic Jacobian; the message
-also gives central differences of f. It names the first wrong entry.
-
-## Hints
-- Seed 001's own Jacobian (its eq 20, rows 9-10) has 67.5 where |r12| = 65.7: type each length
-  once, as a named constant, and use the name everywhere.
-- Each column k holds only theta_(k+3)'s link: an entry with another link's length is a term
-  copied from the wrong place.
-- A column from the wrong angle (cos theta6 where cos theta5 belongs) makes a whole column wrong.
-)";
+  exercise.task = task_text("jansen10-jacobian");
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: f and J of the 10-equation Jansen closure\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: f and J of the 10-equation Jansen closure\");\n";
   exercise.stubs.octave = "  error('not implemented: f and J of the 10-equation Jansen closure');\n";

@@ -11,6 +11,7 @@
 #include "exercises/linkage_checks.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
+#include "exercises/task_texts.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
 
 namespace numlab::exercises {
@@ -126,30 +127,7 @@ Exercise jansen_jacobian_exercise() {
   Exercise exercise;
   exercise.name = "jansen-jacobian";
   exercise.summary = "f and J of seed 000's 8-equation Jansen leg closure, entry by entry";
-  exercise.task = R"(# jansen-jacobian: the Jansen leg's closure equations and their Jacobian
-
-Write `solve(request)` that evaluates the loop-closure residual f and its Jacobian J of seed 000's
-Jansen leg at given angles.
-
-- **Request:** `crank_angle` (radians), `theta` (8 angles theta1 ... theta8, radians).
-- **Reply:** `f` (8 numbers, in the order below), `J` (8 rows of 8: J[i][k] = d f[i] / d theta_(k+1)).
-
-)" + jansen_equations_markdown() + R"(
-## Task 1
-f follows the equations above exactly (same rows, same signs), at seed 000's start (Table 3), at
-solved poses and at poses far from any root. Checked against numlab's `JansenClosure` to 1e3 eps
-of the links' sum.
-
-## Task 2
-J is the derivative of f, entry by entry. Checked against numlab's analytic Jacobian, which the
-check itself compares with central differences of f. The message names the first wrong entry.
-
-## Hints
-- Seed 001's Jacobian had 67.5 where the length was 65.7: type each length once, as a named
-  constant, and use the name everywhere.
-- Seed 000's printed eqs (23) and (25) use `a` where `b` belongs in the cosine rows.
-- A column from the wrong angle (cos theta4 where cos theta3 belongs) makes a whole column wrong.
-)";
+  exercise.task = task_text("jansen-jacobian");
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: f and J of the Jansen closure\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: f and J of the Jansen closure\");\n";
   exercise.stubs.octave = "  error('not implemented: f and J of the Jansen closure');\n";

@@ -6,6 +6,7 @@
 #include "exercises/exercise_list.hpp"
 #include "exercises/jansen_poses.hpp"
 #include "exercises/newton_battery.hpp"
+#include "exercises/task_texts.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
 
 namespace numlab::exercises {
@@ -68,43 +69,7 @@ Exercise jansen_newton_exercise() {
   Exercise exercise;
   exercise.name = "jansen-newton";
   exercise.summary = "full Newton-Raphson on seed 000's 8-equation Jansen leg, over a whole crank cycle";
-  exercise.task = R"(# jansen-newton: Newton-Raphson on the Jansen leg
-
-Write `solve(request)`: full Newton-Raphson on the 8 closure equations below, from the given start.
-
-- **Request:** `crank_angle` (radians), `theta0` (8 starting angles), `tolerance`, `max_iterations`.
-- **Reply:** `theta` (8 angles), `status` (`"converged"` only when max_i |f_i(theta)| <= tolerance;
-  otherwise `"max_iterations"`, `"singular"`, ...), `iterations` (Newton steps taken, at most
-  `max_iterations`), and `trace`: one entry per iteration, `{"residual_inf": max_i |f_i| after the
-  step, "step_inf": max_k |dx_k| of the step}`.
-
-Newton's iteration: test max_i |f_i(x)| <= tolerance (converged); else solve J(x) dx = -f(x),
-set x <- x + dx, count one iteration, and repeat (stop with `max_iterations` when the count
-reaches it).
-
-)" + jansen_equations_markdown() + R"(
-## Task 1
-Newton converges to the closed-form pose (circle intersections, seed 000's branch) at every 10
-degrees of a whole crank turn, each from the pose 10 degrees before, with tolerance 1e-10. The
-allowed distance is 2 ||J^-1||_inf (tolerance + 1e3 eps L): what the residual test guarantees
-at the pose's conditioning.
-
-## Task 2
-A status `"converged"` is backed by max_i |f_i(theta)| <= tolerance at the angles you return
-(numlab re-evaluates f), and `iterations` never exceeds `max_iterations`. Some requests cannot
-converge in the iterations given; one starts where every f_i is -0.5.
-
-## Task 3
-The trace follows numlab's Newton (GEPP inner solve) from the same start: residual_inf and
-step_inf agree at every iteration until both are at rounding level. The message names the first
-iteration that departs.
-
-## Hints
-- dx solves J dx = -f, so x <- x + dx (x <- x - dx walks away from the root).
-- A Jacobian entry from the wrong link, or a column from the wrong angle, still converges
-  sometimes, but only linearly: the trace shows it.
-- Test max |f_i| with abs: seed 001's Gauss-Seidel tested a signed change.
-)";
+  exercise.task = task_text("jansen-newton");
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: Newton-Raphson on the Jansen closure\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: Newton-Raphson on the Jansen closure\");\n";
   exercise.stubs.octave = "  error('not implemented: Newton-Raphson on the Jansen closure');\n";

@@ -24,9 +24,3 @@ std::string jansen_angle_name(int index);
 inline constexpr double degrees = 3.14159265358979323846 / 180.0;
 
 }  // namespace numlab::exercises
-
-namespace numlab::exercises {
-// The 8-equation model in Markdown (frame, lengths, f_1 ... f_8 in the order of the reply), for
-// the tasks of jansen-jacobian and jansen-newton.
-std::string jansen_equations_markdown();
-}  // namespace numlab::exercises

@@ -7,6 +7,7 @@
 #include "exercises/exercise_list.hpp"
 #include "exercises/jansen_poses.hpp"
 #include "exercises/newton_battery.hpp"
+#include "exercises/task_texts.hpp"
 #include "numlab/mechanisms/mustang_linkage.hpp"
 
 namespace numlab::exercises {
@@ -101,57 +102,7 @@ Exercise mustang_newton_exercise() {
   Exercise exercise;
   exercise.name = "mustang-newton";
   exercise.summary = "full Newton-Raphson on seed 003's Mustang roof linkage (A ... H), up to its assembly limits";
-  exercise.task = R"(# mustang-newton: Newton-Raphson on the Ford Mustang roof linkage
-
-Write `solve(request)`: full Newton-Raphson on the 8 loop-closure equations below, from the guess.
-
-- **Request:** `crank_angle` (theta, radians: the direction of link 2->4 from +x), `guess`
-  (A ... H, radians), `tolerance`, `max_iterations`.
-- **Reply:** `angles` (A ... H), `status` (`"converged"` only when max_i |f_i| <= tolerance;
-  otherwise `"max_iterations"`, `"singular"`, ...), `iterations` (at most `max_iterations`),
-  and `trace`: one entry per iteration `{"residual_inf", "step_inf"}` as in jansen-newton.
-
-### The model (as `numlab mechanism mustang`; docs/mechanisms.md)
-
-Fixed points P0 = (sqrt 0.5, 0), P1 = (0, sqrt 0.5), P2 = (0, 1 + sqrt 0.5). A, B, D, F are
-directions from +x; C, E, G, H are measured from -x turning towards +y (a link "at C" points along
-(-cos C, sin C)). Lengths (seed 003): |1 3| = |3 4| = 2, |0 5| = 5, |2 4| = 2.5, |5 6| = 4/3,
-|6 7| = 4/3, |6 8| = 4, |8 9| = 1, |7 10| = 4.5, |10 8| = 4/3, |10 11| = 4/3, |9 11| = 1. The bend
-b = pi/9 (20 degrees) exactly; the chord |2 6| = 2 (2.5) cos(b) (the seed's 4.698, exact here).
-
-    f[0] = -2.5 cos(theta) + 2 cos A + 2 cos B                                         loop 1 (A, B), x
-    f[1] = -1 - 2.5 sin(theta) + 2 sin A + 2 sin B                                     loop 1, y
-    f[2] = -sqrt0.5 + |2 6| cos(theta + b) + (4/3) cos C - 5 cos D                     loop 2 (C, D), x
-    f[3] = 1 + sqrt0.5 + |2 6| sin(theta + b) - (4/3) sin C - 5 sin D                  loop 2, y
-    f[4] = (4/3) cos(theta + b) + 4 cos(C - b) - 4.5 cos E - (4/3) cos F              loop 3 (E, F), x
-    f[5] = (4/3) sin(theta + b) - 4 sin(C - b) + 4.5 sin E - (4/3) sin F              loop 3, y
-    f[6] = cos(C + b) + (4/3) cos F - (4/3) cos G + cos H                              loop 4 (G, H), x
-    f[7] = -sin(C + b) + (4/3) sin F + (4/3) sin G - sin H                             loop 4, y
-
-The linkage assembles on the seed's branch only for theta from -41.4257 to 56.4540 degrees.
-
-## Task 1
-Newton converges to the closed-form pose at 14 angles across the assembly range, near both
-limits included, each from the pose 2 degrees nearer the middle (tolerance 1e-10). The allowed
-distance is 2 ||J^-1||_inf (tolerance + 1e3 eps L): kappa(J) grows towards the limits.
-
-## Task 2
-Beyond the assembly limits (-42, -45, 57, 60 degrees) there is no root: never say
-`"converged"` there.
-
-## Task 3
-A status `"converged"` is backed by max_i |f_i(angles)| <= tolerance (numlab re-evaluates f), and
-`iterations` never exceeds `max_iterations`. One start has residual components +0.05 and -0.05
-in every loop.
-
-## Task 4
-The trace follows numlab's Newton (GEPP inner solve) from the same start, iteration by iteration.
-
-## Hints
-- Seed 003's stop test |f_i + f_j| < 0.001 lets the two components of a loop cancel.
-- Seed 003's loop-3 Jacobian had its second row's signs flipped, and d f[7]/dH (loop 4, y) read D for H.
-- Use the guess you are given: seed 003 restarted every loop from [pi/18, pi/2].
-)";
+  exercise.task = task_text("mustang-newton");
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: Newton-Raphson on the Mustang linkage\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: Newton-Raphson on the Mustang linkage\");\n";
   exercise.stubs.octave = "  error('not implemented: Newton-Raphson on the Mustang linkage');\n";

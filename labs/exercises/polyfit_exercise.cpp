@@ -12,6 +12,7 @@
 #include "exercises/nist_polynomial_sets.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
+#include "exercises/task_texts.hpp"
 #include "numlab/fitting/polynomial_fit.hpp"
 #include "numlab/fitting/reference_fits.hpp"
 
@@ -202,37 +203,7 @@ Exercise polyfit_exercise() {
   Exercise exercise;
   exercise.name = "polyfit";
   exercise.summary = "least-squares polynomial fit, against GSL and NIST's certified values";
-  exercise.task = R"(# polyfit: a least-squares polynomial fit
-
-Write `solve(request)`: the coefficients b0 ... bD of the polynomial y ~ b0 + b1 x + ... + bD x^D
-that minimises sum_i (y_i - p(x_i))^2.
-
-- **Request:** `x`, `y` (lists of the same length m), `degree` D.
-- **Reply:** `coefficients` (D + 1 numbers, **lowest power first**: b0, b1, ..., bD); or, when the
-  fit is not determined (fewer distinct x than D + 1), `status: "singular"` and no coefficients.
-  A `status`, when given, is `"converged"` (with the coefficients) or `"singular"`: any other word fails.
-
-The least-squares problem is min |V b - y| with the Vandermonde matrix V (row i: 1, x_i, ...,
-x_i^D). Solve it stably: QR or SVD of V with each column scaled to unit length, then divide b_k by
-the scale of column k (numpy.polyfit scales, but returns the highest power first).
-
-## Task 1
-Small fits (a line, an interpolating parabola, a noisy cubic) match GSL's `gsl_multifit_linear`.
-
-## Task 2
-NIST StRD sets (Norris, Pontius, Wampler1, Wampler4, Wampler5) match NIST's certified
-coefficients to the accuracy their conditioning allows: with S the column norms of V and kappa
-the 2-norm condition number of V with unit columns, |S (b - b*)|_inf / |S b*|_inf <= 10 m eps
-(kappa + kappa^2 tan theta), tan theta = |r| / |V b*| (the least-squares perturbation bound).
-
-## Task 3
-A fit with fewer distinct x than coefficients says `status: "singular"`.
-
-## Hints
-- Powers reversed (highest first) is the classic slip with numpy.polyfit.
-- Seed 001 built the normal equations V^T V b = V^T y from power sums: that squares kappa, and on
-  Wampler's sets costs digits.
-)";
+  exercise.task = task_text("polyfit");
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: the least-squares polynomial fit\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: the least-squares polynomial fit\");\n";
   exercise.stubs.octave = "  error('not implemented: the least-squares polynomial fit');\n";
