@@ -2,10 +2,13 @@
 """Runs `numlab exercise check` on one solution and checks the verdict it gives.
 
   expect_verdict.py NUMLAB reference EXERCISE COMMAND...   every check passes (exit 0, status pass)
-  expect_verdict.py NUMLAB mutant FILE.py                  the mutant is caught as its header says
-  expect_verdict.py NUMLAB summary MUTANT_DIR              the catch rate, overall and by exercise
+  expect_verdict.py NUMLAB mutant PATCH OUT_DIR            the mutant is caught as its header says
+  expect_verdict.py NUMLAB summary PATCH_DIR OUT_DIR       the catch rate, overall and by exercise
 
-A mutant is tests/exercises/mutants/EXERCISE/NAME.py. Its header names the bug and the verdict:
+A mutant is tests/exercises/mutants/EXERCISE/NAME.patch: a unified diff against the exercise's
+Python reference, applied (apply_mutant.py) into OUT_DIR/EXERCISE/NAME.py before the check runs;
+a patch that no longer applies fails, naming itself. The mutant's header names the bug and the
+verdict:
   # BUG: what is wrong (and, for a seed's error, which seed)
   # EXPECT-CHECK: part of the name of a check that must FAIL (not error)
   # EXPECT-MESSAGE: part of that check's message (one line each; all must appear)
@@ -14,6 +17,8 @@ import json
 import os
 import subprocess
 import sys
+
+from apply_mutant import make_mutant
 
 
 def run_check(numlab, exercise, command):
@@ -71,23 +76,35 @@ def mutant_exercise(path):
     return os.path.basename(os.path.dirname(os.path.abspath(path)))
 
 
-def expect_mutant(numlab, path):
+def mutant_from_patch(patch, out_dir):
+    """OUT_DIR/EXERCISE/NAME.py, made from mutants/EXERCISE/NAME.patch (exits if it does not apply)."""
+    exercise = os.path.basename(os.path.dirname(os.path.abspath(patch)))
+    name = os.path.splitext(os.path.basename(patch))[0] + ".py"
+    path = os.path.join(out_dir, exercise, name)
+    make_mutant(patch, path)
+    return path
+
+
+def expect_mutant(numlab, patch, out_dir):
+    path = mutant_from_patch(patch, out_dir)
     fields = header(path)
     _, results = run_check(numlab, mutant_exercise(path), [sys.executable, os.path.abspath(path)])
     test, why = caught(results, fields)
     if test is None:
-        sys.exit(f"{path} ({fields['BUG'][0]}) was not caught: {why}")
+        sys.exit(f"{patch} ({fields['BUG'][0]}) was not caught: {why}")
     print(f"caught by '{test['name']}':\n{test['message']}")
 
 
-def summary(numlab, folder):
+def summary(numlab, folder, out_dir):
     counts = {}
     for exercise in sorted(os.listdir(folder)):
         directory = os.path.join(folder, exercise)
+        if not os.path.isdir(directory):
+            continue
         for name in sorted(os.listdir(directory)):
-            if not name.endswith(".py"):
+            if not name.endswith(".patch"):
                 continue
-            path = os.path.join(directory, name)
+            path = mutant_from_patch(os.path.join(directory, name), out_dir)
             _, results = run_check(numlab, exercise, [sys.executable, path])
             test, why = caught(results, header(path))
             flagged = any(t["status"] == "fail" for t in results["tests"])
@@ -105,8 +122,8 @@ if __name__ == "__main__":
     if mode == "reference":
         expect_reference(numlab, sys.argv[3], sys.argv[4:])
     elif mode == "mutant":
-        expect_mutant(numlab, sys.argv[3])
+        expect_mutant(numlab, sys.argv[3], sys.argv[4])
     elif mode == "summary":
-        summary(numlab, sys.argv[3])
+        summary(numlab, sys.argv[3], sys.argv[4])
     else:
         sys.exit(f"unknown mode {mode}")
