@@ -21,7 +21,7 @@ namespace numlab::mechanisms {
 namespace {
 
 constexpr double not_computed = std::numeric_limits<double>::quiet_NaN();  // a figure left out
-constexpr int max_halvings = 8;          // a continuation step is halved at most this often
+constexpr int max_halvings = LinkageSweepOptions{}.max_halvings;  // a continuation step is halved at most this often
 constexpr double crank_walk_deg = 2.0;   // the walk from the reference pose to the sweep's start
 constexpr int slider_walk_steps = 50;
 constexpr double crank_limit_deg = 0.01; // assembly limits to this bracket
@@ -35,6 +35,12 @@ Eigen::VectorXd predicted(const LinkageModel& model, double at, const Eigen::Vec
   return velocity.allFinite() ? Eigen::VectorXd(q + velocity * (next - at)) : q;
 }
 
+}  // namespace
+
+// The types of the sweep's state between poses, in a named namespace: LinkageSweepStepper::State
+// holds them (an anonymous namespace's types may not be its fields).
+namespace detail {
+
 // The pose solves of a continuation: the fast path (linkage_fast_solver.hpp) where it applies, else
 // the generic solver; both solve in place. The prediction is the quadratic through the last solved
 // poses where there are three (branch_predictor.hpp: it carries the branch through singular poses),
@@ -42,7 +48,8 @@ Eigen::VectorXd predicted(const LinkageModel& model, double at, const Eigen::Vec
 // error allows has jumped to another branch and is not accepted.
 class PoseSolver {
  public:
-  PoseSolver(const LinkageSolver& solver, bool fast) : solver_(solver) {
+  PoseSolver(const LinkageSolver& solver, bool fast, int halving_limit = max_halvings)
+      : solver_(solver), halving_limit_(halving_limit) {
     if (fast && LinkageFastSolver::applies(solver.options())) fast_.emplace(solver);
     const Eigen::Index n = solver.model().unknown_count();
     history_.reset(n);
@@ -51,6 +58,7 @@ class PoseSolver {
     length_ = solver.size();
   }
   const LinkageSolver& solver() const { return solver_; }
+  int halving_limit() const { return halving_limit_; }  // how often a continuation step may be halved
   LinkageFastOutcome solve(double t, Eigen::VectorXd& q) {
     if (fast_) return fast_->solve(t, q);
     LinkageSolution solution = solver_.solve(t, q);
@@ -121,6 +129,7 @@ class PoseSolver {
 
  private:
   const LinkageSolver& solver_;
+  int halving_limit_;
   std::optional<LinkageFastSolver> fast_;
   detail::BranchPredictor history_;
   Eigen::VectorXd prediction_;
@@ -150,6 +159,14 @@ struct Stuck {
     return start == from && (failed_at - from) * (to - from) > 0.0 && std::abs(to - from) >= std::abs(failed_at - from);
   }
 };
+
+}  // namespace detail
+
+namespace {
+
+using detail::Jump;
+using detail::PoseSolver;
+using detail::Stuck;
 
 // From q at driver `from` to driver `to` (model units) in steps no longer than `longest`, each
 // solve started from the predictor; a step that fails, or lands on another branch, is halved. q
@@ -181,7 +198,7 @@ LinkageFastOutcome continue_in_place(PoseSolver& poses, double from, double to, 
       at = next;
       continue;
     }
-    if (halved == max_halvings) {
+    if (halved == poses.halving_limit()) {
       if (jumped) {
         outcome.outcome.status = Status::no_progress;
         outcome.outcome.reason = nonlinear::StopReason::no_progress;
@@ -377,7 +394,7 @@ LinkageLimit bisect_limit(PoseSolver& poses, double good, Eigen::VectorXd q, dou
 
 }  // namespace
 
-namespace {
+namespace detail {
 
 // The state of step 4 (the branch) between poses: per block, the side it last had where its side is
 // defined (a dyad on its meeting point has none).
@@ -386,6 +403,12 @@ struct BranchWatch {
   AtCrossing at_crossing = AtCrossing::smooth;
   std::vector<int> defined_at;  // per block, the sweep's pose where that side was read (-1: the reference)
 };
+
+}  // namespace detail
+
+namespace {
+
+using detail::BranchWatch;
 
 std::string crossing_words(const LinkageSolver& solver, const LinkageCrossing& c) {
   const LinkageModel& model = solver.model();
@@ -549,7 +572,7 @@ bool pose_verified(const LinkageSolver& solver, const LinkagePose& pose, double 
 
 }  // namespace
 
-namespace {
+namespace detail {
 
 // Where a sweep stands between poses: the last pose that assembled, and where the continuation
 // from it failed, if it did.
@@ -581,6 +604,12 @@ struct Continuation {
   }
 };
 
+}  // namespace detail
+
+namespace {
+
+using detail::Continuation;
+
 // 3. A change between assembling and not, from the pose before to this one, is a limit: bracketed
 // (from where the continuation got stuck, when it has that bracket) and named.
 void note_limit(Continuation& c, LinkageSweep& sweep, const LinkagePose& pose, double t) {
@@ -608,67 +637,146 @@ void note_jump(LinkageSweep& sweep, double user, const Jump& jump) {
 
 }  // namespace
 
-LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
-                           const LinkagePoseObserver& observer, AtCrossing at_crossing) {
+// What the stepper keeps between poses: the pose solves, where the continuation stands, the branch
+// watch, and the walk's pose at the start (the first pose).
+struct LinkageSweepStepper::State {
+  State(const LinkageSolver& solver, bool fast, int halving_limit, double longest, AtCrossing at_crossing)
+      : poses(solver, fast, halving_limit),
+        continuation{poses, longest, solver.reference(), solver.reference_driver(), {}},
+        watch{solver.reference_signature(), at_crossing, std::vector<int>(solver.blocks().size(), -1)},
+        shortest(shortest_length(solver.model())) {}
+  LinkagePose next_pose(LinkageSweep& sweep, double user, bool first);
+
+  PoseSolver poses;
+  Continuation continuation;
+  BranchWatch watch;
+  LinkageSolution at;
+  double shortest;
+};
+
+// 2. The pose at `user` from the one before, through sub-steps each from the predictor; a failed
+// pose is retried from the last good one by halving. Then its limit (3.), branch and check (4.).
+LinkagePose LinkageSweepStepper::State::next_pose(LinkageSweep& sweep, double user, bool first) {
+  const LinkageSolver& solver = poses.solver();
+  const LinkageModel& model = solver.model();
+  const double t = model.driver_from_user(user);
+  int halvings = 0;
+  Jump jump;
+  bool repeated = false;
+  LinkageSolution solution = first ? std::move(at) : continuation.solve(t, halvings, jump, repeated);
+  const detail::BranchGuess guess = [&, q = solution.q](double s) { return poses.guess(t, q, s); };
+  LinkagePose pose = make_pose(solver, user, t, std::move(solution), guess);
+  pose.step_halvings = halvings;
+  if (repeated) pose.not_tried_past = model.driver_to_user(continuation.stuck->failed_at);
+  pose.jumped = jump.distance > 0.0;
+  if (pose.jumped) note_jump(sweep, user, jump);
+  note_limit(continuation, sweep, pose, t);  // 3.
+  if (pose.outcome.status == Status::converged) {
+    // 4. The branch (compared with the reference pose across the walk for the first pose).
+    if (watch_branch(poses, watch, sweep, pose, t, !sweep.poses.empty())) {
+      pose = make_pose(solver, user, t, LinkageSolution{pose.q, pose.outcome, -1});  // the tangent's guess: J is regular past the crossing
+      poses.forget();
+    }
+    watch_tangency(solver, watch, sweep, pose, t);
+    if (!pose_verified(solver, pose, shortest)) sweep.closed_form_verified = false;
+    pose.branch_kept = sweep.branch_kept;
+    continuation.assembled(t, pose.q);
+  } else if (sweep.status == Status::converged) {
+    sweep.status = pose.outcome.status;
+  }
+  return pose;
+}
+
+LinkageSweepStepper::LinkageSweepStepper(const LinkageSolver& solver, AtCrossing at_crossing,
+                                         const LinkageSweepOptions& options)
+    : solver_(solver), at_crossing_(at_crossing), options_(options) {}
+
+LinkageSweepStepper::~LinkageSweepStepper() = default;
+
+void LinkageSweepStepper::start(double start, double stop, double step) {
   if (!std::isfinite(start) || !std::isfinite(stop) || !std::isfinite(step) || step == 0.0 ||
       (stop - start) * step < 0.0) {
     throw std::invalid_argument("the sweep's step must be finite, nonzero and point from start to stop");
   }
-  const LinkageModel& model = solver.model();
-  const std::size_t count = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
-  LinkageSweep sweep;
-  sweep.status = Status::converged;  // until a pose fails
-  // The fast path solves the poses, unless an observer traces them: --trace and --step follow the
-  // generic solver (the same poses, checked by tests/linkage_fast/).
-  PoseSolver poses(solver, !observer);
-  // 1. Walk from the reference pose to the start: the shorter way round for a crank.
-  const double reference = solver.reference_driver();
+  if (options_.max_halvings < 0 || options_.max_halvings > 60) {
+    throw std::invalid_argument("the sweep's max_halvings must be 0 ... 60");
+  }
+  const LinkageModel& model = solver_.model();
+  start_ = start;
+  step_ = step;
+  count_ = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
+  next_ = 0;
+  poses_ = 0;
+  sweep_ = LinkageSweep{};
+  sweep_.status = Status::converged;  // until a pose fails
+  status_ = Status::running;
+  active_ = true;
+  stopped_ = false;
+  // 1. Walk from the reference pose to the start: the shorter way round for a crank. The fast path
+  // solves the poses, unless an observer traces them.
+  const double reference = solver_.reference_driver();
   const double t_start = model.driver_from_user(start);
   double walk_to = t_start;
   if (model.crank_driven()) walk_to = reference + std::remainder(t_start - reference, 2.0 * std::acos(-1.0));
   const double longest = longest_sub_step(model, walk_to - reference, model.driver_from_user(start + step) - t_start);
-  Continuation continuation{poses, longest, solver.reference(), reference, {}};
+  state_ = std::make_unique<State>(solver_, observer_ == nullptr, options_.max_halvings, longest, at_crossing_);
+  State& state = *state_;
   int walk_halvings = 0;
   Jump walk_jump;
   bool unused = false;
-  const LinkageSolution at = continuation.solve(walk_to, walk_halvings, walk_jump, unused);
-  poses.relabel(walk_to, t_start);  // the walk's last poses predict the sweep's first (a sweep may start on a crossing)
-  if (converged(at)) continuation.assembled(t_start, at.q);
-  BranchWatch watch{solver.reference_signature(), at_crossing, std::vector<int>(solver.blocks().size(), -1)};
-  const double shortest = shortest_length(model);
-  // 2. Each pose from the one before, through sub-steps each from the predictor; a failed pose is
-  // retried from the last good one by halving.
-  for (std::size_t k = 0; k < count; ++k) {
-    const double user = start + static_cast<double>(k) * step;
-    const double t = model.driver_from_user(user);
-    int halvings = 0;
-    Jump jump;
-    bool repeated = false;
-    LinkageSolution solution = k == 0 ? at : continuation.solve(t, halvings, jump, repeated);
-    const detail::BranchGuess guess = [&, q = solution.q](double s) { return poses.guess(t, q, s); };
-    LinkagePose pose = make_pose(solver, user, t, std::move(solution), guess);
-    pose.step_halvings = halvings;
-    if (repeated) pose.not_tried_past = model.driver_to_user(continuation.stuck->failed_at);
-    pose.jumped = jump.distance > 0.0;
-    if (pose.jumped) note_jump(sweep, user, jump);
-    note_limit(continuation, sweep, pose, t);  // 3.
-    if (pose.outcome.status == Status::converged) {
-      // 4. The branch (compared with the reference pose across the walk for the first pose).
-      if (watch_branch(poses, watch, sweep, pose, t, !sweep.poses.empty())) {
-        pose = make_pose(solver, user, t, LinkageSolution{pose.q, pose.outcome, -1});  // the tangent's guess: J is regular past the crossing
-        poses.forget();
-      }
-      watch_tangency(solver, watch, sweep, pose, t);
-      if (!pose_verified(solver, pose, shortest)) sweep.closed_form_verified = false;
-      pose.branch_kept = sweep.branch_kept;
-      continuation.assembled(t, pose.q);
-    } else if (sweep.status == Status::converged) {
-      sweep.status = pose.outcome.status;
-    }
-    sweep.poses.push_back(std::move(pose));
-    if (observer) observer(sweep.poses.back());
+  state.at = state.continuation.solve(walk_to, walk_halvings, walk_jump, unused);
+  state.poses.relabel(walk_to, t_start);  // the walk's last poses predict the sweep's first (a sweep may start on a crossing)
+  if (converged(state.at)) state.continuation.assembled(t_start, state.at.q);
+  x_ = state.at.q;
+}
+
+bool LinkageSweepStepper::step() {
+  if (!running()) return false;
+  // 2.-4. The next requested pose.
+  const double user = start_ + static_cast<double>(next_) * step_;
+  sweep_.poses.push_back(state_->next_pose(sweep_, user, next_ == 0));
+  ++poses_;
+  x_ = sweep_.poses.back().q;
+  if (observer_ != nullptr && observer_->on_step(*this, sweep_.poses.back()) == StepControl::stop) {
+    sweep_.status = Status::running;  // stopped before a verdict
+    sweep_.stopped = stopped_ = true;
+    active_ = false;
+    return false;
   }
-  return sweep;
+  if (++next_ == count_) {  // the last pose: the verdict
+    status_ = sweep_.status;
+    active_ = false;
+  }
+  return active_;
+}
+
+LinkageSweep LinkageSweepStepper::solve(double start, double stop, double step) {
+  this->start(start, stop, step);
+  while (this->step()) {
+  }
+  return std::move(sweep_);
+}
+
+namespace {
+
+// A std::function observer (the command line's tracer) as the stepper's observer.
+class FunctionObserver final : public StepObserver<LinkageSweepStepper, LinkagePose> {
+ public:
+  explicit FunctionObserver(const LinkagePoseObserver& observer) : observer_(observer) {}
+  StepControl on_step(const LinkageSweepStepper&, const LinkagePose& pose) override { return observer_(pose); }
+
+ private:
+  const LinkagePoseObserver& observer_;
+};
+
+}  // namespace
+
+LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
+                           const LinkagePoseObserver& observer, AtCrossing at_crossing) {
+  LinkageSweepStepper stepper(solver, at_crossing);
+  FunctionObserver adapter(observer);
+  if (observer) stepper.set_observer(&adapter);
+  return stepper.solve(start, stop, step);
 }
 
 namespace {

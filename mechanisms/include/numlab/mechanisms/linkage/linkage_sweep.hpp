@@ -12,11 +12,13 @@
 
 #include <Eigen/Core>
 #include <functional>
-#include <string>
 #include <limits>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
+#include "numlab/solver.hpp"
 
 namespace numlab::mechanisms {
 
@@ -80,15 +82,74 @@ struct LinkageSweep {
   std::vector<LinkageCrossing> crossings;
   std::vector<std::string> jumps;          // a pose that left its branch: further from the prediction than allowed
   std::vector<LinkageLimit> limits;
+  bool stopped = false;  // the observer ended the sweep early
 };
 
-// Called with each pose as soon as it is made (for --trace and --step); may throw to stop the sweep.
-using LinkagePoseObserver = std::function<void(const LinkagePose&)>;
+struct LinkageSweepOptions {
+  int max_halvings = 8;  // a continuation sub-step is halved at most this often (0 ... 60)
+};
 
-// Solves the poses start, start+step, ..., stop (user units). Throws std::invalid_argument for a
-// step that is zero or not finite or points away from stop. Each pose is predicted by the quadratic
-// through the last solved poses (sub-steps of at most 2 degrees), which carries the sweep along the
-// smooth branch through a crossing; at_crossing = switch_branch takes the other branch there.
+// The sweep as a stepper (numlab/solver.hpp): the poses start, start+step, ..., stop (user units).
+// Each pose is predicted by the quadratic through the last solved poses (sub-steps of at most 2
+// degrees), which carries the sweep along the smooth branch through a crossing; at_crossing =
+// switch_branch takes the other branch there.
+//
+//  1. start(): walk from the reference pose to the start (the shorter way round for a crank).
+//  2. step(): the next requested pose from the one before, through sub-steps each from the
+//     predictor; a failed pose is retried from the last good one by halving;
+//  3. a change between assembling and not is a limit, bracketed by bisection;
+//  4. a converged pose's branch is watched (crossings, tangencies, jumps) and its closed form checked.
+//
+// The observer sees each pose as soon as it is made; StepControl::stop ends the sweep there (the
+// poses so far, stopped(), result().stopped, status running: no verdict). Without an observer at
+// start() the poses are solved on the fast path (linkage_fast_solver.hpp) where it applies; with
+// one (--trace, --step) by the generic solver: the same poses, checked by tests/linkage_fast/.
+class LinkageSweepStepper {
+ public:
+  explicit LinkageSweepStepper(const LinkageSolver& solver, AtCrossing at_crossing = AtCrossing::smooth,
+                               const LinkageSweepOptions& options = {});
+  explicit LinkageSweepStepper(const LinkageSolver&&, AtCrossing = AtCrossing::smooth,
+                               const LinkageSweepOptions& = {}) = delete;  // it keeps a reference to the solver
+  LinkageSweepStepper(const LinkageSweepStepper&) = delete;
+  LinkageSweepStepper& operator=(const LinkageSweepStepper&) = delete;
+  ~LinkageSweepStepper();
+  void set_observer(StepObserver<LinkageSweepStepper, LinkagePose>* observer) { observer_ = observer; }
+
+  // Throws std::invalid_argument for a step that is zero or not finite or points away from stop
+  // (or max_halvings outside 0 ... 60).
+  void start(double start, double stop, double step);
+  bool step();
+  LinkageSweep solve(double start, double stop, double step);  // the sweep, moved out of result()
+
+  bool running() const { return active_; }  // from start() until the last pose (or a stop)
+  Status status() const { return status_; }  // running until the last pose; then result().status
+  bool stopped() const { return stopped_; }
+  int iterations() const { return poses_; }  // requested poses made so far (the walk not counted)
+  const Eigen::VectorXd& x() const { return x_; }  // the last pose's q (after start(): the walk's)
+  const LinkageSweep& result() const { return sweep_; }
+
+ private:
+  struct State;  // the continuation between poses (linkage_sweep.cpp)
+  const LinkageSolver& solver_;
+  AtCrossing at_crossing_;
+  LinkageSweepOptions options_;
+  StepObserver<LinkageSweepStepper, LinkagePose>* observer_ = nullptr;
+  std::unique_ptr<State> state_;
+  LinkageSweep sweep_;
+  Status status_ = Status::running;  // no verdict before the last pose
+  bool active_ = false, stopped_ = false;
+  double start_ = 0.0, step_ = 0.0;
+  std::size_t count_ = 0, next_ = 0;
+  int poses_ = 0;
+  Eigen::VectorXd x_;
+};
+
+// Called with each pose as soon as it is made (for --trace and --step). StepControl::stop ends the
+// sweep there: the poses so far, stopped = true and status running (no verdict).
+using LinkagePoseObserver = std::function<StepControl(const LinkagePose&)>;
+
+// LinkageSweepStepper(solver, at_crossing).solve(start, stop, step), the observer (if any) attached
+// through an adapter: the fast path without one, as the stepper's.
 LinkageSweep linkage_sweep(const LinkageSolver& solver, double start, double stop, double step,
                            const LinkagePoseObserver& observer = {}, AtCrossing at_crossing = AtCrossing::smooth);
 
