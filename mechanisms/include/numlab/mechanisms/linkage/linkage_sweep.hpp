@@ -103,7 +103,7 @@ struct LinkageSweepOptions {
 // The observer sees each pose as soon as it is made; StepControl::stop ends the sweep there (the
 // poses so far, stopped(), result().stopped, status running: no verdict). Without an observer at
 // start() the poses are solved on the fast path (linkage_fast_solver.hpp) where it applies; with
-// one (--trace, --step) by the generic solver: the same poses, checked by tests/linkage_fast/.
+// one (--trace, --step) by the generic solver: the same poses, checked by tests/mechanisms/linkage/fast/.
 class LinkageSweepStepper {
  public:
   explicit LinkageSweepStepper(const LinkageSolver& solver, AtCrossing at_crossing = AtCrossing::smooth,

@@ -63,7 +63,7 @@ TEST_CASE("a sweep past a near-meeting of a dyad's two solutions keeps its branc
       INFO("--solver " << kind << (generic ? ", generic path" : ", fast path"));
       const LinkageSolver solver(model, {kind, "gepp", {}});
       const std::size_t block = p11_block(solver);
-      const LinkageSweep sweep = generic ? linkage_sweep(solver, 30.0, 55.0, 1.0, [](const LinkagePose&) {})
+      const LinkageSweep sweep = generic ? linkage_sweep(solver, 30.0, 55.0, 1.0, [](const LinkagePose&) { return numlab::StepControl::proceed; })
                                          : linkage_sweep(solver, 30.0, 55.0, 1.0);
       REQUIRE(sweep.status == Status::converged);
       CHECK(sweep.limits.empty());
@@ -99,7 +99,7 @@ TEST_CASE("the kite's genuine change point (Mustang at 43.15 deg) is still not a
     for (const bool generic : {true, false}) {
       INFO("--solver " << kind << (generic ? ", generic path" : ", fast path"));
       const LinkageSolver solver(model, {kind, "gepp", {}});
-      const LinkageSweep sweep = generic ? linkage_sweep(solver, 30.0, 55.0, 1.0, [](const LinkagePose&) {})
+      const LinkageSweep sweep = generic ? linkage_sweep(solver, 30.0, 55.0, 1.0, [](const LinkagePose&) { return numlab::StepControl::proceed; })
                                          : linkage_sweep(solver, 30.0, 55.0, 1.0);
       REQUIRE(sweep.status == Status::converged);
       CHECK(sweep.branch_kept);

@@ -85,7 +85,7 @@ TEST_CASE("the fast path solves every shipped model as the generic solvers do, p
       // Starting points: the generic sweep's poses (an observer keeps it on the generic path).
       const double reference = model.driver_to_user(solver.reference_driver());
       const LinkageSweep poses = linkage_sweep(solver, reference - half_turn, reference + half_turn, step_deg,
-                                               [](const LinkagePose&) {});
+                                               [](const LinkagePose&) { return numlab::StepControl::proceed; });
       int compared = 0, failures = 0;
       for (std::size_t k = 0; k + 1 < poses.poses.size(); ++k) {
         if (poses.poses[k].outcome.status != Status::converged) continue;
@@ -132,7 +132,7 @@ TEST_CASE("a sweep on the fast path reports what the generic sweep reports", "[l
       const LinkageSolver solver(model, options_for(kind));
       const double reference = model.driver_to_user(solver.reference_driver());
       const double from = reference - half_turn, to = reference + half_turn;
-      const LinkageSweep generic = linkage_sweep(solver, from, to, step_deg, [](const LinkagePose&) {});
+      const LinkageSweep generic = linkage_sweep(solver, from, to, step_deg, [](const LinkagePose&) { return numlab::StepControl::proceed; });
       const LinkageSweep fast = linkage_sweep(solver, from, to, step_deg);  // no observer: the fast path
       REQUIRE(fast.poses.size() == generic.poses.size());
       CHECK(fast.status == generic.status);

@@ -44,7 +44,7 @@ TEST_CASE("a slider-driven sweep from its reference pose reaches every pose", "[
     INFO("--solver " << kind);
     const LinkageSolver solver(model, {kind, "gepp", {}});
     for (const bool generic : {true, false}) {
-      const LinkageSweep sweep = generic ? linkage_sweep(solver, 2.9, 2.0, -0.1, [](const LinkagePose&) {})
+      const LinkageSweep sweep = generic ? linkage_sweep(solver, 2.9, 2.0, -0.1, [](const LinkagePose&) { return numlab::StepControl::proceed; })
                                          : linkage_sweep(solver, 2.9, 2.0, -0.1);
       REQUIRE(sweep.poses.size() == 10);
       CHECK(sweep.status == Status::converged);
