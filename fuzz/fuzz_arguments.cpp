@@ -1,4 +1,4 @@
-// libFuzzer target: the command line's number arguments (labs/cli/argument_parsing). The first byte
+// libFuzzer target: the command line's number arguments (labs/parsing/argument_parsing). The first byte
 // picks the parser (its value modulo 4: 0 --sweep, 1 --x0, 2 --generate, 3 --crank); the rest is
 // the argument's text. The seeds in corpus/arguments/ start with the digits '0' ... '3'.
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/argument_parsing.hpp"
+#include "parsing/argument_parsing.hpp"
 #include "fuzz_target.hpp"
 
 namespace {

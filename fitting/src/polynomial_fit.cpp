@@ -151,6 +151,7 @@ void PolynomialFitter::start(const Eigen::VectorXd& x, const Eigen::VectorXd& y,
   steps_ = 0;
   status_ = Status::running;
   running_ = true;
+  stopped_ = false;
 }
 
 bool PolynomialFitter::step() {
@@ -162,7 +163,10 @@ bool PolynomialFitter::step() {
     case FitStage::finish_fit: finish_fit(); break;
   }
   ++steps_;
-  if (observer_ != nullptr) observer_->on_step(*this, {stage});
+  if (observer_ != nullptr && observer_->on_step(*this, {stage}) == StepControl::stop && running_) {
+    running_ = false;  // the observer ended the run: no verdict
+    stopped_ = true;
+  }
   return running_;
 }
 

@@ -13,11 +13,11 @@
 #include "bench/bench_jansen.hpp"
 #include "bench/bench_linear.hpp"
 #include "bench/bench_mustang.hpp"
-#include "cli/data_dir.hpp"
+#include "methods/data_dir.hpp"
 #include "output/chart.hpp"
 #include "output/fit_charts.hpp"
-#include "lessons/fit_degree_sweep.hpp"
-#include "commands/linear_methods.hpp"
+#include "numlab/fitting/degree_sweep.hpp"
+#include "methods/linear_methods.hpp"
 #include "numlab/fitting/data_set.hpp"
 #include "numlab/linalg/measures.hpp"
 #include "numlab/linalg/matrix_generators.hpp"
@@ -169,7 +169,7 @@ struct AllCharts {
 };
 
 // 1. Every file name is checked before any measuring starts.
-AllCharts checked_charts(const CommonOptions& common, const std::string& chart) {
+AllCharts checked_charts(const BenchOptions& common, const std::string& chart) {
   const AllCharts charts{chart_files(chart.empty() ? common.out_dir + "/work-precision.svg" : chart),
                          chart_files(common.out_dir + "/bench-linear.svg"), chart_files(common.out_dir + "/bench-seidel.svg"),
                          chart_files(common.out_dir + "/bench-fit.svg"),
@@ -193,7 +193,7 @@ struct AllMeasurements {
   std::vector<BenchRow> linear;
   std::vector<SeidelRow> seidel;
   std::vector<FitBenchRow> fits;
-  std::vector<DegreeSweepRow> sweep;
+  std::vector<fitting::DegreeSweepRow> sweep;
 };
 
 // 2. Measure: warm-up, repeated runs, medians (timing.hpp).
@@ -287,7 +287,7 @@ void print_all_text(const AllCharts& charts, const AllMeasurements& m, bool quic
 
 }  // namespace
 
-int run_bench_all(const CommonOptions& common, const std::string& chart, bool quick) {
+int run_bench_all(const BenchOptions& common, const std::string& chart, bool quick) {
   const AllCharts charts = checked_charts(common, chart);
   const fitting::DataSet wampler = fitting::read_nist_data(nist_data_dir() + "/Wampler4.dat");
   const AllMeasurements measured = measure_all(wampler, quick);

@@ -8,11 +8,13 @@
 
 #include <string>
 
-#include "cli/cli_common.hpp"
+#include "bench/bench_options.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
 
 namespace numlab::cli {
 
 // `chart` names the work-precision chart (default OUT/work-precision.svg); the others go to OUT/.
-int run_bench_all(const CommonOptions& common, const std::string& chart, bool quick);
+int run_bench_all(const BenchOptions& common, const std::string& chart, bool quick);
 
 }  // namespace numlab::cli

@@ -158,7 +158,7 @@ void print_text(const BasinsMeasurement& m) {
 
 }  // namespace
 
-int run_basins_bench(const CommonOptions& common, bool quick) {
+int run_basins_bench(const BenchOptions& common, bool quick) {
   BasinsMeasurement m;
   m.cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   m.side = quick ? 100 : 300;

@@ -5,11 +5,13 @@
 // time of a 1000 x 1000 map on every core. Medians of repeated in-process runs; the runs being
 // compared alternate, so that a ratio comes from one run of the program.
 
-#include "cli/cli_common.hpp"
+#include "bench/bench_options.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
 
 namespace numlab::cli {
 
 // `numlab bench basins [--format json] [--quick]`.
-int run_basins_bench(const CommonOptions& common, bool quick);
+int run_basins_bench(const BenchOptions& common, bool quick);
 
 }  // namespace numlab::cli

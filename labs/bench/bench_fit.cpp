@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/timing.hpp"
-#include "cli/data_dir.hpp"
+#include "methods/data_dir.hpp"
 #include "output/chart.hpp"
 #include "output/fit_charts.hpp"
 #include "output/table.hpp"
@@ -16,10 +16,10 @@ namespace numlab::cli {
 
 std::vector<FitBenchRow> bench_fit(const std::string& data_name, const fitting::DataSet& data, int max_degree,
                                    bool quick) {
-  const std::vector<DegreeSweepRow> sweep = fit_degree_sweep(data.x, data.y, max_degree);
+  const std::vector<fitting::DegreeSweepRow> sweep = fitting::fit_degree_sweep(data.x, data.y, max_degree);
   std::vector<FitBenchRow> rows;
   const TimingPlan plan = quick ? TimingPlan{3, 5, 0.0} : TimingPlan{5, 200, 0.02};
-  for (const DegreeSweepRow& row : sweep) {
+  for (const fitting::DegreeSweepRow& row : sweep) {
     fitting::FitOptions options;
     options.method = fitting::fit_method_from_string(row.method);
     options.degree = row.degree;
@@ -34,7 +34,7 @@ void print_fit_digits(std::ostream& out, const std::vector<FitBenchRow>& rows) {
   for (std::size_t first = 0; first + 3 < rows.size(); first += 4) {
     std::vector<std::string> cells = {std::to_string(rows[first].sweep.degree)};
     for (std::size_t m = 0; m < 4; ++m) {
-      const DegreeSweepRow& row = rows[first + m].sweep;
+      const fitting::DegreeSweepRow& row = rows[first + m].sweep;
       cells.push_back(std::isfinite(row.residual_sd) ? fmt::format("{:.1f}", row.digits) : std::string(to_string(row.status)));
     }
     digits.add_row(cells);
@@ -42,12 +42,12 @@ void print_fit_digits(std::ostream& out, const std::vector<FitBenchRow>& rows) {
   digits.print(out);
 }
 
-int run_bench_fit(const CommonOptions& common, const std::string& chart, bool quick) {
+int run_bench_fit(const BenchOptions& common, const std::string& chart, bool quick) {
   const ChartFiles files = chart_files(chart.empty() ? common.out_dir + "/bench-fit.svg" : chart);
   check_outputs(planned_files(files, chart.empty() ? "bench fit's chart" : "--chart"), {});
   const fitting::DataSet wampler = fitting::read_nist_data(nist_data_dir() + "/Wampler4.dat");
   const std::vector<FitBenchRow> rows = bench_fit("Wampler4", wampler, 12, quick);
-  std::vector<DegreeSweepRow> sweep;
+  std::vector<fitting::DegreeSweepRow> sweep;
   for (const FitBenchRow& row : rows) sweep.push_back(row.sweep);
   draw_degree_sweep_chart(files, "NIST Wampler4: digits and residual against degree", sweep);
 

@@ -7,14 +7,16 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_common.hpp"
-#include "lessons/fit_degree_sweep.hpp"
+#include "bench/bench_options.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
+#include "numlab/fitting/degree_sweep.hpp"
 #include "numlab/fitting/data_set.hpp"
 
 namespace numlab::cli {
 
 struct FitBenchRow {
-  DegreeSweepRow sweep;
+  fitting::DegreeSweepRow sweep;
   std::string data;
   double time_s;  // median per fit
 };
@@ -28,6 +30,6 @@ void print_fit_digits(std::ostream& out, const std::vector<FitBenchRow>& rows);
 
 // `numlab bench fit`: NIST Wampler4 (found by nist_data_dir()), the table, and OUT/bench-fit.svg
 // (or `chart`) with its CSV and script.
-int run_bench_fit(const CommonOptions& common, const std::string& chart, bool quick);
+int run_bench_fit(const BenchOptions& common, const std::string& chart, bool quick);
 
 }  // namespace numlab::cli

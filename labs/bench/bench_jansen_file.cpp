@@ -6,7 +6,7 @@
 
 #include "bench/bench_jansen.hpp"
 #include "bench/timing.hpp"
-#include "cli/data_dir.hpp"
+#include "methods/data_dir.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"

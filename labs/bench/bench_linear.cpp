@@ -152,41 +152,11 @@ std::vector<BenchRow> bench_linear(const std::vector<int>& sizes, bool quick) {
   return rows;
 }
 
-BenchCommand::BenchCommand(CLI::App& app) {
-  command_ = app.add_subcommand("bench", "Measure speed: median of repeated in-process runs, as ratios");
-  command_->add_option("what", what_,
-                       "What to measure: all (default), linear, jansen, mustang, fit, basins, robustness or linkage-scaling")
-      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang", "fit", "basins", "robustness", "linkage-scaling"}));
-  command_->add_option("--chart", chart_,
-                       "Main chart (.svg or .png); default OUT/work-precision.svg (all) or OUT/bench-linear.svg");
-  command_->add_option("--sizes", sizes_, "Sizes n, comma-separated")->delimiter(',')->check(CLI::Range(1, 4096));
-  command_->add_flag("--quick", quick_, "Fewer repetitions (a smoke run, not a measurement)");
-  add_common_options(*command_, common_);
-}
-
-int BenchCommand::run() const {
-  // Every flag checked against what is measured, and every file named, before any measuring.
-  const CommonOptions common = checked_common_options(common_, "bench " + what_);
-  require_applies(given(*command_, "--chart"), what_ == "all" || what_ == "linear" || what_ == "fit", "--chart",
-                  "bench all, bench linear and bench fit");
-  require_applies(given(*command_, "--sizes"), what_ == "linear", "--sizes", "bench linear");
-  // Newton stops on ||f||_inf <= --tol: at 0 rounding never lets it stop, so there is nothing to time.
-  if (common.tolerance && *common.tolerance == 0.0) {
-    throw std::invalid_argument("--tol 0: bench " + what_ +
-                                " times Newton to a residual tolerance, which must be above 0 (e.g. --tol 1e-10)");
-  }
-  const std::string chart = output_path(common, chart_);
-  if (what_ == "all") return run_bench_all(common, chart, quick_);
-  if (what_ == "jansen") return run_jansen(common);
-  if (what_ == "mustang") return run_mustang_bench(common, quick_);
-  if (what_ == "fit") return run_bench_fit(common, chart, quick_);
-  if (what_ == "basins") return run_basins_bench(common, quick_);
-  if (what_ == "robustness") return run_bench_robustness(common, quick_);
-  if (what_ == "linkage-scaling") return run_linkage_scaling_bench(common, quick_);
+int run_linear_bench(const BenchOptions& common, const std::string& chart, const std::vector<int>& sizes, bool quick) {
   const ChartFiles files = chart_files(chart.empty() ? common.out_dir + "/bench-linear.svg" : chart);
   check_outputs(planned_files(files, chart.empty() ? "bench linear's chart" : "--chart"), {});
-  const std::vector<BenchRow> rows = bench_linear(sizes_, quick_);
-  draw_linear_chart(files, rows, sizes_);
+  const std::vector<BenchRow> rows = bench_linear(sizes, quick);
+  draw_linear_chart(files, rows, sizes);
 
   if (common.format == Format::json) {
     nlohmann::ordered_json out = {{"benchmark", "linear"}, {"chart", files.chart}, {"rows", nlohmann::ordered_json::array()}};
@@ -207,16 +177,16 @@ int BenchCommand::run() const {
   } else {
     std::cout << "Median time per solve (diagonally dominant A, b = A * ones), and the ratio to GSL LU\n"
               << "(below 1 is faster than GSL). Gauss-Seidel runs to tolerance 1e-9; '-' = not measured.\n\n";
-    linear_bench_table(rows, sizes_).print(std::cout);
+    linear_bench_table(rows, sizes).print(std::cout);
     std::cout << "\nChart: " << files.chart << " (data " << files.data << ", script " << files.script << ")\n";
   }
   return exit_success;
 }
 
-int BenchCommand::run_jansen(const CommonOptions& common) const {
+int run_jansen_bench(const BenchOptions& common, bool quick) {
   const double tolerance = common.tolerance.value_or(1e-10);
-  auto rows = bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick_);
-  const auto file_rows = bench_jansen_file(tolerance, quick_);
+  auto rows = bench_jansen(mechanisms::JansenModel::eight_equations, tolerance, quick);
+  const auto file_rows = bench_jansen_file(tolerance, quick);
   rows.insert(rows.end(), file_rows.begin(), file_rows.end());
   if (common.format == Format::json) {
     nlohmann::ordered_json out = {{"benchmark", "jansen"}, {"rows", nlohmann::ordered_json::array()}};

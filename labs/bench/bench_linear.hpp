@@ -2,12 +2,11 @@
 // `numlab bench linear` (and `numlab bench jansen`, see bench_jansen.hpp): median time per solve for GEPP, GSL LU, Eigen LU and Gauss-Seidel
 // against n, with ratios to GSL LU and a log-log chart with an n^3 guide.
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
 #include "output/chart.hpp"
-#include "cli/cli_common.hpp"
+#include "bench/bench_options.hpp"
 #include "output/table.hpp"
 
 namespace numlab::cli {
@@ -28,20 +27,9 @@ Table linear_bench_table(const std::vector<BenchRow>& rows, const std::vector<in
 // Time per solve against n, log-log, with an n^3 guide; CSV and gnuplot script beside it.
 void draw_linear_chart(const ChartFiles& files, const std::vector<BenchRow>& rows, const std::vector<int>& sizes);
 
-class BenchCommand {
- public:
-  explicit BenchCommand(CLI::App& app);
-  bool selected() const { return command_->parsed(); }
-  int run() const;
-
- private:
-  int run_jansen(const CommonOptions& common) const;
-  CLI::App* command_;
-  CommonOptions common_;
-  std::string what_ = "all";
-  std::string chart_;
-  std::vector<int> sizes_ = {2, 8, 64, 256, 512, 1024};
-  bool quick_ = false;
-};
+// numlab bench linear: the table (or JSON, CSV) and the chart. Returns the exit code.
+int run_linear_bench(const BenchOptions& options, const std::string& chart, const std::vector<int>& sizes, bool quick);
+// numlab bench jansen: the seeds' models and the description file, every solver.
+int run_jansen_bench(const BenchOptions& options, bool quick);
 
 }  // namespace numlab::cli

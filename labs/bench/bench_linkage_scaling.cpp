@@ -39,7 +39,7 @@ std::vector<LinkageScalingRow> bench_linkage_scaling(bool quick) {
   return rows;
 }
 
-int run_linkage_scaling_bench(const CommonOptions& common, bool quick) {
+int run_linkage_scaling_bench(const BenchOptions& common, bool quick) {
   const std::vector<LinkageScalingRow> rows = bench_linkage_scaling(quick);
   const double base = rows.front().per_pose_s;
   if (common.format == Format::json) {

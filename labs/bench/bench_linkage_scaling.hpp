@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_common.hpp"
+#include "bench/bench_options.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
 
 namespace numlab::cli {
 
@@ -25,6 +27,6 @@ struct LinkageScalingRow {
 std::vector<LinkageScalingRow> bench_linkage_scaling(bool quick);
 
 // `numlab bench linkage-scaling [--format json|csv] [--quick]`.
-int run_linkage_scaling_bench(const CommonOptions& common, bool quick);
+int run_linkage_scaling_bench(const BenchOptions& common, bool quick);
 
 }  // namespace numlab::cli

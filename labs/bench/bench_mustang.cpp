@@ -83,7 +83,7 @@ void print_mustang_bench(std::ostream& out, const std::vector<MustangBenchRow>& 
   table.print(out);
 }
 
-int run_mustang_bench(const CommonOptions& common, bool quick) {
+int run_mustang_bench(const BenchOptions& common, bool quick) {
   const auto rows = bench_mustang(common.tolerance.value_or(1e-10), quick);
   if (common.format == Format::json) {
     nlohmann::ordered_json out = {{"benchmark", "mustang"}, {"rows", nlohmann::ordered_json::array()}};

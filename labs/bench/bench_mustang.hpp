@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_common.hpp"
+#include "bench/bench_options.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
 
 namespace numlab::cli {
 
@@ -24,6 +26,6 @@ std::vector<MustangBenchRow> bench_mustang(double tolerance, bool quick);
 void print_mustang_bench(std::ostream& out, const std::vector<MustangBenchRow>& rows);
 
 // `numlab bench mustang [--format json] [--tol T] [--quick]`.
-int run_mustang_bench(const CommonOptions& common, bool quick);
+int run_mustang_bench(const BenchOptions& common, bool quick);
 
 }  // namespace numlab::cli

@@ -194,7 +194,7 @@ void write_robustness_files(const RobustnessFiles& files, const RobustnessResult
   draw_profile_chart(files.data_chart, data_profile_curves(results));
 }
 
-int run_bench_robustness(const CommonOptions& common, bool quick) {
+int run_bench_robustness(const BenchOptions& common, bool quick) {
   const RobustnessFiles files = robustness_files(common.out_dir);
   check_outputs(planned_files(files), {});
   const RobustnessResults results = run_robustness(nonlinear::minpack_cases(), quick ? 1 : 5, show_progress);

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "bench/robustness_runs.hpp"
-#include "cli/cli_common.hpp"
+#include "bench/bench_options.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
 #include "output/profile_charts.hpp"
 #include "output/table.hpp"
 
@@ -47,6 +49,6 @@ std::vector<PlannedFile> planned_files(const RobustnessFiles& files);
 // Writes the tables (each whole or not at all) and draws the charts.
 void write_robustness_files(const RobustnessFiles& files, const RobustnessResults& results);
 
-int run_bench_robustness(const CommonOptions& common, bool quick);
+int run_bench_robustness(const BenchOptions& common, bool quick);
 
 }  // namespace numlab::cli

@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "bench/timing.hpp"
-#include "commands/nonlinear_methods.hpp"
+#include "methods/nonlinear_methods.hpp"
 #include "numlab/nonlinear/block_order.hpp"
 #include "numlab/nonlinear/dogleg.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"

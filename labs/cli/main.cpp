@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "bench/bench_linear.hpp"
+#include "commands/bench_command.hpp"
 #include "cli/build_info.hpp"
-#include "cli/cli_common.hpp"
+#include "commands/common_options.hpp"
 #include "commands/basins_command.hpp"
 #include "commands/exercise_command.hpp"
 #include "commands/fit_command.hpp"
@@ -223,9 +223,6 @@ int main(int argc, char** argv) {
     if (basins.selected()) return basins.run();
     if (models.selected()) return models.run();
     return run_main_job();
-  } catch (const StoppedByUser& stopped) {
-    std::cerr << "numlab: " << stopped.what() << '\n';
-    return exit_method_failed;
   } catch (const std::exception& error) {
     return bad_input(error.what());
   }

@@ -11,7 +11,7 @@
 #include "basins/basin_chart.hpp"
 #include "basins/basin_run.hpp"
 #include "basins/basin_sentences.hpp"
-#include "cli/argument_parsing.hpp"
+#include "parsing/argument_parsing.hpp"
 #include "numlab/printable_text.hpp"
 #include "output/table.hpp"
 

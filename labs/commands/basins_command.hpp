@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "cli/cli_common.hpp"
+#include "commands/common_options.hpp"
 
 namespace numlab::cli {
 

@@ -9,7 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "cli/cli_common.hpp"
+#include "commands/common_options.hpp"
+#include "output/step_pause.hpp"
 #include "numlab/mechanisms/sweep_observer.hpp"
 #include "output/table.hpp"
 
@@ -18,9 +19,10 @@ namespace numlab::cli {
 template <typename Sweep>
 class CrankSweepTracer final : public mechanisms::SweepRecorder<Sweep> {
  public:
-  CrankSweepTracer(std::ostream* rows, bool step) : rows_(rows), step_(step) {}
+  CrankSweepTracer(std::ostream* rows, StepPause* pause) : rows_(rows), pause_(pause) {}
 
-  void on_step(const Sweep& sweep, const mechanisms::SweepPoseRecord& record) override {
+  StepControl on_step(const Sweep& sweep, const mechanisms::SweepPoseRecord& record) override {
+    if (pause_ != nullptr && pause_->stopped()) return StepControl::stop;
     mechanisms::SweepRecorder<Sweep>::on_step(sweep, record);
     if (rows_ != nullptr) {
       if (this->attempts().size() == 1) {
@@ -31,12 +33,12 @@ class CrankSweepTracer final : public mechanisms::SweepRecorder<Sweep> {
                             record.outcome.iterations, scientific(record.outcome.residual_norm),
                             to_string(record.outcome.status), record.accepted ? "yes" : "no");
     }
-    pause_if_stepping(step_);
+    return pause_ != nullptr ? pause_->after_step() : StepControl::proceed;
   }
 
  private:
   std::ostream* rows_;
-  bool step_;
+  StepPause* pause_;
 };
 
 // One attempt as JSON; `extra` (e.g. the Mustang's condition and margin) goes before "accepted".

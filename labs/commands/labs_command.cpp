@@ -48,13 +48,12 @@ int run_lab(const std::string& name, bool step, const std::string& out_dir) {
     std::cout << fmt::format("numlab lab {}: {}\n", lab.name, lab.summary);
     if (step && isatty(STDIN_FILENO) != 0) std::cout << "(--step: Enter after each step goes on; q, Enter stops)\n";
     LabSession session(std::cout, step, out_dir + "/lab-" + lab.name, lab.name, lab.summary);
-    int exit_code = exit_method_failed;
-    try {
-      exit_code = lab.run(session);
-    } catch (const StoppedByUser&) {
-      // q at a pause: the report keeps the steps that ran.
+    int exit_code = lab.run(session);
+    if (session.stopped()) {
+      // q at a pause: the lab returned there; the report keeps the steps that ran.
       session.say(fmt::format("Stopped with q after step {}: the steps above are the ones that ran.",
                               session.steps_taken()));
+      exit_code = exit_method_failed;
     }
     std::cout << "Report: " << session.finish() << " (steps, tables and figures in one page)\n";
     return exit_code;

@@ -1,4 +1,5 @@
 #include "commands/linkage_command.hpp"
+#include "output/step_pause.hpp"
 
 #include <fmt/format.h>
 
@@ -10,9 +11,9 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "cli/argument_parsing.hpp"
-#include "cli/data_dir.hpp"
-#include "commands/linkage_report.hpp"
+#include "parsing/argument_parsing.hpp"
+#include "methods/data_dir.hpp"
+#include "output/linkage_report.hpp"
 #include "numlab/mechanisms/linkage/linkage_authoring_checks.hpp"
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
 #include "numlab/nonlinear/jacobian_check.hpp"
@@ -47,8 +48,9 @@ namespace {
 // --trace and --step: one row per pose on stderr as it is solved, then a pause.
 class PoseTracer {
  public:
-  PoseTracer(const LinkageModel& model, bool print, bool step) : model_(model), print_(print), step_(step) {}
-  void operator()(const LinkagePose& pose) {
+  PoseTracer(const LinkageModel& model, bool print, StepPause& pause) : model_(model), print_(print), pause_(pause) {}
+  StepControl operator()(const LinkagePose& pose) {
+    if (pause_.stopped()) return StepControl::stop;
     rows_.push_back(pose_trace_json(pose));
     if (print_) {
       if (rows_.size() == 1) {
@@ -59,13 +61,14 @@ class PoseTracer {
                                scientific(pose.outcome.residual_norm), scientific(pose.condition),
                                to_string(pose.outcome.status));
     }
-    pause_if_stepping(step_);
+    return pause_.after_step();
   }
   const nlohmann::ordered_json& rows() const { return rows_; }
 
  private:
   const LinkageModel& model_;
-  bool print_, step_;
+  bool print_;
+  StepPause& pause_;
   nlohmann::ordered_json rows_ = nlohmann::ordered_json::array();
 };
 
@@ -167,20 +170,17 @@ int run_linkage(const LinkageRun& run) {
                                        : parse_degree_range(run.sweep, "--sweep");
 
   // 2. The sweep, traced and paused as asked; the time leaves out the pauses.
-  PoseTracer tracer(model, run.common.trace && (run.common.step || run.common.format != Format::json), run.common.step);
-  const double paused_before = paused_seconds();
+  StepPause pause(run.common.step);
+  PoseTracer tracer(model, run.common.trace && (run.common.step || run.common.format != Format::json), pause);
   const auto begin = std::chrono::steady_clock::now();
-  std::optional<LinkageSweep> swept;
-  try {
-    swept = linkage_sweep(solver, range.start, range.stop, range.step,
-                          run.common.trace ? LinkagePoseObserver(std::ref(tracer)) : LinkagePoseObserver(),
-                          run.switch_at_crossing ? AtCrossing::switch_branch : AtCrossing::smooth);
-  } catch (const StoppedByUser&) {
+  const LinkageSweep sweep = linkage_sweep(solver, range.start, range.stop, range.step,
+                                           run.common.trace ? LinkagePoseObserver(std::ref(tracer)) : LinkagePoseObserver(),
+                                           run.switch_at_crossing ? AtCrossing::switch_branch : AtCrossing::smooth);
+  if (sweep.stopped) {
     return report_stopped(run.common, {{"mechanism", model.description().name}, {"solver", run.solver}}, tracer.rows());
   }
-  const LinkageSweep& sweep = *swept;
-  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
-                        (paused_seconds() - paused_before);
+  const double time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() - pause.seconds_waited();
 
   // 3. The checks that read the sweep, the files, then the report.
   LinkageReport report{model, solver, sweep, time_s, {}, std::nullopt, Status::converged, std::move(warnings)};

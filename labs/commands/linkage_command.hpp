@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "cli/cli_common.hpp"
+#include "commands/common_options.hpp"
 
 namespace numlab::cli {
 

@@ -14,7 +14,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
-#include "cli/argument_parsing.hpp"
+#include "parsing/argument_parsing.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "scenes/jansen_scene.hpp"
@@ -22,6 +22,7 @@
 #include "commands/mustang_command.hpp"
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
 #include "numlab/printable_text.hpp"
+#include "commands/crank_sweep_csv.hpp"
 #include "commands/crank_sweep_tracer.hpp"
 #include "output/table.hpp"
 
@@ -43,20 +44,6 @@ double foot_speed(JansenModel model, const mechanisms::JansenPose& pose) {
                                          Eigen::VectorXd(mechanisms::JansenClosure::seed_estimates()));
   const auto rates = leg.rates(pose.crank_deg * std::numbers::pi / 180.0, mechanisms::JansenAngles(eight));
   return rates.status == Status::converged ? rates.foot_speed : std::numeric_limits<double>::quiet_NaN();
-}
-
-void print_csv(std::ostream& out, JansenModel model, const mechanisms::JansenSweep& sweep) {
-  out << "crank_deg";
-  for (const std::string& name : mechanisms::jansen_angle_names(model)) out << ',' << name;
-  for (std::string_view joint : mechanisms::jansen_joint_names) out << ",x_" << joint << ",y_" << joint;
-  out << ",iterations,residual_inf,status,foot_speed\n";  // docs/cli.md's columns, then ours
-  for (const auto& pose : sweep.poses) {
-    out << fmt::format("{:.10g}", pose.crank_deg);
-    for (double angle : pose.angles) out << fmt::format(",{:.17g}", angle);
-    for (const auto& joint : pose.joints) out << fmt::format(",{:.17g},{:.17g}", joint.x(), joint.y());
-    out << fmt::format(",{},{:.6g},{},{:.10g}\n", pose.outcome.iterations, pose.outcome.residual_norm,
-                       to_string(pose.outcome.status), foot_speed(model, pose));
-  }
 }
 
 nlohmann::ordered_json json_of(const std::string& name, const std::string& solver, JansenModel model,
@@ -195,7 +182,8 @@ void print_jansen_report(const CommonOptions& common, const std::string& name, c
   if (common.format == Format::json) {
     std::cout << json_of(name, solver, model, sweep, common.trace ? &tracer : nullptr, time_s).dump(2) << '\n';
   } else if (common.format == Format::csv) {
-    print_csv(std::cout, model, sweep);
+    print_crank_sweep_csv(std::cout, sweep.poses, mechanisms::jansen_angle_names(model), mechanisms::jansen_joint_names,
+                          "foot_speed", 10, [&](const mechanisms::JansenPose& pose) { return foot_speed(model, pose); });
   } else {
     print_text(std::cout, name, solver, model, sweep, time_s);
   }
@@ -215,13 +203,11 @@ int MechanismCommand::run() const {
   const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : parse_sweep(sweep_);
   if (!beest_.empty()) require_full_turn(range);
   const OutputPaths paths = checked_outputs(common, file);
-  // 2. Dispatch: a description file, the Mustang or the Jansen leg.
-  if (from_file) return solve_file(common, file, paths);
-  if (name_ == "mustang") {
-    if (!beest_.empty()) throw std::invalid_argument("--beest draws the Jansen leg's beest, not the mustang");
-    return run_mustang({range.start, range.stop, range.step, solver_, linear_, common, paths.svg, paths.animate});
-  }
-  return sweep_jansen(common, range, paths);
+  // 2. One dispatch: every linkage is swept through the same interface.
+  const SweepLinkage sweep = from_file ? &MechanismCommand::sweep_file
+                             : name_ == "mustang" ? &MechanismCommand::sweep_mustang
+                                                  : &MechanismCommand::sweep_jansen;
+  return (this->*sweep)(common, range, paths, file);
 }
 
 // The description file NAME stands for; empty for the built-in jansen, jansen10 and mustang.
@@ -283,8 +269,9 @@ MechanismCommand::OutputPaths MechanismCommand::checked_outputs(const CommonOpti
   return paths;
 }
 
-// A description file or shipped model, solved by the linkage command.
-int MechanismCommand::solve_file(const CommonOptions& common, const std::string& file, const OutputPaths& paths) const {
+// A description file or shipped model, solved by the linkage command (which reads --crank or --sweep itself).
+int MechanismCommand::sweep_file(const CommonOptions& common, const SweepRange&, const OutputPaths& paths,
+                                 const std::string& file) const {
   LinkageRun run;
   run.file = file;
   run.driver = crank_;
@@ -302,8 +289,16 @@ int MechanismCommand::solve_file(const CommonOptions& common, const std::string&
   return run_linkage(run);
 }
 
+// Seed 003's Mustang roof linkage: sweep, write the files, print the report.
+int MechanismCommand::sweep_mustang(const CommonOptions& common, const SweepRange& range, const OutputPaths& paths,
+                                    const std::string&) const {
+  if (!beest_.empty()) throw std::invalid_argument("--beest draws the Jansen leg's beest, not the mustang");
+  return run_mustang({range.start, range.stop, range.step, solver_, linear_, common, paths.svg, paths.animate});
+}
+
 // The Jansen leg (8 or 10 equations): sweep, write the files, print the report.
-int MechanismCommand::sweep_jansen(const CommonOptions& common, const SweepRange& range, const OutputPaths& paths) const {
+int MechanismCommand::sweep_jansen(const CommonOptions& common, const SweepRange& range, const OutputPaths& paths,
+                                   const std::string&) const {
   const JansenModel model = name_ == "jansen" ? JansenModel::eight_equations : JansenModel::ten_equations;
 
   nonlinear::NewtonOptions options;
@@ -312,21 +307,18 @@ int MechanismCommand::sweep_jansen(const CommonOptions& common, const SweepRange
   const auto solver = mechanisms::make_jansen_solver(model, solver_, linear_, options);
   // --trace: every pose attempt, printed as it happens (stderr) or kept for the JSON;
   // --step shows each one on stderr in every format and pauses after it. The time leaves out the pauses.
-  Tracer tracer(common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr, common.step);
-  const double paused_before = paused_seconds();
+  StepPause pause(common.step);
+  Tracer tracer(common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr, &pause);
   const auto begin = std::chrono::steady_clock::now();
-  std::optional<mechanisms::JansenSweep> swept;
-  try {
-    swept = mechanisms::crank_sweep(model, *solver, range.start, range.stop, range.step, {},
-                                    common.trace ? &tracer : nullptr);
-  } catch (const StoppedByUser&) {
+  const mechanisms::JansenSweep sweep = mechanisms::crank_sweep(model, *solver, range.start, range.stop, range.step, {},
+                                                                common.trace ? &tracer : nullptr);
+  if (pause.stopped()) {
     nlohmann::ordered_json attempts = nlohmann::ordered_json::array();
     for (const auto& attempt : tracer.attempts()) attempts.push_back(attempt_json(attempt));
     return report_stopped(common, {{"mechanism", name_}, {"solver", solver_}}, attempts);
   }
-  const mechanisms::JansenSweep& sweep = *swept;
-  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
-                        (paused_seconds() - paused_before);
+  const double time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() - pause.seconds_waited();
 
   // Files, then the report.
   if (!sweep.poses.empty()) {

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "cli/cli_common.hpp"
+#include "commands/common_options.hpp"
 
 namespace numlab::cli {
 
@@ -28,8 +28,16 @@ class MechanismCommand {
   void check_flags(const CommonOptions& common, bool from_file) const;
   int explain(const CommonOptions& common, const std::string& file) const;
   OutputPaths checked_outputs(const CommonOptions& common, const std::string& file) const;
-  int solve_file(const CommonOptions& common, const std::string& file, const OutputPaths& paths) const;
-  int sweep_jansen(const CommonOptions& common, const SweepRange& range, const OutputPaths& paths) const;
+  // The one sweep interface: a description file or shipped model, the Mustang, the Jansen leg
+  // (`file` is the description file, empty for the built-in linkages).
+  using SweepLinkage = int (MechanismCommand::*)(const CommonOptions& common, const SweepRange& range,
+                                                 const OutputPaths& paths, const std::string& file) const;
+  int sweep_file(const CommonOptions& common, const SweepRange& range, const OutputPaths& paths,
+                 const std::string& file) const;
+  int sweep_mustang(const CommonOptions& common, const SweepRange& range, const OutputPaths& paths,
+                    const std::string& file) const;
+  int sweep_jansen(const CommonOptions& common, const SweepRange& range, const OutputPaths& paths,
+                   const std::string& file) const;
 
   CLI::App* command_;
   CommonOptions common_;

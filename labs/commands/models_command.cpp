@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "cli/data_dir.hpp"
+#include "methods/data_dir.hpp"
 #include "numlab/mechanisms/linkage/linkage_blocks.hpp"
 #include "output/table.hpp"
 

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "commands/crank_sweep_csv.hpp"
 #include "commands/crank_sweep_tracer.hpp"
 #include "numlab/mechanisms/crank_angle.hpp"
 #include "scenes/mustang_scene.hpp"
@@ -120,20 +121,6 @@ nlohmann::ordered_json json_of(const MustangRequest& request, const MustangSweep
   return out;
 }
 
-void print_csv(std::ostream& out, const MustangSweep& sweep) {
-  out << "crank_deg";
-  for (std::string_view name : mechanisms::mustang_angle_names) out << ',' << name;
-  for (std::string_view joint : mechanisms::mustang_joint_names) out << ",x_" << joint << ",y_" << joint;
-  out << ",iterations,residual_inf,status,condition\n";  // docs/cli.md's columns, then ours
-  for (const auto& pose : sweep.poses) {
-    out << fmt::format("{:.10g}", pose.crank_deg);
-    for (double angle : pose.angles) out << fmt::format(",{:.17g}", angle);
-    for (const auto& joint : pose.joints) out << fmt::format(",{:.17g},{:.17g}", joint.x(), joint.y());
-    out << fmt::format(",{},{:.6g},{},{:.6g}\n", pose.outcome.iterations, pose.outcome.residual_norm,
-                       to_string(pose.outcome.status), pose.condition);
-  }
-}
-
 // --trace: every solve the sweep tried, in the order tried (stderr).
 void print_trace(std::ostream& out, const std::vector<SweepAttempt>& attempts) {
   Table table({"theta (deg)", "step", "iterations", "||f||_inf", "kappa(J)", "margin", "status", "kept"});
@@ -195,19 +182,16 @@ int run_mustang(const MustangRequest& request) {
   // --trace keeps every attempt (printed as a table afterwards on stderr, or in the JSON); --step
   // also prints each attempt as it happens and pauses after it. The time leaves out the pauses.
   const CommonOptions& common = request.common;
-  Tracer tracer(common.step ? &std::cerr : nullptr, common.step);
-  const double paused_before = paused_seconds();
+  StepPause pause(common.step);
+  Tracer tracer(common.step ? &std::cerr : nullptr, &pause);
   const auto begin = std::chrono::steady_clock::now();
-  std::optional<MustangSweep> swept;
-  try {
-    swept = mechanisms::mustang_sweep(*solver, request.start, request.stop, request.step, {},
-                                      common.trace ? &tracer : nullptr);
-  } catch (const StoppedByUser&) {
+  const MustangSweep sweep =
+      mechanisms::mustang_sweep(*solver, request.start, request.stop, request.step, {}, common.trace ? &tracer : nullptr);
+  if (pause.stopped()) {
     return report_stopped(common, {{"mechanism", "mustang"}, {"solver", request.solver}}, trace_json(tracer.attempts()));
   }
-  const MustangSweep& sweep = *swept;
-  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
-                        (paused_seconds() - paused_before);
+  const double time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() - pause.seconds_waited();
 
   if (!sweep.poses.empty()) {
     if (!request.svg.empty()) write_file_atomically(request.svg, mustang_pose_svg(sweep, 0));
@@ -218,7 +202,8 @@ int run_mustang(const MustangRequest& request) {
   } else {
     if (request.common.trace && !request.common.step) print_trace(std::cerr, tracer.attempts());
     if (request.common.format == Format::csv) {
-      print_csv(std::cout, sweep);
+      print_crank_sweep_csv(std::cout, sweep.poses, mechanisms::mustang_angle_names, mechanisms::mustang_joint_names,
+                            "condition", 6, [](const mechanisms::MustangPose& pose) { return pose.condition; });
     } else {
       print_text(std::cout, request, sweep, time_s);
     }

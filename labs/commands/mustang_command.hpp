@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "cli/cli_common.hpp"
+#include "commands/common_options.hpp"
 
 namespace numlab::cli {
 

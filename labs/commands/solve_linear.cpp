@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "cli/argument_parsing.hpp"
-#include "commands/linear_methods.hpp"
+#include "parsing/argument_parsing.hpp"
+#include "methods/linear_methods.hpp"
 #include "numlab/linalg/matrix_file.hpp"
 #include "numlab/linalg/measures.hpp"
 #include "numlab/linalg/matrix_generators.hpp"
@@ -233,8 +233,9 @@ int SolveLinearCommand::run() const {
   // for the "trace" array (and shown on stderr too with --step). The time leaves out the pauses.
   // With --step the steps are shown on stderr in every format, so that each pause follows one.
   std::ostream* trace_stream = common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr;
-  EliminationTracer elimination_tracer(trace_stream, common.step);
-  SweepTracer sweep_tracer(trace_stream, common.step);
+  StepPause pause(common.step);
+  EliminationTracer elimination_tracer(trace_stream, &pause);
+  SweepTracer sweep_tracer(trace_stream, &pause);
   LinearTracers tracers;
   if (common.trace) tracers = {&elimination_tracer, &sweep_tracer};
   const auto& records = [&]() -> const nlohmann::ordered_json& {
@@ -242,16 +243,11 @@ int SolveLinearCommand::run() const {
   };
 
   const LinearSettings settings{common.tolerance, common.max_iterations};
-  const double paused_before = paused_seconds();
   const auto begin = std::chrono::steady_clock::now();
-  DynamicResult result;
-  try {
-    result = run_linear_method(method_, system.A, system.b, settings, tracers);
-  } catch (const StoppedByUser&) {
-    return report_stopped(common, {{"method", method_}, {"n", system.A.rows()}}, records());
-  }
-  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
-                        (paused_seconds() - paused_before);
+  const DynamicResult result = run_linear_method(method_, system.A, system.b, settings, tracers);
+  if (pause.stopped()) return report_stopped(common, {{"method", method_}, {"n", system.A.rows()}}, records());
+  const double time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() - pause.seconds_waited();
 
   const SolveReport report = measure(method_, system, result, time_s);
   if (common.format == Format::json) {

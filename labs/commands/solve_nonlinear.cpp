@@ -10,8 +10,8 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 
-#include "cli/argument_parsing.hpp"
-#include "commands/nonlinear_methods.hpp"
+#include "parsing/argument_parsing.hpp"
+#include "methods/nonlinear_methods.hpp"
 #include "numlab/linalg/matrix_file.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 #include "numlab/nonlinear/mgh_problems.hpp"
@@ -19,6 +19,31 @@
 #include "output/trace_printers.hpp"
 
 namespace numlab::cli {
+
+namespace {
+
+// settings.options.forcing from --forcing: the default (Eisenstat-Walker) when not given. Given, it
+// must apply (require_applies: --method newton with an iterative --linear, gauss-seidel).
+nonlinear::ForcingOptions forcing_option(const std::optional<std::string>& text, bool is_newton,
+                                         nonlinear::LinearMethod linear) {
+  const bool iterative = linear == nonlinear::LinearMethod::gauss_seidel;
+  require_applies(text.has_value(), is_newton && iterative, "--forcing",
+                  "--method newton with an iterative --linear (gauss-seidel); direct solvers solve exactly");
+  return text ? forcing_named(*text) : nonlinear::ForcingOptions{};
+}
+
+// settings.options.reuse_jacobian from --reuse-jacobian K: 1 (Newton) when not given. Given, K must
+// be at least 1 and apply (--method newton with --linear gepp, the solver that keeps its factors).
+int reuse_jacobian_option(std::optional<int> every, bool is_newton, nonlinear::LinearMethod linear) {
+  if (every && *every < 1) {
+    throw std::invalid_argument(fmt::format("--reuse-jacobian {}: K must be at least 1 (1 is plain Newton)", *every));
+  }
+  require_applies(every.has_value(), is_newton && linear == nonlinear::LinearMethod::gepp, "--reuse-jacobian",
+                  "--method newton with --linear gepp (the chord method reuses GEPP's kept factors)");
+  return every.value_or(1);
+}
+
+}  // namespace
 
 Eigen::VectorXd parse_point(const std::string& text, int expected, const std::string& flag) {
   const std::vector<double> values = parse_number_list(text, flag);
@@ -57,7 +82,7 @@ SolveNonlinearCommand::SolveNonlinearCommand(CLI::App& solve) {
   command_->add_option("--problem", problem_, "Moré-Garbow-Hillstrom problem")
       ->required()
       ->check(CLI::IsMember(nonlinear::test_problem_names()));
-  command_->add_option("--method", method_, "newton (hand-written) or gsl-<type>")
+  command_->add_option("--method", method_, "newton or dogleg (hand-written), or gsl-<type>")
       ->required()
       ->check(CLI::IsMember(nonlinear_method_names()));
   command_->add_option("--x0", x0_, "Starting point a,b,... (default: the problem's standard start)");
@@ -181,18 +206,13 @@ int SolveNonlinearCommand::run() const {
 
   // 2. Solve, traced: text and CSV traces go to stderr (JSON's too with --step, so that each pause
   // follows a shown step); the time leaves out the pauses.
-  NewtonTracer tracer(common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr, common.step);
-  const double paused_before = paused_seconds();
+  StepPause pause(common.step);
+  NewtonTracer tracer(common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr, &pause);
   const auto begin = std::chrono::steady_clock::now();
-  std::optional<NonlinearRun> solved;
-  try {
-    solved = run_nonlinear_method(method_, *problem.system, x0, settings, common.trace ? &tracer : nullptr);
-  } catch (const StoppedByUser&) {
-    return report_stopped(common, {{"problem", problem_}, {"method", method_}}, tracer.records());
-  }
-  const NonlinearRun& run = *solved;
-  const double time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
-                        (paused_seconds() - paused_before);
+  const NonlinearRun run = run_nonlinear_method(method_, *problem.system, x0, settings, common.trace ? &tracer : nullptr);
+  if (pause.stopped()) return report_stopped(common, {{"problem", problem_}, {"method", method_}}, tracer.records());
+  const double time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() - pause.seconds_waited();
   const double distance = problem.known_root ? (run.x - *problem.known_root).lpNorm<Eigen::Infinity>()
                                              : std::numeric_limits<double>::quiet_NaN();
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "cli/cli_common.hpp"
+#include "commands/common_options.hpp"
 #include "numlab/nonlinear/mgh_problems.hpp"
 
 namespace numlab::cli {

@@ -73,8 +73,9 @@ std::vector<TraceRow> newton_trace(const Closure& closure, const typename Closur
   using Stepper = nonlinear::Newton<Closure>;
   struct Recorder : Stepper::Observer {
     std::vector<TraceRow> rows;
-    void on_step(const Stepper&, const nonlinear::NewtonRecord& record) override {
+    StepControl on_step(const Stepper&, const nonlinear::NewtonRecord& record) override {
       rows.push_back({record.residual_norm, record.step_norm});
+      return StepControl::proceed;
     }
   } recorder;
   Stepper newton(closure, options);

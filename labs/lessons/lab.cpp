@@ -4,8 +4,10 @@
 
 #include <sstream>
 
-#include "cli/cli_common.hpp"
-#include "commands/linear_methods.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
+#include "output/format.hpp"
+#include "methods/linear_methods.hpp"
 #include "lessons/lab_basins.hpp"
 #include "numlab/linalg/measures.hpp"
 #include "bench/timing.hpp"
@@ -16,7 +18,7 @@ LabSession::LabSession(std::ostream& out, bool step, std::string folder, std::st
     : out_(out),
       tee_buffer_(out.rdbuf()),
       tee_(&tee_buffer_),
-      step_(step),
+      pause_(step),
       folder_(std::move(folder)),
       report_(std::move(title), std::move(summary)) {}
 
@@ -36,13 +38,14 @@ void LabSession::flush_free_text() {
   report_.add_preformatted(tee_buffer_.take());
 }
 
-void LabSession::begin_step(const std::string& title, const std::string& explanation) {
+bool LabSession::begin_step(const std::string& title, const std::string& explanation) {
   flush_free_text();
-  if (step_number_ > 0) pause_if_stepping(step_);
+  if (step_number_ > 0 && pause_.after_step() == StepControl::stop) return false;
   ++step_number_;
   out_ << fmt::format("\nStep {}: {}\n", step_number_, title) << std::string(title.size() + 8, '=') << '\n';
   report_.add_step(step_number_, title);
   say(explanation);
+  return true;
 }
 
 void LabSession::say(const std::string& paragraph) {

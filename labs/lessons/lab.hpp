@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "output/lab_report.hpp"
+#include "output/step_pause.hpp"
 #include "output/table.hpp"
 
 namespace numlab::cli {
@@ -21,8 +22,12 @@ class LabSession {
   // whole session as FOLDER/report.html.
   LabSession(std::ostream& out, bool step, std::string folder, std::string title = "", std::string summary = "");
 
-  // Starts the next step: pauses first (with --step, after step 1), then prints its title and explanation.
-  void begin_step(const std::string& title, const std::string& explanation);
+  // Starts the next step: pauses first (with --step, after step 1), then prints its title and
+  // explanation. Returns false, printing nothing, once the user has stopped with q: the lab then
+  // returns at once, and every later begin_step returns false without asking again.
+  [[nodiscard]] bool begin_step(const std::string& title, const std::string& explanation);
+  // Whether the user stopped the lab with q at a pause.
+  bool stopped() const { return pause_.stopped(); }
   // A paragraph, wrapped to 96 columns and indented.
   void say(const std::string& paragraph);
   // Prints the table and saves it as FOLDER/stepK-NAME.csv.
@@ -61,7 +66,7 @@ class LabSession {
   std::ostream& out_;
   TeeBuffer tee_buffer_;
   std::ostream tee_;
-  bool step_;
+  StepPause pause_;
   std::string folder_;
   int step_number_ = 0;
   LabReport report_;

@@ -80,11 +80,11 @@ BasinTally map_and_table(LabSession& session, const std::string& system, const s
 
 void fractal_step(LabSession& session) {
   const int side = basins_lab_grid + 1;
-  session.begin_step("The z^3 - 1 Newton fractal",
-                     fmt::format("z^3 = 1 written as two real equations in x and y, Newton from each of {} x {} "
-                                 "starts on [-2, 2] x [-2, 2]. Each start is coloured by the cube root of unity it "
-                                 "reaches (checked against e^(2 pi i k/3)), lighter the more iterations it took.",
-                                 side, side));
+  if (!session.begin_step("The z^3 - 1 Newton fractal",
+                          fmt::format("z^3 = 1 written as two real equations in x and y, Newton from each of {} x {} "
+                                      "starts on [-2, 2] x [-2, 2]. Each start is coloured by the cube root of unity it "
+                                      "reaches (checked against e^(2 pi i k/3)), lighter the more iterations it took.",
+                                      side, side))) return;
   BasinRun run;
   const BasinTally t = map_and_table(session, "fractal", "fractal", run);
   session.say(basins::fractal_sentence(t.per_mode[0], t.per_mode[1], t.per_mode[2], failed(t), t.total));
@@ -97,14 +97,14 @@ void fractal_step(LabSession& session) {
 
 void four_bar_step(LabSession& session) {
   const int side = basins_lab_grid + 1;
-  session.begin_step("A four-bar's two assembly modes and the toggle line",
-                     fmt::format("A Grashof four-bar (crank 2, coupler 7, rocker 5, ground 6) at a crank angle of 60 "
-                                 "degrees: the unknowns are the coupler angle theta3 and the rocker angle theta4, "
-                                 "each over a whole turn on a {} x {} grid. The coupler-rocker joint B lies left (B+) "
-                                 "or right (B-) of the line from the crank tip A to the rocker pivot O4, each mode "
-                                 "checked against the circle-circle intersection. The dashed lines are where J is "
-                                 "singular, theta3 - theta4 = k pi: a start there has no Newton step.",
-                                 side, side));
+  if (!session.begin_step("A four-bar's two assembly modes and the toggle line",
+                          fmt::format("A Grashof four-bar (crank 2, coupler 7, rocker 5, ground 6) at a crank angle of 60 "
+                                      "degrees: the unknowns are the coupler angle theta3 and the rocker angle theta4, "
+                                      "each over a whole turn on a {} x {} grid. The coupler-rocker joint B lies left (B+) "
+                                      "or right (B-) of the line from the crank tip A to the rocker pivot O4, each mode "
+                                      "checked against the circle-circle intersection. The dashed lines are where J is "
+                                      "singular, theta3 - theta4 = k pi: a start there has no Newton step.",
+                                      side, side))) return;
   BasinRun run;
   const BasinTally t = map_and_table(session, "four-bar", "four-bar", run);
   session.say(basins::four_bar_sentence(t.per_mode[0], t.per_mode[1], t.singular, failed(t), t.total));
@@ -114,13 +114,13 @@ void four_bar_step(LabSession& session) {
 
 void jansen_step(LabSession& session) {
   const int side = basins_lab_grid;
-  session.begin_step("The Jansen leg's branches on a slice through the seed's solution",
-                     fmt::format("The 8-angle closure at the seed's crank angle, 1.57 rad. theta1 (A->B) and theta7 "
-                                 "(P1->D) run over a whole turn around the seed's solution on a {} x {} grid; the other "
-                                 "six angles stay at the solution. A mode is the side of each of the four dyads B, C, "
-                                 "D, E (16 branches), each checked against that branch's circle intersections. "
-                                 "Plain Newton, then damped Newton (backtracking on ||f||^2), at most 20 iterations.",
-                                 side, side));
+  if (!session.begin_step("The Jansen leg's branches on a slice through the seed's solution",
+                          fmt::format("The 8-angle closure at the seed's crank angle, 1.57 rad. theta1 (A->B) and theta7 "
+                                      "(P1->D) run over a whole turn around the seed's solution on a {} x {} grid; the other "
+                                      "six angles stay at the solution. A mode is the side of each of the four dyads B, C, "
+                                      "D, E (16 branches), each checked against that branch's circle intersections. "
+                                      "Plain Newton, then damped Newton (backtracking on ||f||^2), at most 20 iterations.",
+                                      side, side))) return;
   const BasinRun plain = map_of("jansen", side, false), damped = map_of("jansen", side, true);
   const int home = plain.home_mode;
   const BasinTally p = basins::tally(plain.map, 16), d = basins::tally(damped.map, 16);

@@ -9,8 +9,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli/cli_common.hpp"
-#include "cli/data_dir.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
+#include "output/format.hpp"
+#include "methods/data_dir.hpp"
 #include "exercises/checker.hpp"
 #include "exercises/child_session.hpp"
 #include "exercises/results.hpp"
@@ -70,11 +72,11 @@ std::string first_line(const std::string& text) { return text.substr(0, text.fin
 
 // Step 1: the exercises a student can be given.
 void list_the_exercises(LabSession& session) {
-  session.begin_step("The exercises",
-                     "`numlab exercise list` names the methods a student writes in their own language. The "
-                     "checker runs the student's program as a child process, sends it requests as JSON lines and "
-                     "compares each reply with an independent reference: GSL, Eigen, numlab's own steppers, a "
-                     "closed form or NIST's certified values.");
+  if (!session.begin_step("The exercises",
+                          "`numlab exercise list` names the methods a student writes in their own language. The "
+                          "checker runs the student's program as a child process, sends it requests as JSON lines and "
+                          "compares each reply with an independent reference: GSL, Eigen, numlab's own steppers, a "
+                          "closed form or NIST's certified values.")) return;
   Table list({"exercise", "what the student writes"});
   for (const exercises::Exercise& exercise : exercises::all_exercises()) list.add_row({exercise.name, exercise.summary});
   session.show(list, "exercises");
@@ -89,19 +91,19 @@ std::string write_a_python_starter(LabSession& session, const exercises::Exercis
   for (const exercises::StarterFile& file : files) {
     written += fmt::format("{}{} ({} bytes)", written.empty() ? "" : ", ", file.path, file.contents.size());
   }
-  session.begin_step("A Python starter for gepp",
-                     fmt::format("`numlab exercise init gepp {} --lang python` wrote {}. TASK.md is the task "
-                                 "(`numlab exercise show gepp`) with the command that checks it. solution.py "
-                                 "already reads the requests and prints the replies; the student writes only "
-                                 "solve(request), which as generated raises \"not implemented\".",
-                                 starter, written));
+  if (!session.begin_step("A Python starter for gepp",
+                          fmt::format("`numlab exercise init gepp {} --lang python` wrote {}. TASK.md is the task "
+                                      "(`numlab exercise show gepp`) with the command that checks it. solution.py "
+                                      "already reads the requests and prints the replies; the student writes only "
+                                      "solve(request), which as generated raises \"not implemented\".",
+                                      starter, written))) return {};
   return starter + "/solution.py";
 }
 
 // Step 3: the starter checked: every check fails honestly ("not implemented"), none errs.
 void check_the_starter(LabSession& session, const exercises::Exercise& gepp, const std::string& program) {
-  session.begin_step("The starter, checked", "Before a line of the method is written, the check runs: the "
-                                             "starter must fail honestly, not crash.");
+  if (!session.begin_step("The starter, checked", "Before a line of the method is written, the check runs: the "
+                                                  "starter must fail honestly, not crash.")) return;
   const auto starter_results = check(session, gepp, program, "check-starter");
   int not_implemented = 0;
   for (const CheckResult& result : starter_results) {
@@ -118,9 +120,9 @@ void check_the_starter(LabSession& session, const exercises::Exercise& gepp, con
 // Step 4: a correct GEPP checked, and its speed shown beside a reference.
 std::vector<CheckResult> check_a_correct_gepp(LabSession& session, const exercises::Exercise& gepp,
                                               const std::string& examples) {
-  session.begin_step("A correct GEPP",
-                     "gepp_solution.py does Gaussian elimination with partial pivoting by hand on numpy arrays, "
-                     "and reports its pivots as a trace, one entry per column.");
+  if (!session.begin_step("A correct GEPP",
+                          "gepp_solution.py does Gaussian elimination with partial pivoting by hand on numpy arrays, "
+                          "and reports its pivots as a trace, one entry per column.")) return {};
   const auto correct = check(session, gepp, examples + "/gepp_solution.py", "check-correct");
   session.say(fmt::format("{} checks pass.", count_of(count_status(correct, CheckStatus::pass), static_cast<int>(correct.size()))));
   if (const CheckResult* median = median_timed_check(correct)) {
@@ -138,9 +140,9 @@ std::vector<CheckResult> check_a_correct_gepp(LabSession& session, const exercis
 // Step 5: a GEPP without pivoting checked, each failing check's message and hint read.
 std::vector<CheckResult> check_a_gepp_without_pivoting(LabSession& session, const exercises::Exercise& gepp,
                                                        const std::string& examples) {
-  session.begin_step("A GEPP without pivoting",
-                     "gepp_no_pivoting.py is the same program with one bug, named in its header: it never swaps "
-                     "rows, and eliminates each column with its diagonal entry.");
+  if (!session.begin_step("A GEPP without pivoting",
+                          "gepp_no_pivoting.py is the same program with one bug, named in its header: it never swaps "
+                          "rows, and eliminates each column with its diagonal entry.")) return {};
   const auto buggy = check(session, gepp, examples + "/gepp_no_pivoting.py", "check-no-pivoting");
   const int buggy_total = static_cast<int>(buggy.size());
   session.say(fmt::format("{} checks fail, {} give an error, and {} pass.", count_of(count_status(buggy, CheckStatus::fail), buggy_total),
@@ -157,12 +159,12 @@ std::vector<CheckResult> check_a_gepp_without_pivoting(LabSession& session, cons
 // Step 6: where the verdicts were written, and what each program passed.
 void read_the_verdicts(LabSession& session, const std::vector<CheckResult>& correct, const std::vector<CheckResult>& buggy) {
   const int buggy_total = static_cast<int>(buggy.size());
-  session.begin_step("Reading the verdicts",
-                     fmt::format("Each check run above also wrote results.json (the Exercism test-runner v3 shape, "
-                                 "for graders and CI) and report.html into {}/check-*. The correct solution passes "
-                                 "{}; the one without pivoting passes {}.",
-                                 session.folder(), count_of(count_status(correct, CheckStatus::pass), static_cast<int>(correct.size())),
-                                 count_of(count_status(buggy, CheckStatus::pass), buggy_total)));
+  if (!session.begin_step("Reading the verdicts",
+                          fmt::format("Each check run above also wrote results.json (the Exercism test-runner v3 shape, "
+                                      "for graders and CI) and report.html into {}/check-*. The correct solution passes "
+                                      "{}; the one without pivoting passes {}.",
+                                      session.folder(), count_of(count_status(correct, CheckStatus::pass), static_cast<int>(correct.size())),
+                                      count_of(count_status(buggy, CheckStatus::pass), buggy_total)))) return;
 }
 
 }  // namespace

@@ -9,8 +9,10 @@
 #include <limits>
 #include <map>
 
-#include "cli/cli_common.hpp"
-#include "cli/data_dir.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
+#include "output/format.hpp"
+#include "methods/data_dir.hpp"
 #include "output/fit_charts.hpp"
 #include "scenes/foot_path.hpp"
 #include "lessons/lab.hpp"
@@ -67,12 +69,12 @@ Eigen::VectorXd certified_of(const fitting::DataSet& data) {
 }
 
 void normal_equations_step(LabSession& session) {
-  session.begin_step("Seed 001's curve_fit: the normal equations",
-                     "A degree-D least-squares polynomial minimises sum (y_i - b0 - b1 x_i - ... - bD x_i^D)^2. "
-                     "Setting the derivatives to zero gives D+1 linear equations whose matrix holds the power sums "
-                     "S_k = sum x_i^k: entry (j, k) is S_(j+k). That is (V^T V) b = V^T y for the Vandermonde matrix "
-                     "V. Here is the system for NIST's Pontius data (load-cell calibration, x up to 3e6, degree 2), "
-                     "then its solution by the hand-written GEPP.");
+  if (!session.begin_step("Seed 001's curve_fit: the normal equations",
+                          "A degree-D least-squares polynomial minimises sum (y_i - b0 - b1 x_i - ... - bD x_i^D)^2. "
+                          "Setting the derivatives to zero gives D+1 linear equations whose matrix holds the power sums "
+                          "S_k = sum x_i^k: entry (j, k) is S_(j+k). That is (V^T V) b = V^T y for the Vandermonde matrix "
+                          "V. Here is the system for NIST's Pontius data (load-cell calibration, x up to 3e6, degree 2), "
+                          "then its solution by the hand-written GEPP.")) return;
   const fitting::DataSet pontius = nist_set("Pontius");
   const fitting::NormalEquations system = fitting::build_normal_equations(pontius.x, pontius.y, 2);
   Table table({"row", "S_j", "S_(j+1)", "S_(j+2)", "sum x^j y"});
@@ -123,10 +125,10 @@ std::string nist_sentence(const std::map<std::string, std::map<std::string, doub
 }
 
 void nist_step(LabSession& session) {
-  session.begin_step("Judged by NIST: certified digits on every polynomial data set",
-                     "NIST's Statistical Reference Datasets come with parameters certified to 15 digits. The log "
-                     "relative error LRE = -log10(|b - b_cert| / |b_cert|) counts correct digits; each cell is the "
-                     "fewest over the coefficients. Gauss-Seidel runs up to 100000 sweeps with a 1e-14 step test.");
+  if (!session.begin_step("Judged by NIST: certified digits on every polynomial data set",
+                          "NIST's Statistical Reference Datasets come with parameters certified to 15 digits. The log "
+                          "relative error LRE = -log10(|b - b_cert| / |b_cert|) counts correct digits; each cell is the "
+                          "fewest over the coefficients. Gauss-Seidel runs up to 100000 sweeps with a 1e-14 step test.")) return;
   std::vector<std::string> header = {"data", "D"};
   for (const auto& m : lab_methods()) header.push_back(m.label);
   header.insert(header.end(), {"kappa normal", "kappa scaled", "kappa gsl"});
@@ -158,11 +160,11 @@ void nist_step(LabSession& session) {
 }
 
 void scaling_step(LabSession& session) {
-  session.begin_step("Why centring and scaling x works",
-                     "On [0, 20] the columns 1, x, x^2, ..., x^5 of V all rise together: nearly parallel, so V is "
-                     "ill-conditioned, and V^T V squares that. Substituting t = (x - 10) / 10 puts the data on "
-                     "[-1, 1], where even and odd powers point different ways. The fit in t is then mapped back by "
-                     "exact algebra, p(x) = q((x - c) / s), expanded by Horner's rule on polynomials.");
+  if (!session.begin_step("Why centring and scaling x works",
+                          "On [0, 20] the columns 1, x, x^2, ..., x^5 of V all rise together: nearly parallel, so V is "
+                          "ill-conditioned, and V^T V squares that. Substituting t = (x - 10) / 10 puts the data on "
+                          "[-1, 1], where even and odd powers point different ways. The fit in t is then mapped back by "
+                          "exact algebra, p(x) = q((x - c) / s), expanded by Horner's rule on polynomials.")) return;
   const fitting::DataSet wampler = nist_set("Wampler5");
   // 1. Each method's matrix, with the condition numbers numlab fit prints for it.
   Table table({"method", "matrix solved", "kappa as it stands", "kappa scaled", "measure; scaling"});
@@ -204,11 +206,11 @@ void scaling_step(LabSession& session) {
 }
 
 void foot_path_step(LabSession& session) {
-  session.begin_step("The Jansen foot path, fitted (seed 001 eqs 22-23, Figure 3)",
-                     "The foot's closed path over one crank cycle (360 closed-form poses) is cut at its leftmost and "
-                     "rightmost points into an upper and a lower arc (seed 001 cut by hand at fixed indices). Each "
-                     "arc gets a degree-5 polynomial y = p(x). The table compares the hand-written normal "
-                     "equations' coefficients with GSL's.");
+  if (!session.begin_step("The Jansen foot path, fitted (seed 001 eqs 22-23, Figure 3)",
+                          "The foot's closed path over one crank cycle (360 closed-form poses) is cut at its leftmost and "
+                          "rightmost points into an upper and a lower arc (seed 001 cut by hand at fixed indices). Each "
+                          "arc gets a degree-5 polynomial y = p(x). The table compares the hand-written normal "
+                          "equations' coefficients with GSL's.")) return;
   const fitting::SplitPath arcs = jansen_foot_arcs();
   Table table({"arc", "points", "power", "normal", "normal-scaled", "gsl", "digits normal vs gsl",
                "digits scaled vs gsl"});
@@ -257,7 +259,7 @@ struct SweepSummary {
 // the first table with a mark) and charts it.
 SweepSummary degree_sweep_step(LabSession& session, const std::string& title, const std::string& name,
                                const Eigen::VectorXd& x, const Eigen::VectorXd& y, int max_degree, bool& legend_shown) {
-  const std::vector<DegreeSweepRow> rows = fit_degree_sweep(x, y, max_degree);
+  const std::vector<fitting::DegreeSweepRow> rows = fitting::fit_degree_sweep(x, y, max_degree);
   const std::vector<std::string> methods = {"normal", "normal-scaled", "gsl", "eigen-qr"};
   Table table({"degree", "normal", "normal-scaled", "gsl", "eigen-qr", "kappa normal", "kappa scaled"});
   SweepSummary summary;
@@ -267,14 +269,14 @@ SweepSummary degree_sweep_step(LabSession& session, const std::string& title, co
     std::vector<std::string> cells = {std::to_string(rows[first].degree)};
     double others_fewest = 16.0;
     for (std::size_t m = 0; m < methods.size(); ++m) {
-      const DegreeSweepRow& row = rows[first + m];
+      const fitting::DegreeSweepRow& row = rows[first + m];
       const bool has_fit = std::isfinite(row.residual_sd);
       cells.push_back(has_fit ? fmt::format("{:.1f}{}", row.digits, row.warned ? " !" : "")
                               : std::string(to_string(row.status)));
       marked = marked || (has_fit && row.warned);
       if (m > 0) others_fewest = std::min(others_fewest, row.digits);
     }
-    const DegreeSweepRow& normal = rows[first];
+    const fitting::DegreeSweepRow& normal = rows[first];
     if (summary.behind_from == 0 && normal.digits < others_fewest) summary.behind_from = normal.degree;
     if (summary.singular_from == 0 && normal.status == Status::singular) {
       summary.singular_from = normal.degree;
@@ -314,13 +316,13 @@ int run_fit_lab(LabSession& session) {
   scaling_step(session);
   foot_path_step(session);
 
-  session.begin_step("Degree sweep: where each method stops being trustworthy",
-                     "Digits of each method's coefficients against an extended-precision reference (Householder QR "
-                     "in long double on the scaled variable, good to 11+ digits on every NIST set), and the residual "
-                     "sd, for degrees 1 and up. Digits here are of the whole coefficient vector, each coefficient "
-                     "weighted by the size of its term (max |x|^k), because at some degrees a coefficient of the "
-                     "reference is nearly zero and its own LRE would read 0 however small the error. First the foot "
-                     "path's upper arc, then Wampler4 (x = 0..20).");
+  if (!session.begin_step("Degree sweep: where each method stops being trustworthy",
+                          "Digits of each method's coefficients against an extended-precision reference (Householder QR "
+                          "in long double on the scaled variable, good to 11+ digits on every NIST set), and the residual "
+                          "sd, for degrees 1 and up. Digits here are of the whole coefficient vector, each coefficient "
+                          "weighted by the size of its term (max |x|^k), because at some degrees a coefficient of the "
+                          "reference is nearly zero and its own LRE would read 0 however small the error. First the foot "
+                          "path's upper arc, then Wampler4 (x = 0..20).")) return {};
   const fitting::SplitPath arcs = jansen_foot_arcs();
   bool legend_shown = false;
   const SweepSummary foot = degree_sweep_step(session, "Jansen foot path, upper arc: digits and residual against degree",

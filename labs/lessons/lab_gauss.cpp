@@ -9,7 +9,7 @@
 
 #include "lessons/lab.hpp"
 #include "lessons/lab_sentences.hpp"
-#include "commands/linear_methods.hpp"
+#include "methods/linear_methods.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gsl_reference.hpp"
 #include "numlab/linalg/measures.hpp"
@@ -57,17 +57,17 @@ void show_the_factors(LabSession& session, const Eigen::MatrixXd& A, const Eigen
 }
 
 void trace_a_small_system(LabSession& session) {
-  session.begin_step("Elimination, one column at a time",
-                     "For each column: search the column for the largest pivot, swap it onto the diagonal, and "
-                     "subtract multiples of the pivot row to clear the entries below it. Then solve the "
-                     "triangular system from the bottom up. The augmented matrix [A | b] is shown after every "
-                     "swap and every elimination (numlab solve linear --method gepp --trace prints the same).");
+  if (!session.begin_step("Elimination, one column at a time",
+                          "For each column: search the column for the largest pivot, swap it onto the diagonal, and "
+                          "subtract multiples of the pivot row to clear the entries below it. Then solve the "
+                          "triangular system from the bottom up. The augmented matrix [A | b] is shown after every "
+                          "swap and every elimination (numlab solve linear --method gepp --trace prints the same).")) return;
   Eigen::MatrixXd A(3, 3);
   A << 2, 1, -1, -3, -1, 2, -2, 1, 2;
   const Eigen::Vector3d b(8, -11, -3);
   session.out() << "  Start:\n";
   print_augmented(session.out(), A, b);
-  EliminationTracer tracer(&session.out(), false);
+  EliminationTracer tracer(&session.out(), nullptr);
   const DynamicResult result = run_linear_method("gepp", A, b, {}, {&tracer, nullptr});
   session.say(fmt::format("Solution x = ({:.12g}, {:.12g}, {:.12g}), exact (2, 3, -1); growth factor {:.3g}.",
                           result.x(0), result.x(1), result.x(2), result.growth_factor));
@@ -75,12 +75,12 @@ void trace_a_small_system(LabSession& session) {
 }
 
 void show_a_tiny_pivot(LabSession& session) {
-  session.begin_step("Why pivot: a tiny pivot",
-                     "A = [[d, 1], [1, 1]] with b = A * (1, 1). Without pivoting the first multiplier is 1/d, the "
-                     "second row becomes 1 - 1/d, and the 1 in it is rounded away: x1 comes out of a difference of "
-                     "nearly equal numbers divided by d. Swapping rows first keeps every multiplier at most 1. "
-                     "When d is below n*eps the pivot counts as negligible and elimination without pivoting "
-                     "stops with 'singular' instead of dividing by it.");
+  if (!session.begin_step("Why pivot: a tiny pivot",
+                          "A = [[d, 1], [1, 1]] with b = A * (1, 1). Without pivoting the first multiplier is 1/d, the "
+                          "second row becomes 1 - 1/d, and the 1 in it is rounded away: x1 comes out of a difference of "
+                          "nearly equal numbers divided by d. Swapping rows first keeps every multiplier at most 1. "
+                          "When d is below n*eps the pivot counts as negligible and elimination without pivoting "
+                          "stops with 'singular' instead of dividing by it.")) return;
   Table table({"d", "no pivot: status", "x1", "forward error", "growth", "partial pivot: x1", "forward error",
                "growth"});
   for (double d : {1e-4, 1e-8, 1e-12, 1e-14, 1e-17}) {
@@ -100,11 +100,11 @@ void show_a_tiny_pivot(LabSession& session) {
 }
 
 void show_wilkinson_growth(LabSession& session) {
-  session.begin_step("Where partial pivoting fails: Wilkinson's growth matrix",
-                     "W has 1 on the diagonal, -1 below it and 1 in the last column. No swap is ever needed, yet "
-                     "every elimination doubles the last column: the growth factor max|U|/max|A| is 2^(n-1). "
-                     "GEPP's backward error is bounded by about growth * eps, so once the growth passes 1/eps "
-                     "(n > 53) every digit can be lost. Householder QR has no growth problem. Here b = W * ones.");
+  if (!session.begin_step("Where partial pivoting fails: Wilkinson's growth matrix",
+                          "W has 1 on the diagonal, -1 below it and 1 in the last column. No swap is ever needed, yet "
+                          "every elimination doubles the last column: the growth factor max|U|/max|A| is 2^(n-1). "
+                          "GEPP's backward error is bounded by about growth * eps, so once the growth passes 1/eps "
+                          "(n > 53) every digit can be lost. Householder QR has no growth problem. Here b = W * ones.")) return;
   Table table({"n", "growth", "2^(n-1)", "GEPP forward error", "GEPP digits", "GSL LU digits", "GSL QR digits"});
   int first_lost = 0;  // the first n where GEPP keeps no digit (0.0 in the table)
   double lost_error = 0.0, qr_fewest = 16.0;
@@ -133,12 +133,12 @@ void show_wilkinson_growth(LabSession& session) {
 }
 
 void show_hilbert_conditioning(LabSession& session) {
-  session.begin_step("Ill-conditioned is not unstable: Hilbert matrices",
-                     "h_ij = 1/(i+j-1). GEPP stays backward stable (tiny relative residual), but the forward error "
-                     "grows like kappa * eps: the data, not the method, limit the digits. GSL LU loses the same "
-                     "digits. Once kappa exceeds 1/eps no digit is guaranteed, and when a pivot falls below "
-                     "n*eps*max|a_ij| GEPP stops with 'singular'. kappa_1 is estimated from the LU factors "
-                     "(Hager-Higham), never above the true value.");
+  if (!session.begin_step("Ill-conditioned is not unstable: Hilbert matrices",
+                          "h_ij = 1/(i+j-1). GEPP stays backward stable (tiny relative residual), but the forward error "
+                          "grows like kappa * eps: the data, not the method, limit the digits. GSL LU loses the same "
+                          "digits. Once kappa exceeds 1/eps no digit is guaranteed, and when a pivot falls below "
+                          "n*eps*max|a_ij| GEPP stops with 'singular'. kappa_1 is estimated from the LU factors "
+                          "(Hager-Higham), never above the true value.")) return;
   std::vector<ConditionRow> limits;
   Table table({"n", "kappa_1 estimate", "kappa*eps", "GEPP status", "GEPP residual", "GEPP forward error",
                "GSL LU forward error"});
@@ -167,10 +167,10 @@ int run_gauss_lab(LabSession& session) {
   show_wilkinson_growth(session);
   show_hilbert_conditioning(session);
 
-  session.begin_step("Hand-written GEPP against GSL and Eigen",
-                     "A random 200x200 system (entries uniform in [-1, 1], b = A * ones). All three LU "
-                     "factorizations pivot the same way; Householder QR does twice LU's arithmetic (4n^3/3 "
-                     "against 2n^3/3 flops) and needs no pivoting.");
+  if (!session.begin_step("Hand-written GEPP against GSL and Eigen",
+                          "A random 200x200 system (entries uniform in [-1, 1], b = A * ones). All three LU "
+                          "factorizations pivot the same way; Householder QR does twice LU's arithmetic (4n^3/3 "
+                          "against 2n^3/3 flops) and needs no pivoting.")) return {};
   const linalg::GeneratedSystem system = linalg::generate_system("random", 200);
   session.show(linear_comparison_table(system.A, system.b, system.exact_solution, {"gepp", "gsl-lu", "gsl-qr", "eigen-lu"}), "comparison");
   return 0;

@@ -8,7 +8,7 @@
 
 #include "lessons/lab.hpp"
 #include "lessons/lab_sentences.hpp"
-#include "commands/linear_methods.hpp"
+#include "methods/linear_methods.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/linalg/measures.hpp"
 
@@ -18,9 +18,9 @@ namespace {
 
 // Step 1: the 2x2 closed form on A = [4 3; 6 3].
 void show_the_closed_form(LabSession& session, const Eigen::Matrix2d& A) {
-  session.begin_step("The closed form",
-                     "For A = [a b; c d]: det A = ad - bc and A^-1 = (1/det A) [d -b; -c a]. Four multiplications, "
-                     "one division: this is what seed 003 uses inside each 2x2 Newton loop.");
+  if (!session.begin_step("The closed form",
+                          "For A = [a b; c d]: det A = ad - bc and A^-1 = (1/det A) [d -b; -c a]. Four multiplications, "
+                          "one division: this is what seed 003 uses inside each 2x2 Newton loop.")) return;
   const linalg::Inverse2x2 closed = linalg::inverse2x2(A);
   session.say(fmt::format("A = [4 3; 6 3]: det = {:.6g}, A^-1 = [{:.6g} {:.6g}; {:.6g} {:.6g}], kappa_2 = {:.6g}; "
                           "||A A^-1 - I||_max = {:.2g}.",
@@ -33,13 +33,13 @@ void show_the_closed_form(LabSession& session, const Eigen::Matrix2d& A) {
 void show_singular_relative_to_scale(LabSession& session, const Eigen::Matrix2d& A) {
   const Eigen::Matrix2d tiny = (Eigen::Matrix2d() << 1e-7, 0, 0, 1e-7).finished();
   const Eigen::Matrix2d parallel = (Eigen::Matrix2d() << 1e10, 1e10, 1e10, 1e10 + 2e-6).finished();
-  session.begin_step("Singular relative to what? The scale of A",
-                     fmt::format("A test like |det A| < 1e-12 calls [1e-7 0; 0 1e-7] singular (det {:.2g}) although "
-                                 "it is a perfectly conditioned multiple of I, and passes [1e10 1e10; 1e10 1e10+2e-6] "
-                                 "(det {:.3g}) although its rows are parallel to within one rounding unit. For a 2x2, "
-                                 "||A||_F^2 / |det A| = kappa + 1/kappa, so numlab calls A singular when |det A| <= "
-                                 "eps ||A||_F^2, that is when kappa_2(A) >= 1/eps, whatever the scale.",
-                                 linalg::inverse2x2(tiny).determinant, linalg::inverse2x2(parallel).determinant));
+  if (!session.begin_step("Singular relative to what? The scale of A",
+                          fmt::format("A test like |det A| < 1e-12 calls [1e-7 0; 0 1e-7] singular (det {:.2g}) although "
+                                      "it is a perfectly conditioned multiple of I, and passes [1e10 1e10; 1e10 1e10+2e-6] "
+                                      "(det {:.3g}) although its rows are parallel to within one rounding unit. For a 2x2, "
+                                      "||A||_F^2 / |det A| = kappa + 1/kappa, so numlab calls A singular when |det A| <= "
+                                      "eps ||A||_F^2, that is when kappa_2(A) >= 1/eps, whatever the scale.",
+                                      linalg::inverse2x2(tiny).determinant, linalg::inverse2x2(parallel).determinant))) return;
   Table scale({"A", "det A", "kappa_2", "status"});
   const std::vector<std::pair<std::string, Eigen::Matrix2d>> examples = {
       {"[1e-7 0; 0 1e-7]", tiny},
@@ -104,11 +104,11 @@ Table nearly_singular_table(Worst& closed_worst, Worst& lu_worst) {
 
 // Step 3: where the closed form fails, a nearly singular 2x2, against GSL LU.
 void show_a_nearly_singular_2x2(LabSession& session) {
-  session.begin_step("Where it fails: a nearly singular 2x2",
-                     "A = [1 1; 1 1+d], b = A * (0.1, 0.7), rounded. As d shrinks the rows become parallel and "
-                     "kappa grows like 4/d. The closed form's forward error grows like kappa * eps: it multiplies "
-                     "b by the rounded entries of A^-1 (as large as 1/d) and then subtracts, so each rounding is "
-                     "amplified by 1/d. At d = 1e-16, 1+d rounds to 1: exactly singular, and both methods say so.");
+  if (!session.begin_step("Where it fails: a nearly singular 2x2",
+                          "A = [1 1; 1 1+d], b = A * (0.1, 0.7), rounded. As d shrinks the rows become parallel and "
+                          "kappa grows like 4/d. The closed form's forward error grows like kappa * eps: it multiplies "
+                          "b by the rounded entries of A^-1 (as large as 1/d) and then subtracts, so each rounding is "
+                          "amplified by 1/d. At d = 1e-16, 1+d rounds to 1: exactly singular, and both methods say so.")) return;
   Worst closed_worst, lu_worst;
   const Table nearly = nearly_singular_table(closed_worst, lu_worst);
   session.show(nearly, "nearly-singular");
@@ -126,9 +126,9 @@ void show_a_nearly_singular_2x2(LabSession& session) {
 
 // Step 4: the closed form against GEPP, GSL LU and Eigen LU on A.
 void compare_with_gsl(LabSession& session, const Eigen::Matrix2d& A) {
-  session.begin_step("The closed form against GSL",
-                     "A = [4 3; 6 3], b = A * (1, 1). Both are exact to rounding here; the closed form needs no "
-                     "pivoting, workspace or loop, which is why seed 003 uses it inside every Newton iteration.");
+  if (!session.begin_step("The closed form against GSL",
+                          "A = [4 3; 6 3], b = A * (1, 1). Both are exact to rounding here; the closed form needs no "
+                          "pivoting, workspace or loop, which is why seed 003 uses it inside every Newton iteration.")) return;
   const Eigen::Vector2d exact(1, 1);
   session.show(linear_comparison_table(A, A * exact, exact, {"inverse2x2", "gepp", "gsl-lu", "eigen-lu"}), "comparison");
 }

@@ -9,11 +9,13 @@
 
 #include "bench/bench_jansen.hpp"
 #include "output/chart.hpp"
-#include "cli/cli_common.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
+#include "output/format.hpp"
 #include "scenes/jansen_scene.hpp"
 #include "lessons/lab.hpp"
 #include "lessons/lab_sentences.hpp"
-#include "commands/nonlinear_methods.hpp"
+#include "methods/nonlinear_methods.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/jacobian_check.hpp"
@@ -76,14 +78,14 @@ void show_cycle_comparison(LabSession& session, const std::vector<JansenBenchRow
 // Step 1 of lab jansen: Newton with its trace on seed 000's model at the seed's crank angle, the
 // pose checked against the circle-intersection solution.
 void solve_at_the_seed_angle(LabSession& session, const mechanisms::JansenLeg& leg) {
-  session.begin_step("Seed 000's model at the seed's own angle",
-                     "Eight loop-closure equations in theta1 ... theta8 at crank angle theta_i = 1.57 rad, solved by "
-                     "Newton (hand-written GEPP inside) from seed 000's Table 3 estimates.");
+  if (!session.begin_step("Seed 000's model at the seed's own angle",
+                          "Eight loop-closure equations in theta1 ... theta8 at crank angle theta_i = 1.57 rad, solved by "
+                          "Newton (hand-written GEPP inside) from seed 000's Table 3 estimates.")) return;
   const JansenClosure closure(JansenClosure::seed_crank_angle);
   const nonlinear::AsDynamicSystem dynamic(closure);
   NonlinearSettings settings;
   settings.options.residual_tolerance = 1e-10;
-  NewtonTracer tracer(&session.out(), false);
+  NewtonTracer tracer(&session.out(), nullptr);
   const NonlinearRun run =
       run_nonlinear_method("newton", dynamic, Eigen::VectorXd(JansenClosure::seed_estimates()), settings, &tracer);
   session.out() << "  " << run.termination << "\n\n";
@@ -99,7 +101,7 @@ void solve_at_the_seed_angle(LabSession& session, const mechanisms::JansenLeg& l
 
 // Step 2: the hand-derived Jacobian against central finite differences at the seed's estimates.
 void check_the_jacobian(LabSession& session) {
-  session.begin_step("Is the Jacobian right?", "The hand-derived 8x8 Jacobian against central finite differences:");
+  if (!session.begin_step("Is the Jacobian right?", "The hand-derived 8x8 Jacobian against central finite differences:")) return;
   const JansenClosure closure(JansenClosure::seed_crank_angle);
   const nonlinear::AsDynamicSystem dynamic(closure);
   const auto check = nonlinear::check_jacobian(dynamic, Eigen::VectorXd(JansenClosure::seed_estimates()));
@@ -109,13 +111,13 @@ void check_the_jacobian(LabSession& session) {
 
 // Step 3: one crank cycle by every solver, timed and checked against the closed form.
 void compare_every_solver_over_a_cycle(LabSession& session) {
-  session.begin_step("One crank cycle, every solver, against the closed form",
-                     "360 poses, 1 degree apart, Newton tolerance 1e-10, each pose warm-started by extrapolating the "
-                     "two before it. 'error' is the worst distance of any joint from the circle-intersection "
-                     "solution over the cycle; times are medians of repeated runs. Every closure but one takes "
-                     "its sines and cosines from a table (std::cos and std::sin at the nodes k/64, then a short "
-                     "series); 'full, std::sin' is full Newton on the closure as written, calling the library: the "
-                     "difference between it and 'full' is what the table saves.");
+  if (!session.begin_step("One crank cycle, every solver, against the closed form",
+                          "360 poses, 1 degree apart, Newton tolerance 1e-10, each pose warm-started by extrapolating the "
+                          "two before it. 'error' is the worst distance of any joint from the circle-intersection "
+                          "solution over the cycle; times are medians of repeated runs. Every closure but one takes "
+                          "its sines and cosines from a table (std::cos and std::sin at the nodes k/64, then a short "
+                          "series); 'full, std::sin' is full Newton on the closure as written, calling the library: the "
+                          "difference between it and 'full' is what the table saves.")) return;
   const auto rows = bench_jansen(JansenModel::eight_equations, 1e-10, false);
   show_cycle_comparison(session, rows);
 }
@@ -146,11 +148,11 @@ Stance stance_of(const mechanisms::JansenLeg& leg, const mechanisms::JansenSweep
 
 // Step 4: the foot's speed from one more solve with the Jacobian, against finite differences.
 void show_the_foot_speed(LabSession& session, const mechanisms::JansenLeg& leg, const mechanisms::JansenSweep& cycle) {
-  session.begin_step("How fast does the foot move?",
-                     "Differentiating the closure f(theta; theta_i) = 0 with respect to the crank angle gives "
-                     "J dtheta/dtheta_i = -df/dtheta_i: one more 8x8 solve with the Jacobian already at hand gives "
-                     "every angular rate, and the foot velocity follows from F = P1 + l7 u(theta7) + l9 u(theta8 + c). "
-                     "Speeds are per radian of crank; the check is a central difference of the closed-form foot.");
+  if (!session.begin_step("How fast does the foot move?",
+                          "Differentiating the closure f(theta; theta_i) = 0 with respect to the crank angle gives "
+                          "J dtheta/dtheta_i = -df/dtheta_i: one more 8x8 solve with the Jacobian already at hand gives "
+                          "every angular rate, and the foot velocity follows from F = P1 + l7 u(theta7) + l9 u(theta8 + c). "
+                          "Speeds are per radian of crank; the check is a central difference of the closed-form foot.")) return;
   Table speeds({"crank (deg)", "foot speed", "finite difference", "relative difference"});
   double slowest = 1e300, fastest = 0.0, worst_difference = 0.0;
   for (const auto& pose : cycle.poses) {
@@ -181,8 +183,8 @@ void show_the_foot_speed(LabSession& session, const mechanisms::JansenLeg& leg, 
 
 // Step 5: the leg drawn at crank angle 0 with its foot path, and the cycle animated.
 void show_the_scene(LabSession& session, const mechanisms::JansenSweep& cycle) {
-  session.begin_step("The scene", "The leg at crank angle 0 with the whole foot path, and an animation of the cycle "
-                                  "(open either in a browser).");
+  if (!session.begin_step("The scene", "The leg at crank angle 0 with the whole foot path, and an animation of the cycle "
+                                       "(open either in a browser).")) return;
   const std::string still = saved_file(session, "leg.svg", jansen_pose_svg(cycle, 0));
   const std::string animated = saved_file(session, "leg-animated.svg", jansen_animation_svg(cycle, 4.0));
   session.figure(still, "the leg at crank angle 0, with the foot's path over the cycle");
@@ -191,13 +193,13 @@ void show_the_scene(LabSession& session, const mechanisms::JansenSweep& cycle) {
 
 // Step 1 of lab jansen-sequential: the block lower-triangular Jacobian, in words.
 void explain_why_both_find_the_same_pose(LabSession& session) {
-  session.begin_step("Why sequential and full Newton find the same pose",
-                     "Seed 000 solves the eight equations as four 2x2 systems, in order, and argues that the result must "
-                     "differ from the full 8x8 solution because the sequential blocks ignore the derivatives with "
-                     "respect to earlier unknowns. That is not so. The Jacobian is block lower-triangular: equations "
-                     "1-2 contain only theta1, theta2; 3-4 add theta3, theta4; 5-6 only theta6, theta7; 7-8 add "
-                     "theta5, theta8. Solving the blocks in that order solves the whole system exactly; a root of one "
-                     "is a root of the other. What differs is only where each method stops iterating.");
+  if (!session.begin_step("Why sequential and full Newton find the same pose",
+                          "Seed 000 solves the eight equations as four 2x2 systems, in order, and argues that the result must "
+                          "differ from the full 8x8 solution because the sequential blocks ignore the derivatives with "
+                          "respect to earlier unknowns. That is not so. The Jacobian is block lower-triangular: equations "
+                          "1-2 contain only theta1, theta2; 3-4 add theta3, theta4; 5-6 only theta6, theta7; 7-8 add "
+                          "theta5, theta8. Solving the blocks in that order solves the whole system exactly; a root of one "
+                          "is a root of the other. What differs is only where each method stops iterating.")) return;
 }
 
 // Seed 000's Figure 4 drawn from its CSV rows, in the lab's folder.
@@ -220,10 +222,10 @@ ChartFiles draw_figure4(LabSession& session, const std::string& csv) {
 
 // Step 2: seed 000's Figure 4, the feet of full and sequential Newton apart for each tolerance.
 void redraw_figure4(LabSession& session) {
-  session.begin_step("Seed 000's Figure 4, done right",
-                     "For each Newton tolerance: one cycle by full Newton, one by sequential Newton, and the RMSE of "
-                     "the distance between their feet over the 360 poses (seed 000 eq 27). Beside it, each method's "
-                     "own worst error against the closed form.");
+  if (!session.begin_step("Seed 000's Figure 4, done right",
+                          "For each Newton tolerance: one cycle by full Newton, one by sequential Newton, and the RMSE of "
+                          "the distance between their feet over the 360 poses (seed 000 eq 27). Beside it, each method's "
+                          "own worst error against the closed form.")) return;
   Table table({"tolerance", "RMSE full vs sequential", "full: worst error", "sequential: worst error"});
   std::vector<double> rmses, full_errors, sequential_errors;
   std::string csv = "tolerance,rmse_full_vs_sequential,full_error,sequential_error\n";
@@ -258,10 +260,10 @@ void redraw_figure4(LabSession& session) {
 
 // Step 3: the time per cycle of each model and solver, and what the 10-equation model costs.
 void show_what_each_costs(LabSession& session) {
-  session.begin_step("What each costs, and what over-modelling costs",
-                     "The time per cycle at tolerance 1e-10 (medians of repeated runs). Seed 001 models the same leg "
-                     "with 10 equations: two more unknowns and a closure pair for the triangle D-E-F, which is rigid "
-                     "and so needs none: F follows from D and E by a fixed rotation (seed 000 eq 20).");
+  if (!session.begin_step("What each costs, and what over-modelling costs",
+                          "The time per cycle at tolerance 1e-10 (medians of repeated runs). Seed 001 models the same leg "
+                          "with 10 equations: two more unknowns and a closure pair for the triangle D-E-F, which is rigid "
+                          "and so needs none: F follows from D and E by a fixed rotation (seed 000 eq 20).")) return;
   Table costs({"model / solver", "time per cycle", "iterations", "worst error"});
   double full_time[2] = {0.0, 0.0}, full_error[2] = {0.0, 0.0};  // 8 and 10 equations
   for (const JansenModel model : {JansenModel::eight_equations, JansenModel::ten_equations}) {
@@ -308,10 +310,10 @@ int run_jansen_sequential_lab(LabSession& session) {
 }
 
 int run_beest_lab(LabSession& session) {
-  session.begin_step("Four legs from one solved cycle",
-                     "Seed 000's beest walks on four legs. It needs no second solve: each pair shares a crank, its "
-                     "second leg runs half a turn (180 poses) behind the first, and the hind pair is the front pair "
-                     "mirrored. One cycle of 360 poses is solved, then read four times.");
+  if (!session.begin_step("Four legs from one solved cycle",
+                          "Seed 000's beest walks on four legs. It needs no second solve: each pair shares a crank, its "
+                          "second leg runs half a turn (180 poses) behind the first, and the hind pair is the front pair "
+                          "mirrored. One cycle of 360 poses is solved, then read four times.")) return {};
   const auto cycle = full_cycle(JansenModel::eight_equations, "full", 1e-10);
   const std::string still = saved_file(session, "beest.svg", beest_svg(cycle, 0.0));
   const std::string animated = saved_file(session, "beest-animated.svg", beest_svg(cycle, 4.0));

@@ -11,9 +11,11 @@
 #include <numbers>
 
 #include "bench/timing.hpp"
-#include "cli/cli_common.hpp"
-#include "cli/data_dir.hpp"
-#include "commands/linkage_report.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
+#include "output/format.hpp"
+#include "methods/data_dir.hpp"
+#include "output/linkage_report.hpp"
 #include "lessons/lab.hpp"
 #include "lessons/linkage_cycle.hpp"
 #include "lessons/linkage_sentences.hpp"
@@ -359,65 +361,65 @@ int run_linkage_lab(LabSession& session) {
   // The seeds' cycles start at their crank angle 1.57 rad; this one does too.
   const double start_deg = JansenClosure::seed_crank_angle / degrees;
 
-  session.begin_step("The model numlab derives from the file",
-                     "jansen.toml describes seed 000's leg as ground joints, moving joints, five links and two rigid "
-                     "triangles. numlab derives joint coordinates from it: the x and y of every moving joint are the "
-                     "unknowns, each link gives one equation, each triangle one plus two for its third joint, and the "
-                     "crank two. The Jacobian's pattern ('x': the row reads that unknown) orders the equations into "
-                     "blocks that can be solved one after another (numlab mechanism jansen.toml --explain):");
+  if (!session.begin_step("The model numlab derives from the file",
+                          "jansen.toml describes seed 000's leg as ground joints, moving joints, five links and two rigid "
+                          "triangles. numlab derives joint coordinates from it: the x and y of every moving joint are the "
+                          "unknowns, each link gives one equation, each triangle one plus two for its third joint, and the "
+                          "crank two. The Jacobian's pattern ('x': the row reads that unknown) orders the equations into "
+                          "blocks that can be solved one after another (numlab mechanism jansen.toml --explain):")) return {};
   show_derived_model(session, model, file);
 
-  session.begin_step("Full, sequential, closed form and GSL over a crank cycle",
-                     "360 poses, 1 degree apart from the seeds' crank angle 1.57 rad, Newton tolerance 1e-10; each "
-                     "pose starts from the polynomial through the poses before it (as the seeds' models do in numlab "
-                     "bench jansen). Full Newton solves all 12 equations at once (GEPP inside); sequential places "
-                     "the crank and the body points by their formulas and solves each dyad by Newton with the 2x2 "
-                     "closed-form inverse; the closed form "
-                     "intersects circles block by block; GSL's newton is the same method, GSL's code. Times are "
-                     "medians of a few repeated runs; 'distance from seed 000' is the worst distance of any joint "
-                     "from the hand-written leg's circle intersections over the cycle.");
+  if (!session.begin_step("Full, sequential, closed form and GSL over a crank cycle",
+                          "360 poses, 1 degree apart from the seeds' crank angle 1.57 rad, Newton tolerance 1e-10; each "
+                          "pose starts from the polynomial through the poses before it (as the seeds' models do in numlab "
+                          "bench jansen). Full Newton solves all 12 equations at once (GEPP inside); sequential places "
+                          "the crank and the body points by their formulas and solves each dyad by Newton with the 2x2 "
+                          "closed-form inverse; the closed form "
+                          "intersects circles block by block; GSL's newton is the same method, GSL's code. Times are "
+                          "medians of a few repeated runs; 'distance from seed 000' is the worst distance of any joint "
+                          "from the hand-written leg's circle intersections over the cycle.")) return {};
   const std::vector<CycleRow> cycle_rows = show_solvers_compared(session, model, start_deg);
 
-  session.begin_step("Velocity and acceleration, checked",
-                     "Differentiating Phi(q(t); t) = 0 once and twice gives J qdot = -Phi_t and J qddot = gamma, two "
-                     "linear solves with the Jacobian already at hand. At every 45 degrees of a turn they are compared "
-                     "with finite differences of positions solved again by Newton (central, h = 1e-5 rad, for the "
-                     "velocity; the 7-point stencil, h = 0.01 rad, for the acceleration), and the foot's speed with "
-                     "the speed seed 000's own 8x8 rates give (its angles' J, a model written by hand).");
+  if (!session.begin_step("Velocity and acceleration, checked",
+                          "Differentiating Phi(q(t); t) = 0 once and twice gives J qdot = -Phi_t and J qddot = gamma, two "
+                          "linear solves with the Jacobian already at hand. At every 45 degrees of a turn they are compared "
+                          "with finite differences of positions solved again by Newton (central, h = 1e-5 rad, for the "
+                          "velocity; the 7-point stencil, h = 0.01 rad, for the acceleration), and the foot's speed with "
+                          "the speed seed 000's own 8x8 rates give (its angles' J, a model written by hand).")) return {};
   const LinkageSolver full = make_solver(model, "full");
   const LinkageSweep sweep = linkage_sweep(full, 0.0, 359.0, 1.0);
   const bool derivatives_solved = show_derivative_check(session, full, sweep);
 
-  session.begin_step("A transmission angle approaching a limit",
-                     "mustang.toml, seed 003's roof linkage, assembles only up to about 56.45 degrees of its input. A "
-                     "sweep finds where it stops and bisects to 0.01 deg; the dyad that cannot close beyond it is "
-                     "named. Then poses closer and closer to the limit: the dyad's transmission angle (between its two "
-                     "links at its joint, 90 at best), its margin (how far its links are from lining up), kappa_2(J) of "
-                     "the whole 20x20 model and the joint's speed per radian of input.");
+  if (!session.begin_step("A transmission angle approaching a limit",
+                          "mustang.toml, seed 003's roof linkage, assembles only up to about 56.45 degrees of its input. A "
+                          "sweep finds where it stops and bisects to 0.01 deg; the dyad that cannot close beyond it is "
+                          "named. Then poses closer and closer to the limit: the dyad's transmission angle (between its two "
+                          "links at its joint, 90 at best), its margin (how far its links are from lining up), kappa_2(J) of "
+                          "the whole 20x20 model and the joint's speed per radian of input.")) return {};
   const bool limit_found = show_limit_approach(session);
 
-  session.begin_step("Two branches cross: the parallelogram four-bar",
-                     "parallelogram.toml (crank = rocker, coupler = ground) lies flat at crank 0: every joint on the "
-                     "ground line, J singular, and there its branch crosses the anti-parallelogram's. A sweep from "
-                     "-10 to 10 deg lands on the crossing. Each pose is predicted by the quadratic through the poses "
-                     "before it, which carries the smooth branch through; on the crossing itself J gives no velocity, so "
-                     "the sweep takes it from positions solved along the branch. The last column is the other branch, "
-                     "from sweeps with --at-crossing switch.");
+  if (!session.begin_step("Two branches cross: the parallelogram four-bar",
+                          "parallelogram.toml (crank = rocker, coupler = ground) lies flat at crank 0: every joint on the "
+                          "ground line, J singular, and there its branch crosses the anti-parallelogram's. A sweep from "
+                          "-10 to 10 deg lands on the crossing. Each pose is predicted by the quadratic through the poses "
+                          "before it, which carries the smooth branch through; on the crossing itself J gives no velocity, so "
+                          "the sweep takes it from positions solved along the branch. The last column is the other branch, "
+                          "from sweeps with --at-crossing switch.")) return {};
   const bool crossing_followed = show_crossing(session);
 
-  session.begin_step("The scene",
-                     "The leg at crank angle 0 with every moving joint's path over the turn and its velocity per "
-                     "radian of crank as an arrow, and the turn animated (open the SVG files in a browser).");
+  if (!session.begin_step("The scene",
+                          "The leg at crank angle 0 with every moving joint's path over the turn and its velocity per "
+                          "radian of crank as an arrow, and the turn animated (open the SVG files in a browser).")) return {};
   const std::string still = lab_file(session, "jansen-toml.svg", linkage_pose_svg(model, sweep, 0, true));
   const std::string animated = lab_file(session, "jansen-toml-animated.svg", linkage_animation_svg(model, sweep, 4.0));
   session.figure(still, "jansen.toml at crank angle 0: joint paths dashed, velocities as arrows");
   session.figure(animated, "one crank turn of jansen.toml, animated (4 s per turn)");
 
-  session.begin_step("Over-modelling: the same leg three ways",
-                     "Seed 001 writes the leg as 10 loop-closure angles (a closure pair for the triangle D-E-F, which "
-                     "is rigid), seed 000 as 8, and the file gives 12 joint coordinates. Each by full Newton (GEPP) over "
-                     "the same cycle at the same tolerance, each timed as numlab bench jansen times the seeds' "
-                     "models (the pose solves alone). 'Jacobian nonzeros' counts the entries of J that are not zero at seed 000's pose.");
+  if (!session.begin_step("Over-modelling: the same leg three ways",
+                          "Seed 001 writes the leg as 10 loop-closure angles (a closure pair for the triangle D-E-F, which "
+                          "is rigid), seed 000 as 8, and the file gives 12 joint coordinates. Each by full Newton (GEPP) over "
+                          "the same cycle at the same tolerance, each timed as numlab bench jansen times the seeds' "
+                          "models (the pose solves alone). 'Jacobian nonzeros' counts the entries of J that are not zero at seed 000's pose.")) return {};
   show_over_modelling(session, model, row_of(cycle_rows, "full"));
 
   const bool cycles_converged = std::all_of(cycle_rows.begin(), cycle_rows.end(),

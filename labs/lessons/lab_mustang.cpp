@@ -7,7 +7,9 @@
 #include <numbers>
 
 #include "bench/bench_mustang.hpp"
-#include "cli/cli_common.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
+#include "output/format.hpp"
 #include "lessons/lab.hpp"
 #include "lessons/lab_sentences.hpp"
 #include "scenes/mustang_scene.hpp"
@@ -62,12 +64,12 @@ MustangSweep fixed_sweep(const std::string& solver, double start, double stop, d
 
 // Step 1: the model's four loops, and its hand-derived Jacobian checked against finite differences.
 void show_the_model(LabSession& session, const MustangStart& start) {
-  session.begin_step("The model",
-                     "Seed 003's four loops, each a 2x2 system: (A, B) closes 1-2-4-3, (C, D) closes 0-2-6-5, "
-                     "(E, F) closes 6-7-10-8 given C, (G, H) closes 8-10-11-9 given C and F. The three major links "
-                     "are rigid bodies bent by 20 degrees. The model's assumptions are written next to the code "
-                     "(mechanisms/mustang_closure.hpp, mustang_linkage.hpp). First, the hand-derived 8x8 Jacobian "
-                     "against central finite differences at the seed's start:");
+  if (!session.begin_step("The model",
+                          "Seed 003's four loops, each a 2x2 system: (A, B) closes 1-2-4-3, (C, D) closes 0-2-6-5, "
+                          "(E, F) closes 6-7-10-8 given C, (G, H) closes 8-10-11-9 given C and F. The three major links "
+                          "are rigid bodies bent by 20 degrees. The model's assumptions are written next to the code "
+                          "(mechanisms/mustang_closure.hpp, mustang_linkage.hpp). First, the hand-derived 8x8 Jacobian "
+                          "against central finite differences at the seed's start:")) return;
   const MustangClosure closure(45.0 * degrees);
   const auto check = nonlinear::check_jacobian(nonlinear::AsDynamicSystem(closure), Eigen::VectorXd(start.x));
   session.say(fmt::format("{} (worst entry {}). It is block lower-triangular: each loop reads only the loops before it.",
@@ -76,11 +78,11 @@ void show_the_model(LabSession& session, const MustangStart& start) {
 
 // Step 2: the seed's method run as written on the seed's own grid, and where it stops.
 void show_the_seed_method_as_written(LabSession& session, const MustangLinkage& linkage) {
-  session.begin_step("Seed 003's method as written",
-                     "At every theta each loop restarts from [pi/18, pi/2]; Newton stops when |f_i + f_j| <= 0.001; "
-                     "loop 3's second Jacobian row has both signs flipped and loop 4's dJ/dH reads D for H; |2 6| is "
-                     "rounded to 4.698. The seed's loop has no iteration limit (its program hung); here it stops after "
-                     "500 iterations. The seed's own grid: theta from pi/6 to pi/3 in steps of 0.05 rad.");
+  if (!session.begin_step("Seed 003's method as written",
+                          "At every theta each loop restarts from [pi/18, pi/2]; Newton stops when |f_i + f_j| <= 0.001; "
+                          "loop 3's second Jacobian row has both signs flipped and loop 4's dJ/dH reads D for H; |2 6| is "
+                          "rounded to 4.698. The seed's loop has no iteration limit (its program hung); here it stops after "
+                          "500 iterations. The seed's own grid: theta from pi/6 to pi/3 in steps of 0.05 rad.")) return;
   Table seed_table({"theta (deg)", "loop 1", "loop 2", "loop 3", "loop 4", "|f_i + f_j| (loop 4)", "||f||_inf", "verdict"});
   const SeedMethodOptions as_written;
   std::vector<LoopOutcome> loop3;  // how loop 3 ended at each theta
@@ -107,10 +109,10 @@ void show_the_seed_method_as_written(LabSession& session, const MustangLinkage& 
 
 // Step 3: the seed's errors fixed one after another, each variant counted over the assembly range.
 void show_each_error_in_turn(LabSession& session, const MustangLinkage& linkage, const MustangStart& start) {
-  session.begin_step("Each error in turn",
-                     "The same method over theta = -41 ... 56 deg (1 deg apart, inside the assembly range found "
-                     "below), fixing one error after another. 'on branch' counts poses within 1e-2 of the closed "
-                     "form on the seed's branch.");
+  if (!session.begin_step("Each error in turn",
+                          "The same method over theta = -41 ... 56 deg (1 deg apart, inside the assembly range found "
+                          "below), fixing one error after another. 'on branch' counts poses within 1e-2 of the closed "
+                          "form on the seed's branch.")) return;
   struct Variant {
     const char* name;
     SeedMethodOptions options;
@@ -150,10 +152,10 @@ void show_each_error_in_turn(LabSession& session, const MustangLinkage& linkage,
 // Step 4: the fixed method (continuation) over the whole range with full and sequential Newton;
 // full_trace keeps every solve of the full sweep. Returns the full sweep, whose verdict is the lab's.
 MustangSweep show_the_fixed_method_over_the_range(LabSession& session, SweepRecorder<MustangSweepStepper>& full_trace) {
-  session.begin_step("The fixed method over the whole range",
-                     "Continuation from the seed's start at 45 deg (every loop from [pi/18, pi/2], damped), a predictor "
-                     "from the last two poses, and step halving that becomes a bisection on theta near a limit. "
-                     "Sweep -90:90:0.5 with full and sequential Newton:");
+  if (!session.begin_step("The fixed method over the whole range",
+                          "Continuation from the seed's start at 45 deg (every loop from [pi/18, pi/2], damped), a predictor "
+                          "from the last two poses, and step halving that becomes a bisection on theta near a limit. "
+                          "Sweep -90:90:0.5 with full and sequential Newton:")) return {};
   const MustangSweep full = fixed_sweep("full", -90.0, 90.0, 0.5, &full_trace);
   const MustangSweep sequential = fixed_sweep("sequential", -90.0, 90.0, 0.5);
   double agreement = 0.0;
@@ -181,11 +183,11 @@ MustangSweep show_the_fixed_method_over_the_range(LabSession& session, SweepReco
 
 // Step 5: every solve the sweep tried near the upper limit, where the step halves into a bisection.
 void show_the_sweep_near_the_upper_limit(LabSession& session, const SweepRecorder<MustangSweepStepper>& full_trace) {
-  session.begin_step("Newton near the upper limit",
-                     "Every solve the sweep tried above 55 deg: the step halves into a bisection, Newton needs more "
-                     "iterations, and the Jacobian's condition grows as the loop's margin goes to zero (a fold: two "
-                     "assemblies of loop 3 meet and J is singular there). Then one solve at a time, iteration by "
-                     "iteration.");
+  if (!session.begin_step("Newton near the upper limit",
+                          "Every solve the sweep tried above 55 deg: the step halves into a bisection, Newton needs more "
+                          "iterations, and the Jacobian's condition grows as the loop's margin goes to zero (a fold: two "
+                          "assemblies of loop 3 meet and J is singular there). Then one solve at a time, iteration by "
+                          "iteration.")) return;
   Table near({"theta (deg)", "step", "iterations", "||f||_inf", "kappa(J)", "margin", "status", "kept"});
   for (const auto& attempt : full_trace.attempts()) {
     if (attempt.crank_deg < 55.0) continue;
@@ -227,8 +229,8 @@ void show_newton_iterations_near_the_limit(LabSession& session, const MustangLin
 
 // Step 6: the linkage drawn at 45 deg with its roof tip's path, and the sweep animated.
 void show_the_scenes(LabSession& session) {
-  session.begin_step("The scenes", "The linkage at 45 deg with the path of the roof tip P12, and the sweep animated "
-                                   "forth and back (open the SVG files in a browser).");
+  if (!session.begin_step("The scenes", "The linkage at 45 deg with the path of the roof tip P12, and the sweep animated "
+                                        "forth and back (open the SVG files in a browser).")) return;
   const MustangSweep scene = fixed_sweep("full", -41.0, 56.0, 1.0);
   std::size_t at45 = 0;
   while (at45 + 1 < scene.poses.size() && scene.poses[at45].crank_deg < 45.0) ++at45;
@@ -240,8 +242,8 @@ void show_the_scenes(LabSession& session) {
 
 // Step 7: every solver timed over the range, as ratios to full Newton.
 void compare_every_solver(LabSession& session) {
-  session.begin_step("Every solver over the range", "One sweep -41:56:0.5 per solver (median of repeated runs, "
-                                                    "tolerance 1e-10), as ratios to full Newton:");
+  if (!session.begin_step("Every solver over the range", "One sweep -41:56:0.5 per solver (median of repeated runs, "
+                                                         "tolerance 1e-10), as ratios to full Newton:")) return;
   const auto rows = bench_mustang(1e-10, true);
   Table compare({"solver", "time per sweep (s)", "x full", "iterations", "error"});
   for (const auto& row : rows) {

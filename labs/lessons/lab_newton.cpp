@@ -9,7 +9,7 @@
 #include "lessons/lab.hpp"
 #include "lessons/forcing_sentences.hpp"
 #include "lessons/lab_sentences.hpp"
-#include "commands/nonlinear_methods.hpp"
+#include "methods/nonlinear_methods.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
 #include "numlab/nonlinear/block_order.hpp"
@@ -17,7 +17,7 @@
 #include "numlab/nonlinear/jacobian_check.hpp"
 #include "numlab/nonlinear/sequential_newton.hpp"
 #include "numlab/nonlinear/mgh_problems.hpp"
-#include "commands/seed001_system.hpp"
+#include "methods/seed001_system.hpp"
 #include "bench/timing.hpp"
 #include "output/trace_printers.hpp"
 
@@ -54,22 +54,22 @@ std::string distance_text(const nonlinear::TestProblem& problem, const Eigen::Ve
 }
 
 void show_quadratic_convergence(LabSession& session) {
-  session.begin_step("Newton's method, one iteration at a time",
-                     "Each iteration solves J(x) dx = -f(x) (here by the hand-written GEPP) and moves to x + dx. Near "
-                     "a root where J is nonsingular the residual is squared each time: the number of correct digits "
-                     "doubles. Rosenbrock's system from its standard start (-1.2, 1):");
+  if (!session.begin_step("Newton's method, one iteration at a time",
+                          "Each iteration solves J(x) dx = -f(x) (here by the hand-written GEPP) and moves to x + dx. Near "
+                          "a root where J is nonsingular the residual is squared each time: the number of correct digits "
+                          "doubles. Rosenbrock's system from its standard start (-1.2, 1):")) return;
   const nonlinear::TestProblem problem = nonlinear::make_test_problem("rosenbrock");
-  NewtonTracer tracer(&session.out(), false);
+  NewtonTracer tracer(&session.out(), nullptr);
   const NonlinearRun run =
       run_nonlinear_method("newton", *problem.system, problem.standard_start, lab_settings(false), &tracer);
   session.out() << "  " << run.termination << "\n\n";
 }
 
 void show_jacobian_checks(LabSession& session) {
-  session.begin_step("Is the Jacobian right?",
-                     "A wrong Jacobian entry does not stop Newton from running; it only slows it down or sends it "
-                     "elsewhere. numlab compares each hand-derived Jacobian, entry by entry, with central finite "
-                     "differences and with Eigen's AutoDiff (exact to rounding), and names the worst entry.");
+  if (!session.begin_step("Is the Jacobian right?",
+                          "A wrong Jacobian entry does not stop Newton from running; it only slows it down or sends it "
+                          "elsewhere. numlab compares each hand-derived Jacobian, entry by entry, with central finite "
+                          "differences and with Eigen's AutoDiff (exact to rounding), and names the worst entry.")) return;
   Table problems({"problem", "worst entry", "relative error", "finite differences vs AutoDiff", "verdict"});
   for (const std::string& name : nonlinear::test_problem_names()) {
     const nonlinear::TestProblem problem = nonlinear::make_test_problem(name);
@@ -92,10 +92,10 @@ void show_jacobian_checks(LabSession& session) {
 }
 
 void show_comparison(LabSession& session) {
-  session.begin_step("Hand-written Newton against GSL's eight multiroot types",
-                     "Every problem from its standard start, residual tolerance 1e-10, at most 100 iterations. "
-                     "'distance' is ||x - x*||_inf to the known root; discrete-bvp and broyden-tridiagonal have no "
-                     "closed-form root. Times are medians of repeated runs.");
+  if (!session.begin_step("Hand-written Newton against GSL's eight multiroot types",
+                          "Every problem from its standard start, residual tolerance 1e-10, at most 100 iterations. "
+                          "'distance' is ||x - x*||_inf to the known root; discrete-bvp and broyden-tridiagonal have no "
+                          "closed-form root. Times are medians of repeated runs.")) return;
   for (const std::string& name : nonlinear::test_problem_names()) {
     const nonlinear::TestProblem problem = nonlinear::make_test_problem(name);
     Table table({"method", "status", "iterations", "||f||_inf", "distance", "f evals", "J evals", "time"});
@@ -123,12 +123,12 @@ std::string point_text(const Eigen::VectorXd& x) {
 // Records every iteration, for the rate and the inner sweep counts.
 struct Recorder : NewtonTraceObserver {
   std::vector<nonlinear::NewtonRecord> records;
-  void on_record(const nonlinear::NewtonRecord& record, int) override { records.push_back(record); }
+  StepControl on_record(const nonlinear::NewtonRecord& record, int) override { records.push_back(record); return StepControl::proceed; }
 };
 
 void show_failures(LabSession& session) {
-  session.begin_step("Where Newton fails, or succeeds at the wrong thing",
-                     "Each case below is run now; the numbers are this run's.");
+  if (!session.begin_step("Where Newton fails, or succeeds at the wrong thing",
+                          "Each case below is run now; the numbers are this run's.")) return;
 
   // Powell singular: linear convergence.
   const nonlinear::TestProblem powell = nonlinear::make_test_problem("powell-singular");
@@ -192,9 +192,9 @@ void show_failures(LabSession& session) {
 }
 
 void show_linear_solvers(LabSession& session) {
-  session.begin_step("The inner linear solver",
-                     "Newton only needs J dx = -f solved; any linalg method will do, picked with --linear. Broyden "
-                     "tridiagonal (n = 10), from its standard start:");
+  if (!session.begin_step("The inner linear solver",
+                          "Newton only needs J dx = -f solved; any linalg method will do, picked with --linear. Broyden "
+                          "tridiagonal (n = 10), from its standard start:")) return;
   const nonlinear::TestProblem problem = nonlinear::make_test_problem("broyden-tridiagonal");
   Table table({"--linear", "status", "iterations", "inner sweeps", "||f||_inf", "time"});
   SolverCost gepp_cost{"GEPP", 0.0, 0}, seidel_cost{"Gauss-Seidel", 0.0, 0};
@@ -227,10 +227,10 @@ void show_linear_solvers(LabSession& session) {
 }
 
 void show_sequential(LabSession& session) {
-  session.begin_step("Sequential Newton, with blocks found from the Jacobian's pattern",
-                     "Seed 000 solves the Jansen leg's 8 closure equations as four 2x2 systems. numlab finds those "
-                     "blocks itself: it pairs each equation with an unknown (a matching), then groups unknowns that "
-                     "depend on each other (strongly connected components); that order is block lower-triangular.");
+  if (!session.begin_step("Sequential Newton, with blocks found from the Jacobian's pattern",
+                          "Seed 000 solves the Jansen leg's 8 closure equations as four 2x2 systems. numlab finds those "
+                          "blocks itself: it pairs each equation with an unknown (a matching), then groups unknowns that "
+                          "depend on each other (strongly connected components); that order is block lower-triangular.")) return;
   using mechanisms::JansenClosure;
   const JansenClosure closure(JansenClosure::seed_crank_angle);
   const nonlinear::AsDynamicSystem dynamic(closure);
@@ -300,7 +300,7 @@ ForcingRun jansen_pose_run(const std::string& forcing, double& seconds) {
   using PoseNewton = nonlinear::Newton<JansenClosure, linalg::GaussSeidel<8>>;
   struct SweepCounter final : PoseNewton::Observer {
     int sweeps = 0;
-    void on_step(const PoseNewton&, const nonlinear::NewtonRecord& record) override { sweeps += record.linear_iterations; }
+    StepControl on_step(const PoseNewton&, const nonlinear::NewtonRecord& record) override { sweeps += record.linear_iterations; return StepControl::proceed; }
   };
   const JansenClosure closure(JansenClosure::seed_crank_angle);
   nonlinear::NewtonOptions options = lab_settings(false).options;
@@ -315,15 +315,15 @@ ForcingRun jansen_pose_run(const std::string& forcing, double& seconds) {
 }
 
 void show_forcing_terms(LabSession& session) {
-  session.begin_step(
-      "Inexact Newton: how accurately to solve J dx = -f",
-      "An iterative inner solver need only reach ||J dx + f|| <= eta_k ||f||, eta_k the forcing term "
-      "(Dembo, Eisenstat & Steihaug). A large eta_k saves inner sweeps and costs outer iterations; a small one "
-      "the other way round. Eisenstat & Walker's Choice 2 sets eta_k = 0.9 (||f_k|| / ||f_k-1||)^2 with "
-      "safeguards: loose while ||f|| falls slowly, tight once Newton converges fast. 'none' is the inner "
-      "solver's own stop test (Gauss-Seidel: an update below 1e-9), as before forcing terms. Newton with "
-      "Gauss-Seidel on the normal equations, residual tolerance 1e-10, at most 100 iterations; times are "
-      "medians of repeated runs.");
+  if (!session.begin_step(
+           "Inexact Newton: how accurately to solve J dx = -f",
+           "An iterative inner solver need only reach ||J dx + f|| <= eta_k ||f||, eta_k the forcing term "
+           "(Dembo, Eisenstat & Steihaug). A large eta_k saves inner sweeps and costs outer iterations; a small one "
+           "the other way round. Eisenstat & Walker's Choice 2 sets eta_k = 0.9 (||f_k|| / ||f_k-1||)^2 with "
+           "safeguards: loose while ||f|| falls slowly, tight once Newton converges fast. 'none' is the inner "
+           "solver's own stop test (Gauss-Seidel: an update below 1e-9), as before forcing terms. Newton with "
+           "Gauss-Seidel on the normal equations, residual tolerance 1e-10, at most 100 iterations; times are "
+           "medians of repeated runs.")) return;
   const double tolerance = lab_settings(false).options.residual_tolerance;
   for (const bool jansen : {false, true}) {
     Table table({"--forcing", "status", "outer iterations", "inner sweeps", "||f||_inf", "time"});

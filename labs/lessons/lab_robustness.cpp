@@ -89,11 +89,11 @@ Table difference_table(const RobustnessResults& results, const std::string& firs
 }
 
 void show_test_set(LabSession& session, const RobustnessResults& results) {
-  session.begin_step("The test set, the solvers, and what counts as solved",
-                     "The cases are those of MINPACK's test driver for hybrj (Moré, Garbow & Hillstrom): each problem "
-                     "at the driver's size, from its standard start x0 and, where the driver uses them, from 10 x0 "
-                     "and 100 x0. Every solver runs every case with the same budget; a run counts as solved only "
-                     "when the residual at the point it returns is small, whatever the solver itself reported.");
+  if (!session.begin_step("The test set, the solvers, and what counts as solved",
+                          "The cases are those of MINPACK's test driver for hybrj (Moré, Garbow & Hillstrom): each problem "
+                          "at the driver's size, from its standard start x0 and, where the driver uses them, from 10 x0 "
+                          "and 100 x0. Every solver runs every case with the same budget; a run counts as solved only "
+                          "when the residual at the point it returns is small, whatever the solver itself reported.")) return;
   std::map<std::string, int> problems;
   for (const auto& test_case : results.cases) ++problems[test_case.problem];
   std::string definition = solved_definition();
@@ -105,11 +105,11 @@ void show_test_set(LabSession& session, const RobustnessResults& results) {
 
 void show_plain_failures(LabSession& session, const RobustnessResults& results) {
   const std::string plain = "newton-gepp";
-  session.begin_step("Where plain Newton fails, and why",
-                     "Plain Newton takes the full step J dx = -f every time. Each failure below is named by the status "
-                     "the solver stopped with: max_iterations (the budget ran out while the iterates wandered), "
-                     "no_progress (the steps became negligible away from a root), singular (J could not be "
-                     "solved), diverged or non_finite (the iterates ran away).");
+  if (!session.begin_step("Where plain Newton fails, and why",
+                          "Plain Newton takes the full step J dx = -f every time. Each failure below is named by the status "
+                          "the solver stopped with: max_iterations (the budget ran out while the iterates wandered), "
+                          "no_progress (the steps became negligible away from a root), singular (J could not be "
+                          "solved), diverged or non_finite (the iterates ran away).")) return;
   const auto failed = failures_of(results, plain);
   session.show(failure_table(results, failed), "plain-failures");
   session.say(fmt::format("{} solves {} cases. It fails on {}: {}.", plain,
@@ -120,11 +120,11 @@ void show_plain_failures(LabSession& session, const RobustnessResults& results) 
 void show_damping(LabSession& session, const RobustnessResults& results) {
   const std::string plain = "newton-gepp";
   const std::string damped = "damped-gepp";
-  session.begin_step("What damping buys",
-                     "Damped Newton halves the step until ||f||_2^2 decreases enough (Armijo). That keeps the "
-                     "iterates from jumping far away, but it also makes them stop where ||f||_2^2 has a local "
-                     "minimum that is not a root: there the line search finds no decrease (no_progress), or the "
-                     "steps stay tiny until the budget ends. The table lists the cases where the two differ.");
+  if (!session.begin_step("What damping buys",
+                          "Damped Newton halves the step until ||f||_2^2 decreases enough (Armijo). That keeps the "
+                          "iterates from jumping far away, but it also makes them stop where ||f||_2^2 has a local "
+                          "minimum that is not a root: there the line search finds no decrease (no_progress), or the "
+                          "steps stay tiny until the budget ends. The table lists the cases where the two differ.")) return;
   session.show(difference_table(results, plain, damped), "damping");
   const auto rescued = solved_only_by(results, damped, plain);
   const auto lost = solved_only_by(results, plain, damped);
@@ -137,11 +137,11 @@ void show_damping(LabSession& session, const RobustnessResults& results) {
 }
 
 void show_dogleg(LabSession& session, const RobustnessResults& results) {
-  session.begin_step("What the hybrid (dogleg) methods buy",
-                     "GSL's hybrid types (hybrids, hybrid, hybridsj, hybridj) are MINPACK's Powell hybrid method: "
-                     "inside a trust region they step along a dogleg between the Newton step and the steepest-"
-                     "descent step, and shrink the region when ||f|| does not decrease. Its other types take "
-                     "Newton (newton, dnewton), globally convergent Newton (gnewton) or Broyden steps.");
+  if (!session.begin_step("What the hybrid (dogleg) methods buy",
+                          "GSL's hybrid types (hybrids, hybrid, hybridsj, hybridj) are MINPACK's Powell hybrid method: "
+                          "inside a trust region they step along a dogleg between the Newton step and the steepest-"
+                          "descent step, and shrink the region when ||f|| does not decrease. Its other types take "
+                          "Newton (newton, dnewton), globally convergent Newton (gnewton) or Broyden steps.")) return;
   Table table({"GSL type", "family", "solved", "cases"});
   std::vector<std::string> dogleg, other;
   for (const std::string& solver : results.solvers) {
@@ -185,9 +185,9 @@ void show_dogleg(LabSession& session, const RobustnessResults& results) {
 }
 
 void show_goal(LabSession& session, const RobustnessResults& results) {
-  session.begin_step("Does damped Newton solve as many cases as GSL's best type?",
-                     "The hand-written damped Newton with each inner solver that runs on every case, against the "
-                     "GSL type that solves the most cases.");
+  if (!session.begin_step("Does damped Newton solve as many cases as GSL's best type?",
+                          "The hand-written damped Newton with each inner solver that runs on every case, against the "
+                          "GSL type that solves the most cases.")) return;
   std::vector<std::string> damped, gsl;
   for (const std::string& solver : profiled_solvers(results)) {
     if (solver.starts_with("damped-")) damped.push_back(solver);
@@ -218,12 +218,12 @@ void show_goal(LabSession& session, const RobustnessResults& results) {
 }
 
 void show_profiles(LabSession& session, const RobustnessResults& results) {
-  session.begin_step("The profiles",
-                     "A performance profile (Dolan & Moré) plots, for each solver, the fraction of cases it solves "
-                     "within tau times the cost of the cheapest solver on that case: the left end is how often it is "
-                     "the cheapest, the right end how often it solves at all. A data profile (Moré & Wild) plots "
-                     "the fraction solved within kappa (n+1) function evaluations, a Jacobian counted as n. Solvers "
-                     "that do not run on every case (inverse2x2, sequential) are in the table, not the profiles.");
+  if (!session.begin_step("The profiles",
+                          "A performance profile (Dolan & Moré) plots, for each solver, the fraction of cases it solves "
+                          "within tau times the cost of the cheapest solver on that case: the left end is how often it is "
+                          "the cheapest, the right end how often it solves at all. A data profile (Moré & Wild) plots "
+                          "the fraction solved within kappa (n+1) function evaluations, a Jacobian counted as n. Solvers "
+                          "that do not run on every case (inverse2x2, sequential) are in the table, not the profiles.")) return;
   const RobustnessFiles files = robustness_files(session.folder());
   write_robustness_files(files, results);
   session.figure(files.time_chart.chart, "performance profile on time");

@@ -8,7 +8,7 @@
 
 #include "lessons/lab.hpp"
 #include "lessons/lab_sentences.hpp"
-#include "commands/linear_methods.hpp"
+#include "methods/linear_methods.hpp"
 #include "numlab/linalg/measures.hpp"
 #include "numlab/linalg/matrix_generators.hpp"
 #include "output/trace_printers.hpp"
@@ -21,7 +21,7 @@ namespace {
 DynamicResult traced_sweeps(LabSession& session, const std::string& method, const Eigen::MatrixXd& A,
                             const Eigen::VectorXd& b, int max_sweeps) {
   constexpr std::size_t first_rows = 12, last_rows = 4;
-  SweepTracer tracer(nullptr, false);  // collects the rows
+  SweepTracer tracer(nullptr, nullptr);  // collects the rows
   LinearSettings settings;
   settings.max_iterations = max_sweeps;
   const DynamicResult result = run_linear_method(method, A, b, settings, {nullptr, &tracer});
@@ -43,21 +43,21 @@ DynamicResult traced_sweeps(LabSession& session, const std::string& method, cons
 }  // namespace
 
 int run_seidel_lab(LabSession& session) {
-  session.begin_step("One sweep at a time",
-                     "Gauss-Seidel solves equation i for x_i using the newest values of the other unknowns, for "
-                     "i = 1..n: one sweep. It stops when the largest change in a sweep, |x_k - x_(k-1)|, is below "
-                     "the tolerance (1e-9, seed 001's default). Seed 001 compared the signed change, so any "
-                     "component that went down passed the test: numlab takes the absolute value. Each row shows "
-                     "the change and the residual of the ORIGINAL system A x = b. Here A is a 5x5 diagonally "
-                     "dominant matrix, swept directly (plain).");
+  if (!session.begin_step("One sweep at a time",
+                          "Gauss-Seidel solves equation i for x_i using the newest values of the other unknowns, for "
+                          "i = 1..n: one sweep. It stops when the largest change in a sweep, |x_k - x_(k-1)|, is below "
+                          "the tolerance (1e-9, seed 001's default). Seed 001 compared the signed change, so any "
+                          "component that went down passed the test: numlab takes the absolute value. Each row shows "
+                          "the change and the residual of the ORIGINAL system A x = b. Here A is a 5x5 diagonally "
+                          "dominant matrix, swept directly (plain).")) return {};
   const linalg::GeneratedSystem dominant = linalg::generate_system("diag-dominant", 5);
   traced_sweeps(session, "gauss-seidel-plain", dominant.A, dominant.b, 100);
 
-  session.begin_step("Where it fails: A = [[1,2,4],[2,1,2],[4,2,1]]",
-                     "This matrix is not diagonally dominant. Swept directly, each sweep multiplies the error by "
-                     "the spectral radius of the Gauss-Seidel iteration matrix, which exceeds 1 here: the changes "
-                     "grow until numlab stops with 'diverged' (when the change has grown 1e8-fold over the first "
-                     "sweep's).");
+  if (!session.begin_step("Where it fails: A = [[1,2,4],[2,1,2],[4,2,1]]",
+                          "This matrix is not diagonally dominant. Swept directly, each sweep multiplies the error by "
+                          "the spectral radius of the Gauss-Seidel iteration matrix, which exceeds 1 here: the changes "
+                          "grow until numlab stops with 'diverged' (when the change has grown 1e8-fold over the first "
+                          "sweep's).")) return {};
   const linalg::GeneratedSystem diverging = linalg::generate_system("gs-diverge", 3);
   traced_sweeps(session, "gauss-seidel-plain", diverging.A, diverging.b, 100);
   session.say("The same system through the normal equations A^T A x = A^T b, as seed 001 does: A^T A is "
@@ -67,10 +67,10 @@ int run_seidel_lab(LabSession& session) {
                           "When each sweep shrinks the error only slightly, the error is many steps long.",
                           normal.step_norm, linalg::forward_error(normal.x, diverging.exact_solution)));
 
-  session.begin_step("The price: sweeps grow with kappa(A)^2",
-                     "kappa(A^T A) = kappa(A)^2, and the convergence rate of Gauss-Seidel on a symmetric positive "
-                     "definite matrix degrades with its condition number. Each A below is 8x8, U diag(1 ... "
-                     "1/kappa) V^T with random orthogonal U and V, so kappa_2(A) is exactly the value shown.");
+  if (!session.begin_step("The price: sweeps grow with kappa(A)^2",
+                          "kappa(A^T A) = kappa(A)^2, and the convergence rate of Gauss-Seidel on a symmetric positive "
+                          "definite matrix degrades with its condition number. Each A below is 8x8, U diag(1 ... "
+                          "1/kappa) V^T with random orthogonal U and V, so kappa_2(A) is exactly the value shown.")) return {};
   Table table({"kappa(A)", "kappa^2", "sweeps (normal equations)", "sweeps / kappa^2", "forward error",
                "plain Gauss-Seidel"});
   std::vector<double> per_kappa2;
@@ -102,10 +102,10 @@ int run_seidel_lab(LabSession& session) {
                           "are not diagonally dominant.",
                           fewest_growth, most_growth, trend_phrase(per_kappa2), count_of(diverged, rows)));
 
-  session.begin_step("Gauss-Seidel against GSL",
-                     "A 100x100 diagonally dominant system (b = A * ones): plain Gauss-Seidel converges in a few "
-                     "sweeps; the normal equations need more (and the O(n^3) product A^T A); the direct "
-                     "solvers need no iteration at all.");
+  if (!session.begin_step("Gauss-Seidel against GSL",
+                          "A 100x100 diagonally dominant system (b = A * ones): plain Gauss-Seidel converges in a few "
+                          "sweeps; the normal equations need more (and the O(n^3) product A^T A); the direct "
+                          "solvers need no iteration at all.")) return {};
   const linalg::GeneratedSystem system = linalg::generate_system("diag-dominant", 100);
   session.show(linear_comparison_table(system.A, system.b, system.exact_solution,
                                        {"gauss-seidel", "gauss-seidel-plain", "gepp", "gsl-lu"}), "comparison");

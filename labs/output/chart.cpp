@@ -14,7 +14,9 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "cli/cli_common.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
+#include "output/format.hpp"
 #include "numlab/printable_text.hpp"
 
 extern char** environ;

@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_common.hpp"
+#include "output/exit_codes.hpp"
+#include "output/files.hpp"
+#include "output/format.hpp"
 
 namespace numlab::cli {
 

@@ -53,7 +53,7 @@ void draw_fit_chart(const ChartFiles& files, const std::string& title, const std
   draw_chart(files, csv, script);
 }
 
-void draw_degree_sweep_chart(const ChartFiles& files, const std::string& title, const std::vector<DegreeSweepRow>& rows) {
+void draw_degree_sweep_chart(const ChartFiles& files, const std::string& title, const std::vector<fitting::DegreeSweepRow>& rows) {
   std::vector<std::string> methods;
   std::vector<int> degrees;
   for (const auto& row : rows) {
@@ -68,7 +68,7 @@ void draw_degree_sweep_chart(const ChartFiles& files, const std::string& title, 
     csv += std::to_string(degree);
     for (const auto& method : methods) {
       const auto row = std::find_if(rows.begin(), rows.end(),
-                                    [&](const DegreeSweepRow& r) { return r.method == method && r.degree == degree; });
+                                    [&](const fitting::DegreeSweepRow& r) { return r.method == method && r.degree == degree; });
       const bool has_fit = row != rows.end() && std::isfinite(row->residual_sd);
       csv += has_fit ? fmt::format(",{:.4g},{:.6g}", row->digits, row->residual_sd) : ",,";
     }

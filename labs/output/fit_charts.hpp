@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "output/chart.hpp"
-#include "lessons/fit_degree_sweep.hpp"
+#include "numlab/fitting/degree_sweep.hpp"
 
 namespace numlab::cli {
 
@@ -21,6 +21,6 @@ struct FitSeries {
 void draw_fit_chart(const ChartFiles& files, const std::string& title, const std::vector<FitSeries>& series);
 
 // Two panels: digits against degree, and residual standard deviation against degree.
-void draw_degree_sweep_chart(const ChartFiles& files, const std::string& title, const std::vector<DegreeSweepRow>& rows);
+void draw_degree_sweep_chart(const ChartFiles& files, const std::string& title, const std::vector<fitting::DegreeSweepRow>& rows);
 
 }  // namespace numlab::cli

@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "cli/cli_common.hpp"
-
 namespace numlab::cli {
 
 namespace {
@@ -46,8 +44,9 @@ void print_augmented(std::ostream& out, const Eigen::MatrixXd& M, const Eigen::V
   }
 }
 
-void EliminationTracer::on_step(const linalg::GaussElimination<Eigen::Dynamic>& state,
-                                const linalg::EliminationRecord& record) {
+StepControl EliminationTracer::on_step(const linalg::GaussElimination<Eigen::Dynamic>& state,
+                                       const linalg::EliminationRecord& record) {
+  if (stopped()) return StepControl::stop;
   const bool show_matrix = record.event != linalg::EliminationEvent::back_substitution &&
                            state.size() <= max_traced_matrix_size;
   static const char* names[] = {"row_swap", "elimination", "back_substitution"};
@@ -60,24 +59,26 @@ void EliminationTracer::on_step(const linalg::GaussElimination<Eigen::Dynamic>& 
   }
   if (show_matrix) entry["augmented"] = rows_of(state.reduced_matrix(), state.reduced_rhs());
   records_.push_back(entry);
-  if (text_out_ == nullptr) return;
+  if (text_out_ == nullptr) return StepControl::proceed;
   *text_out_ << describe(record, record.column + 1 == state.size()) << '\n';
   if (show_matrix) print_augmented(*text_out_, state.reduced_matrix(), state.reduced_rhs());
-  pause_if_stepping(step_);
+  return pause_after_record();
 }
 
-void SweepTracer::on_step(const linalg::GaussSeidel<Eigen::Dynamic>&, const linalg::SweepRecord& record) {
+StepControl SweepTracer::on_step(const linalg::GaussSeidel<Eigen::Dynamic>&, const linalg::SweepRecord& record) {
+  if (stopped()) return StepControl::stop;
   records_.push_back({{"sweep", record.sweep}, {"step_inf", record.step_norm}, {"residual_inf", record.residual_norm}});
-  if (text_out_ == nullptr) return;
+  if (text_out_ == nullptr) return StepControl::proceed;
   if (!header_printed_) {
     *text_out_ << fmt::format("  {:>6}  {:>12}  {:>16}\n", "sweep", "||dx||_inf", "||b - A x||_inf");
     header_printed_ = true;
   }
   *text_out_ << fmt::format("  {:>6}  {:>12.4e}  {:>16.4e}\n", record.sweep, record.step_norm, record.residual_norm);
-  pause_if_stepping(step_);
+  return pause_after_record();
 }
 
-void NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
+StepControl NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
+  if (stopped()) return StepControl::stop;
   const bool has_linear_solve = record.linear_iterations != nonlinear::NewtonRecord::no_linear_solve;
   const bool sequential = block >= 0;
   nlohmann::ordered_json entry = nlohmann::ordered_json::object();
@@ -95,7 +96,7 @@ void NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
   if (chord) entry["jacobian"] = record.jacobian_refactored == 1 ? "refactored" : "reused";
   entry["time_s"] = record.elapsed_s - paused_since_start();
   records_.push_back(entry);
-  if (text_out_ == nullptr) return;
+  if (text_out_ == nullptr) return StepControl::proceed;
   if (!header_printed_) {
     if (sequential) *text_out_ << fmt::format("  {:>5}", "block");
     *text_out_ << fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>9}  {:>7}  {:>10}", "k", "||f||_inf",
@@ -111,7 +112,7 @@ void NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
                             record.elapsed_s - paused_since_start())
              << (chord ? fmt::format("  {:>10}", record.jacobian_refactored == 1 ? "refactored" : "reused") : "")
              << '\n';
-  pause_if_stepping(step_);
+  return pause_after_record();
 }
 
 }  // namespace numlab::cli

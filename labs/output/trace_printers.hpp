@@ -1,14 +1,16 @@
 #pragma once
-// Trace observers for the hand-written linear methods: readable text on a stream, or JSON records
-// collected for the "trace" array. With --step they pause after each record.
+// Trace observers for the hand-written methods: readable text on a stream, or JSON records
+// collected for the "trace" array. With --step they pause after each printed record and return the
+// user's answer to the stepper (StepControl::stop at q ends its run).
 
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "cli/cli_common.hpp"
+#include "output/step_pause.hpp"
 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
+#include "numlab/nonlinear/dogleg.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
@@ -18,18 +20,23 @@
 namespace numlab::cli {
 
 // What every tracer holds: the records collected (for JSON's "trace"), where text goes as each
-// record comes (nullptr: nowhere), and whether to pause after each printed record (--step).
+// record comes (nullptr: nowhere), and the pause after each printed record (--step; nullptr: none).
 class TraceOutput {
  public:
-  TraceOutput(std::ostream* text_out, bool step) : text_out_(text_out), step_(step) {}
+  TraceOutput(std::ostream* text_out, StepPause* pause)
+      : text_out_(text_out), pause_(pause), waited_at_start_(pause ? pause->seconds_waited() : 0.0) {}
   const nlohmann::ordered_json& records() const { return records_; }
 
  protected:
+  // After the user stopped: nothing more is recorded or printed, and the stepper is told to stop.
+  bool stopped() const { return pause_ != nullptr && pause_->stopped(); }
+  // The pause after a printed record, and the user's answer (proceed without a pause).
+  StepControl pause_after_record() const { return pause_ != nullptr ? pause_->after_step() : StepControl::proceed; }
   // Seconds paused at --step since this tracer was made: taken off the times it prints.
-  double paused_since_start() const { return paused_seconds() - paused_at_start_; }
-  double paused_at_start_ = paused_seconds();
+  double paused_since_start() const { return pause_ != nullptr ? pause_->seconds_waited() - waited_at_start_ : 0.0; }
   std::ostream* text_out_;
-  bool step_;
+  StepPause* pause_;
+  double waited_at_start_;
   bool header_printed_ = false;
   nlohmann::ordered_json records_ = nlohmann::ordered_json::array();
 };
@@ -42,31 +49,40 @@ constexpr int max_traced_matrix_size = 12;
 class EliminationTracer : public linalg::GaussElimination<Eigen::Dynamic>::Observer, public TraceOutput {
  public:
   using TraceOutput::TraceOutput;
-  void on_step(const linalg::GaussElimination<Eigen::Dynamic>& state, const linalg::EliminationRecord& record) override;
+  StepControl on_step(const linalg::GaussElimination<Eigen::Dynamic>& state,
+                      const linalg::EliminationRecord& record) override;
 };
 
 // One row per sweep: k, ||dx||_inf, ||b - A x||_inf of the original system.
 class SweepTracer : public linalg::GaussSeidel<Eigen::Dynamic>::Observer, public TraceOutput {
  public:
   using TraceOutput::TraceOutput;
-  void on_step(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) override;
+  StepControl on_step(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) override;
 };
 
 // Newton on a DynamicSystem with its linear method chosen at run time (solve nonlinear --method newton).
 using DynamicNewton = nonlinear::Newton<nonlinear::DynamicReference, nonlinear::RuntimeLinearStep>;
 
-// Every stepper that sends NewtonRecords, behind one interface: Newton, GSL's multiroot adapter and
-// sequential Newton. Whoever prints or keeps the records implements on_record() once; `block` is
+// Every stepper that sends NewtonRecords, behind one interface: Newton, the dogleg, GSL's multiroot
+// adapter and sequential Newton. Whoever prints or keeps the records implements on_record() once; `block` is
 // sequential Newton's block (an index), -1 for the others.
 class NewtonTraceObserver : public DynamicNewton::Observer,
+                            public nonlinear::Dogleg::Observer,
                             public nonlinear::GslMultiroot::Observer,
                             public nonlinear::SequentialNewton::Observer {
  public:
-  virtual void on_record(const nonlinear::NewtonRecord& record, int block) = 0;
-  void on_step(const DynamicNewton&, const nonlinear::NewtonRecord& record) override { on_record(record, -1); }
-  void on_step(const nonlinear::GslMultiroot&, const nonlinear::NewtonRecord& record) override { on_record(record, -1); }
-  void on_step(const nonlinear::SequentialNewton&, const nonlinear::SequentialRecord& record) override {
-    on_record(record.newton, record.block);
+  virtual StepControl on_record(const nonlinear::NewtonRecord& record, int block) = 0;
+  StepControl on_step(const DynamicNewton&, const nonlinear::NewtonRecord& record) override {
+    return on_record(record, -1);
+  }
+  StepControl on_step(const nonlinear::Dogleg&, const nonlinear::NewtonRecord& record) override {
+    return on_record(record, -1);
+  }
+  StepControl on_step(const nonlinear::GslMultiroot&, const nonlinear::NewtonRecord& record) override {
+    return on_record(record, -1);
+  }
+  StepControl on_step(const nonlinear::SequentialNewton&, const nonlinear::SequentialRecord& record) override {
+    return on_record(record.newton, record.block);
   }
 };
 
@@ -76,7 +92,7 @@ class NewtonTraceObserver : public DynamicNewton::Observer,
 class NewtonTracer : public NewtonTraceObserver, public TraceOutput {
  public:
   using TraceOutput::TraceOutput;
-  void on_record(const nonlinear::NewtonRecord& record, int block) override;
+  StepControl on_record(const nonlinear::NewtonRecord& record, int block) override;
 };
 
 // Prints [M | c] with aligned columns, each line indented.

@@ -219,16 +219,20 @@ void JansenSweepStepper::start(double start_deg, double stop_deg, double step_de
   walk_to_deg_ = nearest_turn(start_deg, current_deg_);  // the same pose as start_deg, at most 180 deg away
   phase_ = Phase::seed;
   status_ = Status::running;
+  stop_requested_ = false;
+  stopped_ = false;
 }
 
 bool JansenSweepStepper::step() {
+  if (!running()) return false;  // finished, or stopped by the observer
   switch (phase_) {
-    case Phase::requested: return solve_requested_pose();
-    case Phase::walk_in: return walk_in_one_pose();
-    case Phase::seed: return solve_seed_pose();
+    case Phase::requested: solve_requested_pose(); break;
+    case Phase::walk_in: walk_in_one_pose(); break;
+    case Phase::seed: solve_seed_pose(); break;
     case Phase::finished: break;
   }
-  return false;
+  if (stop_requested_ && running()) stopped_ = true;  // the observer ended the run: no verdict
+  return running();
 }
 
 JansenSweepAngles JansenSweepStepper::solve(double start_deg, double stop_deg, double step_deg) {
@@ -253,7 +257,9 @@ NUMLAB_FORCE_INLINE PoseOutcome JansenSweepStepper::solve_pose(double deg, doubl
 }
 
 void JansenSweepStepper::notify(double deg, double step_deg, const PoseOutcome& outcome, const Eigen::VectorXd& x) {
-  observer_->on_step(*this, {deg, step_deg, outcome, outcome.status == Status::converged, x});
+  if (stop_requested_) return;  // told to stop earlier in this step: the step ends unobserved
+  const SweepPoseRecord record{deg, step_deg, outcome, outcome.status == Status::converged, x};
+  if (observer_->on_step(*this, record) == StepControl::stop) stop_requested_ = true;
 }
 
 // Moves from current_deg_ to target_deg: tries the whole step; when a solve fails, halves the

@@ -74,13 +74,21 @@ void MustangSweepStepper::start(double start_deg, double stop_deg, double step_d
   std::sort(up_.begin(), up_.end(), [](const Target& a, const Target& b) { return a.at < b.at; });
   std::sort(down_.begin(), down_.end(), [](const Target& a, const Target& b) { return a.at > b.at; });
   seeded_ = false;
+  stop_requested_ = false;
+  stopped_ = false;
   poses_ = 0;
   status_ = Status::running;
 }
 
 bool MustangSweepStepper::step() {
-  if (status_ != Status::running) return false;
-  return seeded_ ? reach_next_target() : start_from_seed();
+  if (!running()) return false;
+  if (seeded_) {
+    reach_next_target();
+  } else {
+    start_from_seed();
+  }
+  if (stop_requested_ && running()) stopped_ = true;  // the observer ended the run: no verdict
+  return running();
 }
 
 MustangSweep MustangSweepStepper::solve(double start_deg, double stop_deg, double step_deg) {
@@ -183,7 +191,11 @@ bool MustangSweepStepper::try_solve(double next, bool predict, MustangAngles& tr
   outcome = solver_.solve(next * degrees, trial);
   const bool converged = outcome.status == Status::converged && trial.allFinite();
   const bool ok = converged && MustangLinkage::on_seed_branch(linkage_.joints(next * degrees, trial));
-  if (observer_ != nullptr) observer_->on_step(*this, {next, next - deg_, outcome, ok, trial});
+  // Once told to stop, the rest of this step goes unobserved; the run ends with it.
+  if (observer_ != nullptr && !stop_requested_ &&
+      observer_->on_step(*this, {next, next - deg_, outcome, ok, trial}) == StepControl::stop) {
+    stop_requested_ = true;
+  }
   return ok;
 }
 

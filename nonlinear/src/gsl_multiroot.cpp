@@ -279,6 +279,7 @@ void GslMultiroot::start(const Eigen::VectorXd& x0) {
   state.jacobian_evaluations = 0;
   counts_ = NewtonCounts{};  // status: running
   running_ = true;
+  stopped_ = false;
   // Only a trace needs the time: without an observer the clock is not read (as in numlab's Newton).
   if (observer_ != nullptr) workspace_->started_at = std::chrono::steady_clock::now();
 
@@ -330,7 +331,11 @@ bool GslMultiroot::step() {
   } else if (counts_.iterations >= options_.max_iterations) {
     finish(StopReason::iteration_limit);
   }
-  notify();  // after the tests: the observer sees the verdict
+  // After the tests: the observer sees the verdict (and may end the run here).
+  if (notify() == StepControl::stop && running_) {
+    running_ = false;
+    stopped_ = true;
+  }
   return running_;
 }
 
@@ -359,12 +364,12 @@ bool GslMultiroot::finish(StopReason reason) {
   return false;
 }
 
-void GslMultiroot::notify() {
-  if (observer_ == nullptr) return;
+StepControl GslMultiroot::notify() {
+  if (observer_ == nullptr) return StepControl::proceed;
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - workspace_->started_at).count();
   const auto f = view(workspace_->solver->f());
-  observer_->on_step(*this, {counts_.iterations, f.lpNorm<Eigen::Infinity>(), f.norm(), counts_.step_norm,
+  return observer_->on_step(*this, {counts_.iterations, f.lpNorm<Eigen::Infinity>(), f.norm(), counts_.step_norm,
                              Status::converged, NewtonRecord::no_linear_solve, 1.0, elapsed});
 }
 

@@ -84,6 +84,7 @@ void SequentialNewton::start(const Eigen::VectorXd& x0) {
   result_ = SequentialNewtonResult{};  // status: running
   result_.x = x0;
   running_ = true;
+  stopped_ = false;
   begin_block(0);
 }
 
@@ -101,8 +102,12 @@ bool SequentialNewton::step() {
   if (!newton_->running() && end_block()) begin_block(block_ + 1);
 
   if (observer_ != nullptr && relay_.record) {
-    observer_->on_step(*this, {stepped_block, *relay_.record});
+    const StepControl control = observer_->on_step(*this, {stepped_block, *relay_.record});
     relay_.record.reset();
+    if (control == StepControl::stop && running_) {  // the observer ended the run: no verdict
+      running_ = false;
+      stopped_ = true;
+    }
   }
   return running_;
 }

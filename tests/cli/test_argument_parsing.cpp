@@ -1,10 +1,10 @@
-// The command line's number, range and list arguments (labs/cli/argument_parsing): valid text means
+// The command line's number, range and list arguments (labs/parsing/argument_parsing): valid text means
 // what it always meant; bad text is refused with one line naming the option, the text and the part.
 
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "cli/argument_parsing.hpp"
+#include "parsing/argument_parsing.hpp"
 
 using namespace numlab::cli;
 using Catch::Matchers::Contains;

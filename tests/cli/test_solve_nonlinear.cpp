@@ -87,6 +87,25 @@ TEST_CASE("solve nonlinear --trace: one row per iteration and the termination li
   CHECK_THAT(text.out, Contains("Termination: CONVERGED (residual below tolerance"));
 }
 
+TEST_CASE("solve nonlinear --method dogleg: the hand-written trust region, traced like Newton", "[cli][nonlinear][dogleg]") {
+  // Powell singular: J is singular at the root, so every method converges linearly (||f|| / 4 per
+  // step); the trace has one row per iteration, each an accepted step (lambda 1).
+  const json traced = solve_json("--problem powell-singular --method dogleg --trace", 0);
+  CHECK(traced["method"] == "dogleg");
+  CHECK(traced["status"] == "converged");
+  CHECK(traced["residual_inf"].get<double>() <= 1e-9);
+  const json& trace = traced["trace"];
+  REQUIRE(trace.size() == traced["iterations"].get<std::size_t>());
+  for (std::size_t k = 1; k < trace.size(); ++k) {
+    CHECK(trace[k]["residual_inf"].get<double>() < trace[k - 1]["residual_inf"].get<double>());
+    CHECK(trace[k]["damping"].get<double>() == 1.0);
+  }
+  CHECK(trace.back()["residual_inf"].get<double>() == Approx(traced["residual_inf"].get<double>()));
+  // The options of Newton alone are refused for the dogleg.
+  require_bad_input("--problem rosenbrock --method dogleg --damped", "--damped");
+  require_bad_input("--problem rosenbrock --method dogleg --linear gauss-seidel", "--linear");
+}
+
 TEST_CASE("solve nonlinear: bad input gets one error line and exit 2", "[cli][nonlinear][bad-input]") {
   require_bad_input("--problem beale --method newton", "--problem");
   require_bad_input("--problem wood --method levenberg", "--method");

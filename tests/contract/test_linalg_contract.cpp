@@ -48,7 +48,7 @@ int steps_with_running_status(S& stepper) {
 template <typename S, typename R>
 struct CountingObserver : StepObserver<S, R> {
   int calls = 0;
-  void on_step(const S&, const R&) override { ++calls; }
+  StepControl on_step(const S&, const R&) override { ++calls; return StepControl::proceed; }
 };
 
 }  // namespace

@@ -1,15 +1,17 @@
 // The stepper contract (numlab/solver.hpp) for the nonlinear steppers: Newton (fixed and dynamic
-// sizes), GSL's multiroot adapter and sequential Newton. The names are checked at compile time;
+// sizes), GSL's multiroot adapter, sequential Newton and the trust-region dogleg. The names are checked at compile time;
 // at run time, status() is running between steps and gives its verdict only after the last one,
 // an observer sees the same, and stepping by hand ends where solve() does.
 
 #include <catch2/catch.hpp>
+#include <type_traits>
 #include <vector>
 
 #include "../nonlinear/small_systems.hpp"
 #include "honesty_checks.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/nonlinear/block_order.hpp"
+#include "numlab/nonlinear/dogleg.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
@@ -30,6 +32,9 @@ static_assert(Stepper<Newton<test::FixedRosenbrock, linalg::ClosedForm2x2>>);
 static_assert(Stepper<DynamicNewton>);
 static_assert(Stepper<GslMultiroot>);
 static_assert(Stepper<SequentialNewton>);
+static_assert(Stepper<Dogleg>);
+// The dogleg keeps a reference to its system: a temporary is refused.
+static_assert(!std::is_constructible_v<Dogleg, const DynamicSystem&&, NewtonOptions>);
 
 // Steps a started stepper to its end, checking the status rule before and after every step.
 // Returns the number of steps taken.
@@ -52,7 +57,7 @@ int step_to_the_end(S& stepper) {
 template <typename S, typename Record>
 struct StatusLog : StepObserver<S, Record> {
   std::vector<Status> seen;
-  void on_step(const S& stepper, const Record&) override { seen.push_back(stepper.status()); }
+  StepControl on_step(const S& stepper, const Record&) override { seen.push_back(stepper.status()); return StepControl::proceed; }
 };
 
 // Every status an observer saw is running, except the last, which is the stepper's verdict.
@@ -152,9 +157,10 @@ TEST_CASE("Sequential Newton: one Newton iteration per step, block after block, 
   struct BlockLog : SequentialNewton::Observer {
     std::vector<Status> seen;
     std::vector<int> blocks;
-    void on_step(const SequentialNewton& stepper, const SequentialRecord& record) override {
+    StepControl on_step(const SequentialNewton& stepper, const SequentialRecord& record) override {
       seen.push_back(stepper.status());
       blocks.push_back(record.block);
+      return StepControl::proceed;
     }
   } log;
   stepped.set_observer(&log);
@@ -187,4 +193,108 @@ TEST_CASE("Sequential Newton: one Newton iteration per step, block after block, 
   CHECK(stepped.status() == Status::converged);
   CHECK(stepped.result().blocks.size() == 2);
   CHECK(stepped.result().blocks[1].iterations == 0);
+}
+
+TEST_CASE("Dogleg stepped by hand ends where solve() does, on every MGH problem", "[contract][dogleg][mgh]") {
+  // What each on_step() call saw: the status, and the record's iteration (checked against iterations()).
+  struct Log final : StatusLog<Dogleg, NewtonRecord> {
+    std::vector<int> iterations;
+    StepControl on_step(const Dogleg& dogleg, const NewtonRecord& record) override {
+      iterations.push_back(record.iteration);
+      CHECK(record.iteration == dogleg.iterations());
+      return StatusLog::on_step(dogleg, record);
+    }
+  };
+  for (const std::string& name : test_problem_names()) {
+    const TestProblem problem = make_test_problem(name);
+    Dogleg stepped(*problem.system, lab_options());
+    Log log;
+    stepped.set_observer(&log);
+    stepped.start(problem.standard_start);
+    CHECK(stepped.iterations() == 0);
+    const int steps = step_to_the_end(stepped);
+    const auto solved = Dogleg(*problem.system, lab_options()).solve(problem.standard_start);
+    INFO(name << ": " << to_string(solved.status) << " (" << to_string(solved.reason) << ")");
+    CHECK(stepped.status() == solved.status);
+    CHECK(stepped.iterations() == solved.iterations);
+    CHECK(steps == solved.iterations);
+    CHECK(stepped.x() == solved.x);
+    CHECK_FALSE(stepped.stopped());
+    test::check_justified(solved.status, *problem.system, solved.x, lab_options().residual_tolerance);
+    // Every step sends one record, numbered 1, 2, ...; except a last step that ended before it could
+    // move (J not finite, or a stationary point of phi with no Newton step in the region).
+    const auto sent = static_cast<int>(log.seen.size());
+    for (int k = 0; k < sent; ++k) CHECK(log.iterations[static_cast<std::size_t>(k)] == k + 1);
+    if (sent == steps) {
+      check_observed(log, solved.status);
+    } else {
+      CHECK(sent + 1 == steps);
+      CHECK((solved.reason == StopReason::non_finite || solved.reason == StopReason::step_small));
+      for (const Status seen : log.seen) CHECK(seen == Status::running);
+    }
+  }
+}
+
+TEST_CASE("Dogleg started at a root: converged after no step", "[contract][dogleg]") {
+  const TestProblem rosenbrock = make_test_problem("rosenbrock");
+  Dogleg dogleg(*rosenbrock.system, lab_options());
+  dogleg.start(Eigen::Vector2d(1.0, 1.0));  // f = 0 exactly
+  CHECK_FALSE(dogleg.running());
+  CHECK(dogleg.status() == Status::converged);
+  CHECK(dogleg.iterations() == 0);
+  CHECK_FALSE(dogleg.step());
+  test::check_justified(dogleg.status(), *rosenbrock.system, dogleg.x(), lab_options().residual_tolerance);
+}
+
+TEST_CASE("Dogleg: an observer's stop ends the run at that step, with no verdict", "[contract][dogleg][stop]") {
+  const TestProblem problem = make_test_problem("rosenbrock");
+  const Eigen::VectorXd start = 10.0 * problem.standard_start;
+  const auto full = Dogleg(*problem.system, lab_options()).solve(start);
+  REQUIRE(full.status == Status::converged);
+  REQUIRE(full.iterations > 3);
+
+  struct StopAt final : Dogleg::Observer {
+    int at = 0;
+    int calls = 0;
+    StepControl on_step(const Dogleg&, const NewtonRecord& record) override {
+      ++calls;
+      return record.iteration == at ? StepControl::stop : StepControl::proceed;
+    }
+  } observer;
+  observer.at = 3;
+  Dogleg dogleg(*problem.system, lab_options());
+  dogleg.set_observer(&observer);
+  dogleg.start(start);
+  CHECK(dogleg.step());
+  CHECK(dogleg.step());
+  CHECK_FALSE(dogleg.step());  // the observer said stop
+  CHECK_FALSE(dogleg.running());
+  CHECK(dogleg.stopped());
+  CHECK(dogleg.status() == Status::running);  // no verdict: the method did not finish
+  CHECK(dogleg.iterations() == 3);
+  CHECK_FALSE(dogleg.step());  // and it stays stopped
+  CHECK(dogleg.iterations() == 3);
+  CHECK(observer.calls == 3);
+  const auto stopped = dogleg.result();
+  CHECK(stopped.status == Status::running);
+  CHECK(stopped.reason == StopReason::running);
+  CHECK(stopped.iterations == 3);
+
+  // solve() with the observer attached stops at the same step; a new start clears stopped().
+  CHECK(dogleg.solve(start).iterations == 3);
+  CHECK(dogleg.stopped());
+  dogleg.set_observer(nullptr);
+  const auto again = dogleg.solve(start);
+  CHECK_FALSE(dogleg.stopped());
+  CHECK(again.status == full.status);
+  CHECK(again.iterations == full.iterations);
+  CHECK(again.x == full.x);
+
+  // A stop sent with the last step changes nothing: the verdict stands.
+  observer.at = full.iterations;
+  dogleg.set_observer(&observer);
+  const auto last = dogleg.solve(start);
+  CHECK_FALSE(dogleg.stopped());
+  CHECK(last.status == Status::converged);
+  CHECK(last.iterations == full.iterations);
 }

@@ -63,7 +63,7 @@ def as_pattern(path):
 
 def exists(base, path):
     """PATH under BASE, as a glob; a path without an extension may name a file's stem
-    (`labs/cli/argument_parsing`: its .hpp and .cpp)."""
+    (`labs/parsing/argument_parsing`: its .hpp and .cpp)."""
     pattern = os.path.join(base, as_pattern(path.rstrip("/")))
     if glob.glob(pattern, recursive=True):
         return True

@@ -154,10 +154,11 @@ TEMPLATE_TEST_CASE_SIG("Fixed-size GEPP agrees with the dynamic-size one", "[gep
 namespace {
 struct EventCounter : GaussElimination<Eigen::Dynamic>::Observer {
   int swaps = 0, eliminations = 0, substitutions = 0;
-  void on_step(const GaussElimination<Eigen::Dynamic>&, const EliminationRecord& record) override {
+  StepControl on_step(const GaussElimination<Eigen::Dynamic>&, const EliminationRecord& record) override {
     if (record.event == EliminationEvent::row_swap) ++swaps;
     if (record.event == EliminationEvent::elimination) ++eliminations;
     if (record.event == EliminationEvent::back_substitution) ++substitutions;
+    return StepControl::proceed;
   }
 };
 }  // namespace

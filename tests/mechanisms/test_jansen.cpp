@@ -248,7 +248,7 @@ namespace {
 // Counts every pose solve a sweep attempts: the walk-in's cost, without a clock.
 struct AttemptCounter final : SweepObserver<JansenSweepStepper> {
   int attempts = 0;
-  void on_step(const JansenSweepStepper&, const SweepPoseRecord&) override { ++attempts; }
+  StepControl on_step(const JansenSweepStepper&, const SweepPoseRecord&) override { ++attempts; return StepControl::proceed; }
 };
 
 nonlinear::NewtonOptions with_tolerance(double tolerance) {

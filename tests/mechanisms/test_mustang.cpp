@@ -268,7 +268,7 @@ namespace {
 // Counts every pose solve a Mustang sweep attempts: the walk's cost, without a clock.
 struct MustangAttempts final : SweepObserver<MustangSweepStepper> {
   int attempts = 0;
-  void on_step(const MustangSweepStepper&, const SweepPoseRecord&) override { ++attempts; }
+  StepControl on_step(const MustangSweepStepper&, const SweepPoseRecord&) override { ++attempts; return StepControl::proceed; }
 };
 
 }  // namespace

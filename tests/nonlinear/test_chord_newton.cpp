@@ -33,9 +33,10 @@ NewtonOptions chord_options(int every) {
 struct Iterates : DynamicNewton::Observer {
   std::vector<Eigen::VectorXd> x;
   std::vector<int> refactored;
-  void on_step(const DynamicNewton& newton, const NewtonRecord& record) override {
+  StepControl on_step(const DynamicNewton& newton, const NewtonRecord& record) override {
     x.push_back(newton.x());
     refactored.push_back(record.jacobian_refactored);
+    return StepControl::proceed;
   }
 };
 

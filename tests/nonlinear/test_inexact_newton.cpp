@@ -48,7 +48,7 @@ struct Iteration {
 
 struct RecordKeeper final : GsNewton::Observer {
   std::vector<NewtonRecord> records;
-  void on_step(const GsNewton&, const NewtonRecord& record) override { records.push_back(record); }
+  StepControl on_step(const GsNewton&, const NewtonRecord& record) override { records.push_back(record); return StepControl::proceed; }
 };
 
 struct Traced {
@@ -271,8 +271,9 @@ TEST_CASE("Sequential Newton's blocks with Gauss-Seidel inside take the forcing 
   const auto blocks = block_triangular_order(jacobian_pattern(dynamic, start));
   struct Etas final : SequentialNewton::Observer {
     std::vector<double> etas;
-    void on_step(const SequentialNewton&, const SequentialRecord& record) override {
+    StepControl on_step(const SequentialNewton&, const SequentialRecord& record) override {
       etas.push_back(record.newton.forcing_term);
+      return StepControl::proceed;
     }
   };
   NewtonOptions options;

@@ -44,8 +44,9 @@ double root_error_bound(const TestProblem& problem, const Eigen::VectorXd& x, do
 // Newton records, kept for the tests that look at the rate of convergence.
 struct Recorder : Newton<Dynamic, RuntimeLinearStep>::Observer {
   std::vector<NewtonRecord> records;
-  void on_step(const Newton<Dynamic, RuntimeLinearStep>&, const NewtonRecord& record) override {
+  StepControl on_step(const Newton<Dynamic, RuntimeLinearStep>&, const NewtonRecord& record) override {
     records.push_back(record);
+    return StepControl::proceed;
   }
 };
 

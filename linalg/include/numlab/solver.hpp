@@ -15,8 +15,13 @@
 //               eliminated: n of its 2n steps) and the crank sweeps (poses solved); the table
 //               "What iterations() counts" in docs/architecture.md, held by tests/contract;
 //   x()         the current iterate (or solution);
+//   stopped()   true when the observer ended the run early (below); status() then stays running:
+//               the run ended before the method reached a verdict;
 //   an observer whose on_step(const Stepper&, const Record&) is called after every step, attached
-//               with set_observer(); null by default, so an untraced solve pays nothing.
+//               with set_observer(); null by default, so an untraced solve pays nothing. It returns
+//               a StepControl: proceed, or stop, which ends the run there (step() returns false),
+//               as Ceres' callbacks do. A caller that wants to stop between steps of its own loop
+//               simply stops calling step().
 //
 // The concept below checks the names; tests/contract checks every stepper against it.
 
@@ -32,15 +37,19 @@ concept Stepper = requires(S& stepper, const S& state) {
   { state.running() } -> std::same_as<bool>;
   { state.status() } -> std::same_as<Status>;
   { state.iterations() } -> std::convertible_to<int>;
+  { state.stopped() } -> std::same_as<bool>;
   state.x();
 };
+
+// What an observer returns after each step: go on, or end the run at this step.
+enum class StepControl { proceed, stop };
 
 // What an observer of stepper S with records R implements.
 template <typename S, typename R>
 class StepObserver {
  public:
   virtual ~StepObserver() = default;
-  virtual void on_step(const S& stepper, const R& record) = 0;
+  virtual StepControl on_step(const S& stepper, const R& record) = 0;
 };
 
 }  // namespace numlab

@@ -93,6 +93,7 @@ class PolynomialFitter {
   // The contract (numlab/solver.hpp).
   bool running() const { return running_; }
   Status status() const { return status_; }
+  bool stopped() const { return stopped_; }
   int iterations() const { return steps_; }  // stages done (the inner solve's count: result().iterations)
   // The coefficients so far: after stage 2 those of the solved system (in powers of t for
   // normal-scaled), after stage 3 those of the fit in powers of x (empty when the solve failed).
@@ -117,6 +118,7 @@ class PolynomialFitter {
   int steps_ = 0;
   Status status_ = Status::running;
   bool running_ = false;
+  bool stopped_ = false;
 };
 
 // PolynomialFitter().solve(x, y, options): throws std::invalid_argument as its start() does.

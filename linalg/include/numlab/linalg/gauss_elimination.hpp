@@ -100,6 +100,10 @@ class GaussElimination {
     } else if (phase_ == Phase::back_substitution) {
       back_substitute_next_unknown();
     }
+    if (stop_requested_ && running()) {  // the observer ended the run: no verdict
+      phase_ = Phase::done;
+      stopped_ = true;
+    }
     return running();
   }
 
@@ -126,6 +130,7 @@ class GaussElimination {
   // The contract (numlab/solver.hpp).
   bool running() const { return phase_ != Phase::done; }
   Status status() const { return status_; }
+  bool stopped() const { return stopped_; }
   int iterations() const { return column_; }  // pivot columns eliminated so far
   // Entries next_unknown()+1 ... n-1 are known during back substitution; all of them once converged.
   const VectorType& x() const { return x_; }
@@ -226,6 +231,8 @@ class GaussElimination {
     growth_factor_ = LinearResult<N>::not_applicable;
     status_ = Status::running;
     phase_ = Phase::elimination;
+    stop_requested_ = false;
+    stopped_ = false;
   }
 
   // The stepper keeps the multipliers apart from the reduced matrix, which it shows with zeros below
@@ -288,6 +295,7 @@ class GaussElimination {
       multipliers_.row(k).swap(multipliers_.row(p));
       std::swap(rhs_(k), rhs_(p));
       notify({EliminationEvent::row_swap, k, p, reduced_(k, k)});
+      if (stop_requested_) return;  // the observer ended the run after the swap
     }
 
     // A pivot that is not finite, or negligible beside max|a_ij|, ends the solve: no division by it.
@@ -351,7 +359,7 @@ class GaussElimination {
   }
 
   void notify(const EliminationRecord& record) {
-    if (observer_ != nullptr) observer_->on_step(*this, record);
+    if (observer_ != nullptr && observer_->on_step(*this, record) == StepControl::stop) stop_requested_ = true;
   }
 
   GaussEliminationOptions options_;
@@ -374,6 +382,8 @@ class GaussElimination {
   bool diagnostics_ = true;  // growth factor and residual wanted (not by solve_prechecked)
   Status status_ = Status::running;
   Phase phase_ = Phase::done;
+  bool stop_requested_ = false;  // the observer said stop during this step
+  bool stopped_ = false;
 };
 
 // Convenience: one GEPP solve of A x = b.

@@ -118,6 +118,7 @@ class GaussSeidel {
     first_step_norm_ = 0.0;
     status_ = Status::running;
     running_ = true;
+    stopped_ = false;
     if ((swept_matrix_.diagonal().array() == 0.0).any()) finish(Status::singular);
   }
 
@@ -138,7 +139,8 @@ class GaussSeidel {
     }
     if (sweep_ == 1) first_step_norm_ = step_norm_;
 
-    if (observer_ != nullptr) observer_->on_step(*this, {sweep_, step_norm_, residual_norm()});
+    const bool stop_asked = observer_ != nullptr &&
+                            observer_->on_step(*this, {sweep_, step_norm_, residual_norm()}) == StepControl::stop;
 
     // Stop tests, in order of precedence.
     if (!x_.allFinite() || !std::isfinite(step_norm_)) {
@@ -149,6 +151,10 @@ class GaussSeidel {
       finish(Status::diverged);
     } else if (sweep_ >= options_.max_iterations) {
       finish(Status::max_iterations);
+    }
+    if (stop_asked && running_) {  // the observer ended the run: no verdict
+      running_ = false;
+      stopped_ = true;
     }
     return running_;
   }
@@ -175,6 +181,7 @@ class GaussSeidel {
 
   // The contract (numlab/solver.hpp).
   bool running() const { return running_; }
+  bool stopped() const { return stopped_; }
   Status status() const { return status_; }
   int iterations() const { return sweep_; }  // sweeps so far
   const VectorType& x() const { return x_; }
@@ -234,6 +241,7 @@ class GaussSeidel {
   double first_step_norm_ = 0.0;
   Status status_ = Status::running;
   bool running_ = false;
+  bool stopped_ = false;
 };
 
 }  // namespace numlab::linalg

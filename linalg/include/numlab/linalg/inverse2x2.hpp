@@ -119,6 +119,8 @@ class ClosedForm2x2 {
 
   bool running() const { return running_; }
   Status status() const { return status_; }
+  // Never: the one step ends the run before the observer sees it, so there is nothing left to stop.
+  bool stopped() const { return false; }
   int iterations() const { return iterations_; }  // 0 until the step, then 1
   const Eigen::Vector2d& x() const { return x_; }
 

@@ -124,6 +124,7 @@ class DyadNewton {
   // State between iterations.
   bool running() const { return running_; }
   Status status() const { return status_; }  // Status::running until the iteration has ended
+  bool stopped() const { return false; }      // no observer: nothing can end the run early
   int iterations() const { return iterations_; }
   Eigen::Vector2d x() const { return {alpha_, beta_}; }
   double alpha() const { return alpha_; }

@@ -107,8 +107,9 @@ class JansenSweepStepper {
   bool step();
   JansenSweepAngles solve(double start_deg, double stop_deg, double step_deg);
 
-  bool running() const { return status_ == Status::running; }
+  bool running() const { return status_ == Status::running && !stopped_; }
   Status status() const { return status_; }
+  bool stopped() const { return stopped_; }
   int iterations() const { return poses_; }                // poses solved so far (walk-in included)
   const Eigen::VectorXd& x() const { return angles_; }    // the last pose solved
   double crank_deg() const { return current_deg_; }        // ... and its crank angle
@@ -132,6 +133,8 @@ class JansenSweepStepper {
   JansenSweepAngles sweep_;
   Phase phase_ = Phase::finished;
   Status status_ = Status::running;  // no verdict before the sweep has finished
+  bool stop_requested_ = false;      // the observer said stop during this step
+  bool stopped_ = false;
   double start_deg_ = 0.0, step_deg_ = 0.0, current_deg_ = 0.0, walk_to_deg_ = 0.0;
   int count_ = 0, next_ = 0, poses_ = 0;
   Eigen::VectorXd angles_, trial_;  // the last pose solved; the pose being tried

@@ -78,8 +78,9 @@ class MustangSweepStepper {
   bool step();
   MustangSweep solve(double start_deg, double stop_deg, double step_deg);
 
-  bool running() const { return status_ == Status::running; }
+  bool running() const { return status_ == Status::running && !stopped_; }
   Status status() const { return status_; }
+  bool stopped() const { return stopped_; }
   int iterations() const { return poses_; }              // poses solved so far (the seed's start included)
   const MustangAngles& x() const { return x_; }          // the last pose solved
   double crank_deg() const { return deg_; }              // ... and its crank angle
@@ -109,6 +110,8 @@ class MustangSweepStepper {
   double step_deg_ = 0.0;
   bool seeded_ = false;
   Status status_ = Status::running;  // no verdict before the sweep has finished
+  bool stop_requested_ = false;      // the observer said stop during this step
+  bool stopped_ = false;
   int poses_ = 0;
   std::size_t next_target_ = 0;
   // The march in the current direction: the last pose, the one before it, and the step between.

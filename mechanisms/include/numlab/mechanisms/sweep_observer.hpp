@@ -34,8 +34,9 @@ struct SweepAttempt {
 template <typename Sweep>
 class SweepRecorder : public SweepObserver<Sweep> {
  public:
-  void on_step(const Sweep&, const SweepPoseRecord& record) override {
+  StepControl on_step(const Sweep&, const SweepPoseRecord& record) override {
     attempts_.push_back({record.crank_deg, record.step_deg, record.outcome, record.accepted, record.angles});
+    return StepControl::proceed;
   }
   const std::vector<SweepAttempt>& attempts() const { return attempts_; }
 

@@ -20,110 +20,110 @@
 //         shrank to nothing at a point that is not a root (a local minimum of ||f||, say)
 //      or the iteration limit                               -> max_iterations
 // The first radius is MINPACK's: 100 max(||x0||_2, 1). A trial point where f is not finite counts as
-// no decrease (rho = -infinity): the region shrinks.
+// no decrease (rho = -infinity): the region shrinks. Two more endings, each after no move: J not
+// finite (non_finite), and g = 0 with no Newton step inside the region, a stationary point of phi
+// that is not a root (step_small).
+//
+// A stepper (numlab/solver.hpp): one step() is one iteration, steps 1-7 and the stop tests
+// (src/dogleg.cpp); status() is Status::running until the iteration has ended. Each step that
+// reached step 7 sends a NewtonRecord to the observer, after the stop tests:
+//   residual_norm, residual_2norm   ||f||_inf and ||f||_2 at x after the step (unchanged when rejected);
+//   step_norm                       how far x moved, ||damping * p||_inf;
+//   damping                         1 when the step was accepted, 0 when rejected (x stays): the
+//                                   fraction of p taken, as Newton's lambda is the fraction of dx;
+//   linear_status, linear_iterations  GEPP's solve for p_N (singular: no Newton step, the dogleg
+//                                   used the steepest descent) and its pivot columns;
+//   forcing_term NaN (an exact solve), jacobian_refactored every_iteration.
+// The trust region's own numbers are the stepper's, read by an observer from the Dogleg it is
+// given: radius() (Delta for the next step), ratio() (rho), accepted(), leg() and trial_step() (p).
 
 #include <Eigen/Core>
-#include <cmath>
+#include <chrono>
 #include <limits>
 
 #include "numlab/linalg/gauss_elimination.hpp"
-#include "numlab/linalg/input_checks.hpp"
 #include "numlab/nonlinear/newton.hpp"
+#include "numlab/nonlinear/stop_reason.hpp"
 #include "numlab/nonlinear/system.hpp"
+#include "numlab/solver.hpp"
 
 namespace numlab::nonlinear {
 
-// NewtonOptions' tolerances and iteration limit apply; `damped` and the halving limit do not.
-// Throws std::invalid_argument for a wrong-sized or non-finite x0, or options Newton rejects.
+// Which part of the dogleg path step 4 took.
+enum class DoglegLeg {
+  none,               // no step yet (or the last step ended before step 4)
+  newton,             // p = p_N: the Newton step lies in the region
+  steepest_descent,   // p = -(Delta / ||g||) g: the steepest descent cut at the boundary
+  dogleg              // p = p_C + tau (p_N - p_C) on the boundary
+};
+
+class Dogleg {
+ public:
+  using Observer = StepObserver<Dogleg, NewtonRecord>;
+  static constexpr double eta = 1e-4;  // step 7: the least rho that accepts a step
+
+  // NewtonOptions' tolerances and iteration limit apply; `damped`, the halving limit, the divergence
+  // factor, forcing and Jacobian reuse do not. Throws std::invalid_argument for options Newton rejects
+  // (a tolerance negative or not finite, an iteration limit below 1).
+  explicit Dogleg(const DynamicSystem& system, NewtonOptions options = {});
+  // The stepper keeps a reference to the system: a temporary would dangle, so it is refused.
+  explicit Dogleg(const DynamicSystem&&, NewtonOptions = {}) = delete;
+
+  void set_observer(Observer* observer) { observer_ = observer; }
+
+  // Sets x = x0, evaluates f(x0) and the first radius. Throws std::invalid_argument for a wrong
+  // size or non-finite x0.
+  void start(const Eigen::VectorXd& x0);
+  // One trust-region iteration. Returns false once the iteration has ended.
+  bool step();
+  NewtonResult<Eigen::Dynamic> solve(const Eigen::VectorXd& x0);
+  NewtonResult<Eigen::Dynamic> result() const;
+
+  // State between iterations.
+  bool running() const { return running_; }
+  Status status() const { return result_.status; }  // running until the iteration has ended
+  bool stopped() const { return stopped_; }
+  int iterations() const { return result_.iterations; }
+  const Eigen::VectorXd& x() const { return x_; }
+  const Eigen::VectorXd& residual() const { return f_; }
+  const Eigen::MatrixXd& jacobian() const { return J_; }
+  const NewtonOptions& options() const { return options_; }
+
+  // The trust region, for a trace.
+  double radius() const { return radius_; }              // Delta for the next step (after step 6)
+  double ratio() const { return ratio_; }                // rho of the last step; NaN before the first
+  bool accepted() const { return accepted_; }            // whether the last step moved x
+  DoglegLeg leg() const { return leg_; }                 // which part of the path the last step took
+  const Eigen::VectorXd& trial_step() const { return p_; }  // p of the last step
+
+ private:
+  bool choose_step(const Eigen::VectorXd& newton_step, bool has_newton, const Eigen::VectorXd& g,
+                   const Eigen::VectorXd& cauchy);
+  double decrease_ratio() const;
+  void stop_tests();
+  bool finish(StopReason reason);
+  StepControl notify(const linalg::LinearResult<Eigen::Dynamic>& newton);
+
+  const DynamicSystem& system_;
+  NewtonOptions options_;
+  linalg::GaussElimination<Eigen::Dynamic> gepp_;
+  Observer* observer_ = nullptr;
+  Eigen::VectorXd x_, f_, p_, trial_x_, trial_f_;
+  Eigen::MatrixXd J_;
+  NewtonCounts result_;
+  double radius_ = 0.0;
+  double ratio_ = std::numeric_limits<double>::quiet_NaN();
+  bool accepted_ = false;
+  DoglegLeg leg_ = DoglegLeg::none;
+  bool running_ = false;
+  bool stopped_ = false;
+  std::chrono::steady_clock::time_point started_at_;
+};
+
+// A Dogleg's solve(): throws as its constructor and start() do.
 inline NewtonResult<Eigen::Dynamic> dogleg_solve(const DynamicSystem& system, const Eigen::VectorXd& x0,
                                                  const NewtonOptions& options = {}) {
-  require_tolerance(options.residual_tolerance, "residual tolerance");
-  require_tolerance(options.step_tolerance, "step tolerance");
-  if (options.max_iterations < 1) throw std::invalid_argument("iteration limit must be at least 1");
-  const int n = system.dimension();
-  if (x0.size() != n) throw std::invalid_argument("starting point has the wrong number of entries");
-  linalg::require_finite(x0, "starting point");
-  constexpr double eta = 1e-4;
-
-  NewtonResult<Eigen::Dynamic> result;
-  result.x = x0;
-  Eigen::VectorXd f(n), trial_f(n);
-  Eigen::MatrixXd J(n, n);
-  system.residual(result.x, f);
-  ++result.function_evaluations;
-  double radius = 100.0 * std::max(result.x.norm(), 1.0);  // MINPACK's initial bound, factor 100
-  linalg::GaussElimination<Eigen::Dynamic> gepp;
-  auto finish = [&](StopReason reason) {
-    result.status = status_of(reason);
-    result.reason = reason;
-    result.residual_norm = f.lpNorm<Eigen::Infinity>();
-    return result;
-  };
-  if (!f.allFinite()) return finish(StopReason::non_finite);
-  while (true) {
-    if (residual_small(f.lpNorm<Eigen::Infinity>(), options.residual_tolerance)) {
-      return finish(StopReason::residual_small);
-    }
-    if (result.iterations >= options.max_iterations) return finish(StopReason::iteration_limit);
-    ++result.iterations;
-
-    // 1. J at x.
-    system.jacobian(result.x, J);
-    ++result.jacobian_evaluations;
-    if (!J.allFinite()) return finish(StopReason::non_finite);
-
-    // 2. The Newton step, when J can be solved.
-    const auto newton = gepp.solve(J, -f);
-    const bool has_newton = newton.status == Status::converged && newton.x.allFinite();
-
-    // 3. The Cauchy step along g = J^T f.
-    const Eigen::VectorXd g = J.transpose() * f;
-    const double Jg = (J * g).squaredNorm();
-    const Eigen::VectorXd cauchy = Jg > 0.0 ? Eigen::VectorXd(-(g.squaredNorm() / Jg) * g) : Eigen::VectorXd::Zero(n);
-
-    // 4. The dogleg step inside the region.
-    Eigen::VectorXd p;
-    if (has_newton && newton.x.norm() <= radius) {
-      p = newton.x;
-    } else if (!has_newton || cauchy.norm() >= radius) {
-      if (g.norm() == 0.0) return finish(StopReason::step_small);  // a stationary point of phi
-      p = -(radius / g.norm()) * g;
-    } else {
-      // tau in [0, 1] with ||p_C + tau d|| = radius, d = p_N - p_C: the positive root of a quadratic.
-      const Eigen::VectorXd d = newton.x - cauchy;
-      const double a = d.squaredNorm(), b = 2.0 * cauchy.dot(d), c = cauchy.squaredNorm() - radius * radius;
-      const double tau = (-b + std::sqrt(b * b - 4.0 * a * c)) / (2.0 * a);
-      p = cauchy + tau * d;
-    }
-
-    // 5. Actual against predicted decrease of phi.
-    const Eigen::VectorXd trial_x = result.x + p;
-    system.residual(trial_x, trial_f);
-    ++result.function_evaluations;
-    const double phi = 0.5 * f.squaredNorm();
-    const double predicted = phi - 0.5 * (f + J * p).squaredNorm();
-    const double rho = trial_f.allFinite() && predicted > 0.0 ? (phi - 0.5 * trial_f.squaredNorm()) / predicted
-                                                              : -std::numeric_limits<double>::infinity();
-
-    // 6. The radius follows how well the model predicted.
-    const double length = p.norm();
-    if (rho < 0.25) {
-      radius = 0.25 * length;
-    } else if (rho > 0.75 && length >= 0.99 * radius) {
-      radius = 2.0 * radius;
-    }
-
-    // 7. Accept the step when phi decreased enough.
-    if (rho > eta) {
-      result.x = trial_x;
-      f = trial_f;
-      result.step_norm = p.lpNorm<Eigen::Infinity>();
-    }
-    if (step_small(radius, result.x.lpNorm<Eigen::Infinity>(), options.step_tolerance) &&
-        !residual_small(f.lpNorm<Eigen::Infinity>(), options.residual_tolerance)) {
-      return finish(StopReason::step_small);
-    }
-  }
+  return Dogleg(system, options).solve(x0);
 }
 
 }  // namespace numlab::nonlinear

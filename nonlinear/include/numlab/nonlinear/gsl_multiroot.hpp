@@ -60,13 +60,14 @@ class GslMultiroot {
 
   bool running() const { return running_; }
   Status status() const { return counts_.status; }  // running until the iteration has ended
+  bool stopped() const { return stopped_; }
   int iterations() const { return counts_.iterations; }
   const Eigen::VectorXd& x() const { return x_; }
   const NewtonOptions& options() const { return options_; }
 
  private:
   bool finish(StopReason reason);
-  void notify();
+  StepControl notify();
 
   struct Workspace;
   std::unique_ptr<Workspace> workspace_;
@@ -75,6 +76,7 @@ class GslMultiroot {
   Eigen::VectorXd x_;
   NewtonCounts counts_;
   bool running_ = false;
+  bool stopped_ = false;
 };
 
 // Solves system from x0 with GSL type `type` (one of gsl_multiroot_types()): a GslMultiroot's

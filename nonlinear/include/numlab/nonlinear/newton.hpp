@@ -175,6 +175,7 @@ class Newton {
     evaluate_at(x_, f_);
     residual_at_start_ = f_.template lpNorm<Eigen::Infinity>();
     running_ = true;
+    stopped_ = false;
     if (!linalg::all_finite(f_)) {
       finish(StopReason::non_finite);
     } else if (residual_small(residual_at_start_, options_.residual_tolerance)) {
@@ -258,7 +259,8 @@ class Newton {
       // sweep limit again at every iteration
       finish(StopReason::inner_limit);
     }
-    notify(linear.status, linear.iterations, lambda, eta, refactor);  // after the tests: the observer sees the verdict
+    // After the tests: the observer sees the verdict (and may end the run here).
+    if (notify(linear.status, linear.iterations, lambda, eta, refactor) == StepControl::stop) end_early();
     return running_;
   }
 
@@ -278,6 +280,7 @@ class Newton {
   // State between iterations.
   bool running() const { return running_; }
   Status status() const { return result_.status; }  // running until the iteration has ended
+  bool stopped() const { return stopped_; }
   int iterations() const { return result_.iterations; }
   const Vector<N>& x() const { return x_; }
   const Vector<N>& residual() const { return f_; }
@@ -339,11 +342,17 @@ class Newton {
     return false;
   }
 
-  void notify(Status linear_status, int linear_iterations, double lambda, double eta, bool refactored) {
-    if (observer_ == nullptr) return;
+  // The observer said stop: the run ends here, before a verdict (status stays running).
+  void end_early() {
+    stopped_ = running_;
+    running_ = false;
+  }
+
+  StepControl notify(Status linear_status, int linear_iterations, double lambda, double eta, bool refactored) {
+    if (observer_ == nullptr) return StepControl::proceed;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_at_).count();
     const int jacobian = options_.reuse_jacobian > 1 ? int{refactored} : NewtonRecord::every_iteration;
-    observer_->on_step(*this, {result_.iterations, result_.residual_norm, f_.norm(), result_.step_norm,
+    return observer_->on_step(*this, {result_.iterations, result_.residual_norm, f_.norm(), result_.step_norm,
                                linear_status, linear_iterations, lambda, elapsed, eta, jacobian});
   }
 
@@ -362,6 +371,7 @@ class Newton {
   int stalled_inner_solves_ = 0;  // capped inner solves in a row whose step cut ||f|| by less than 10%
   bool jacobian_fresh_ = false;
   bool running_ = false;
+  bool stopped_ = false;
   std::chrono::steady_clock::time_point started_at_;
 };
 

@@ -100,6 +100,7 @@ class SequentialNewton {
 
   bool running() const { return running_; }
   Status status() const { return result_.status; }  // running until the last block has ended
+  bool stopped() const { return stopped_; }
   int iterations() const { return result_.iterations; }
   const Eigen::VectorXd& x() const { return result_.x; }
   int block() const { return static_cast<int>(block_); }  // the block being solved (its index)
@@ -110,7 +111,10 @@ class SequentialNewton {
   // x and the status are up to date. (Newton sends none for an iteration that could not move.)
   struct Relay final : BlockNewton::Observer {
     std::optional<NewtonRecord> record;
-    void on_step(const BlockNewton&, const NewtonRecord& sent) override { record = sent; }
+    StepControl on_step(const BlockNewton&, const NewtonRecord& sent) override {
+      record = sent;
+      return StepControl::proceed;
+    }
   };
 
   void begin_block(std::size_t block);
@@ -126,6 +130,7 @@ class SequentialNewton {
   std::optional<BlockNewton> newton_;
   std::size_t block_ = 0;
   bool running_ = false;
+  bool stopped_ = false;
   Relay relay_;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // The nonlinear methods by their command-line names, run on one system from one start:
-// "newton" (hand-written full Newton, with --linear and --damped) and "gsl-<type>" for GSL's eight
-// multiroot types.
+// "newton" (hand-written full Newton, with --linear and --damped), "dogleg" (the hand-written
+// trust-region dogleg) and "gsl-<type>" for GSL's eight multiroot types.
 
 #include <Eigen/Core>
 #include <optional>
@@ -15,7 +15,7 @@
 
 namespace numlab::cli {
 
-// newton, gsl-hybrids, gsl-hybrid, gsl-dnewton, gsl-broyden, gsl-hybridsj, gsl-hybridj, gsl-newton, gsl-gnewton.
+// newton, dogleg, gsl-hybrids, gsl-hybrid, gsl-dnewton, gsl-broyden, gsl-hybridsj, gsl-hybridj, gsl-newton, gsl-gnewton.
 const std::vector<std::string>& nonlinear_method_names();
 
 struct NonlinearSettings {
@@ -27,14 +27,6 @@ struct NonlinearSettings {
 inline constexpr const char* forcing_choices = "none, constant:ETA (0 < ETA < 1) or eisenstat-walker";
 // The forcing term named by --forcing. Throws std::invalid_argument naming what is wrong.
 nonlinear::ForcingOptions forcing_named(const std::string& text);
-// settings.options.forcing from --forcing: the default (Eisenstat-Walker) when not given. Given, it
-// must apply (require_applies: --method newton with an iterative --linear, gauss-seidel).
-nonlinear::ForcingOptions forcing_option(const std::optional<std::string>& text, bool is_newton,
-                                         nonlinear::LinearMethod linear);
-// settings.options.reuse_jacobian from --reuse-jacobian K: 1 (Newton) when not given. Given, K must
-// be at least 1 and apply (--method newton with --linear gepp, the solver that keeps its factors).
-int reuse_jacobian_option(std::optional<int> every, bool is_newton, nonlinear::LinearMethod linear);
-
 struct NonlinearRun {
   Eigen::VectorXd x;
   Status status = Status::max_iterations;

@@ -1,4 +1,4 @@
-#include "commands/linear_methods.hpp"
+#include "methods/linear_methods.hpp"
 
 #include <map>
 #include <stdexcept>
@@ -31,8 +31,13 @@ DynamicResult run_gauss_elimination(const Eigen::MatrixXd& A, const Eigen::Vecto
   options.pivoting = pivoting;
   options.relative_pivot_tolerance = settings.tolerance;
   linalg::GaussElimination<Eigen::Dynamic> elimination(options);
+  if (tracers.elimination == nullptr) return elimination.solve(A, b);  // untraced: the fast path
+  // Traced (--trace, --step): the program owns the loop, as GSL's own test program loops on iterate.
   elimination.set_observer(tracers.elimination);
-  return elimination.solve(A, b);
+  elimination.start(A, b);
+  while (elimination.step()) {
+  }
+  return elimination.result();
 }
 
 DynamicResult run_gauss_seidel(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
@@ -44,7 +49,10 @@ DynamicResult run_gauss_seidel(const Eigen::MatrixXd& A, const Eigen::VectorXd& 
   if (settings.max_iterations) options.max_iterations = *settings.max_iterations;
   linalg::GaussSeidel<Eigen::Dynamic> iteration(options);
   iteration.set_observer(tracers.sweeps);
-  return iteration.solve(A, b);
+  iteration.start(A, b);
+  while (iteration.step()) {  // one sweep
+  }
+  return iteration.result();
 }
 
 DynamicResult run_closed_form(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {

@@ -1,4 +1,4 @@
-#include "cli/cli_common.hpp"
+#include "commands/common_options.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -66,30 +66,6 @@ std::string names_honouring(bool CommonFlagUse::*flag) {
   return names;
 }
 
-double paused_total_s = 0.0;
-
-// "" when a file can be made in `folder`, else why not (strerror). Tried, not guessed from the mode
-// bits: root ignores them, and a read-only file system or /proc refuses root too. The probe file is
-// removed at once.
-std::string cannot_make_files_in(const fs::path& folder) {
-  std::string probe = (folder / ".numlab-write-probe-XXXXXX").string();
-  const int descriptor = mkstemp(probe.data());
-  if (descriptor < 0) return std::strerror(errno);
-  ::close(descriptor);
-  ::unlink(probe.c_str());
-  return "";
-}
-
-// The folder a file at `path` would be written into, or the nearest of its parents that exists
-// (the folders between are made then).
-fs::path nearest_existing_folder(const fs::path& path) {
-  std::error_code error;
-  fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  while (!fs::exists(folder, error) && folder.has_parent_path() && folder.parent_path() != folder) {
-    folder = folder.parent_path();
-  }
-  return folder;
-}
 
 }  // namespace
 
@@ -186,32 +162,6 @@ CommonOptions checked_common_options(const CommonOptions& options, std::string_v
   return checked;
 }
 
-nlohmann::ordered_json number_or_null(double value) {
-  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json();
-}
-
-int exit_code_for(Status status) { return status == Status::converged ? exit_success : exit_method_failed; }
-
-void pause_if_stepping(bool step) {
-  static bool noted = false;
-  if (!step) return;
-  if (isatty(STDIN_FILENO) == 0) {
-    // One note, at the first step, instead of a prompt nobody can answer.
-    if (!noted) std::cerr << "numlab: note: --step pauses only when stdin is a terminal; it is not, so the run goes on\n";
-    noted = true;
-    return;
-  }
-  std::cerr << "  -- Enter: next step; q, Enter: stop here --" << std::flush;
-  const auto begin = std::chrono::steady_clock::now();
-  std::string line;
-  const bool answered = static_cast<bool>(std::getline(std::cin, line));
-  paused_total_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  line.erase(std::remove_if(line.begin(), line.end(), [](unsigned char c) { return std::isspace(c); }), line.end());
-  if (!answered || lower_case(line) == "q") throw StoppedByUser();
-}
-
-double paused_seconds() { return paused_total_s; }
-
 int report_stopped(const CommonOptions& options, nlohmann::ordered_json partial, const nlohmann::ordered_json& trace) {
   const std::size_t steps = trace.size();
   if (options.format == Format::json) {
@@ -228,78 +178,9 @@ int report_stopped(const CommonOptions& options, nlohmann::ordered_json partial,
   return exit_method_failed;
 }
 
-void ensure_directory(const std::string& path) {
-  std::error_code error;
-  if (path.empty()) throw std::invalid_argument("an output folder needs a name");
-  fs::create_directories(path, error);
-  if (error || !fs::is_directory(path)) throw std::invalid_argument("cannot create output folder '" + path + "'");
-  const std::string refused = cannot_make_files_in(path);
-  if (!refused.empty()) throw std::invalid_argument("the output folder '" + path + "' takes no new files (" + refused + ")");
-}
-
-void write_file_atomically(const std::string& path, const std::string& contents) {
-  const fs::path target(path);
-  std::error_code error;
-  if (path.empty() || !target.has_filename()) throw std::invalid_argument("cannot write '" + path + "': no file name");
-  if (fs::is_directory(target, error)) throw std::invalid_argument("cannot write '" + path + "': it is a folder");
-  if (target.has_parent_path()) ensure_directory(target.parent_path().string());
-  // 1. A unique temporary beside the target (so the rename stays in one file system).
-  std::string temporary = (target.parent_path() / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
-  const int descriptor = mkstemp(temporary.data());
-  if (descriptor < 0) throw std::invalid_argument("cannot write '" + path + "': " + std::strerror(errno));
-  // 2. Write it whole, with the permissions a new file gets (mkstemp makes it private).
-  const mode_t mask = umask(0);
-  umask(mask);
-  bool written = fchmod(descriptor, 0666 & ~mask) == 0;
-  for (std::size_t done = 0; written && done < contents.size();) {
-    const ssize_t count = ::write(descriptor, contents.data() + done, contents.size() - done);
-    if (count < 0 && errno == EINTR) continue;
-    written = count > 0;
-    if (written) done += static_cast<std::size_t>(count);
-  }
-  const int write_errno = errno;
-  written = ::close(descriptor) == 0 && written;
-  // 3. Rename into place; on any failure, remove the temporary.
-  if (written && std::rename(temporary.c_str(), path.c_str()) == 0) return;
-  const int cause = written ? errno : write_errno;
-  ::unlink(temporary.c_str());
-  throw std::invalid_argument("cannot write '" + path + "': " + std::strerror(cause));
-}
-
 std::string output_path(const CommonOptions& options, const std::string& path) {
   if (path.empty() || !given(options, "--out") || fs::path(path).is_absolute()) return path;
   return (fs::path(options.out_dir) / path).string();
-}
-
-void check_outputs(const std::vector<PlannedFile>& outputs, const std::vector<std::string>& inputs) {
-  std::error_code error;
-  std::vector<fs::path> seen;
-  for (const PlannedFile& output : outputs) {
-    const std::string named = output.flag + " '" + output.path + "'";
-    if (output.path.empty()) throw std::invalid_argument(output.flag + ": needs a file name");
-    const fs::path path(output.path);
-    if (fs::is_directory(path, error)) throw std::invalid_argument(named + " is a folder, not a file");
-    if (path.has_parent_path() && fs::exists(path.parent_path(), error) && !fs::is_directory(path.parent_path(), error)) {
-      throw std::invalid_argument(named + ": '" + path.parent_path().string() + "' is not a folder");
-    }
-    for (const std::string& input : inputs) {
-      if (fs::exists(path, error) && fs::equivalent(path, input, error)) {
-        throw std::invalid_argument(named + " is the input file '" + input + "'; numlab does not overwrite its input");
-      }
-    }
-    const fs::path folder = nearest_existing_folder(path);
-    if (fs::is_directory(folder, error)) {
-      const std::string refused = cannot_make_files_in(folder);
-      if (!refused.empty()) {
-        throw std::invalid_argument(named + ": the folder '" + folder.string() + "' takes no new files (" + refused + ")");
-      }
-    }
-    const fs::path canonical = fs::weakly_canonical(fs::absolute(path), error);
-    if (std::find(seen.begin(), seen.end(), canonical) != seen.end()) {
-      throw std::invalid_argument(named + " is written twice by this command; give each output its own name");
-    }
-    seen.push_back(canonical);
-  }
 }
 
 }  // namespace numlab::cli

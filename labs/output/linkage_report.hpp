@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_common.hpp"
+#include "output/exit_codes.hpp"
+#include "output/format.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 #include "numlab/nonlinear/jacobian_check.hpp"
 

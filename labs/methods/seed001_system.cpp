@@ -1,4 +1,4 @@
-#include "commands/seed001_system.hpp"
+#include "methods/seed001_system.hpp"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 #pragma once
-// The degree sweep shared by the `fit` lab and `numlab bench`: every fit method at degrees
-// 1 .. max_degree, judged against the extended-precision reference.
+// The degree sweep: every fit method at degrees 1 .. max_degree, judged against the
+// extended-precision reference (reference_fits.hpp). The `fit` lab and `numlab bench fit` read it.
 
 #include <Eigen/Core>
 #include <string>
@@ -8,7 +8,7 @@
 
 #include "numlab/fitting/polynomial_fit.hpp"
 
-namespace numlab::cli {
+namespace numlab::fitting {
 
 struct DegreeSweepRow {
   std::string method;        // normal, normal-scaled, gsl, eigen-qr
@@ -23,4 +23,4 @@ struct DegreeSweepRow {
 // The four methods (normal with GEPP) at each degree.
 std::vector<DegreeSweepRow> fit_degree_sweep(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int max_degree);
 
-}  // namespace numlab::cli
+}  // namespace numlab::fitting

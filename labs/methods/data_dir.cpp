@@ -1,4 +1,4 @@
-#include "cli/data_dir.hpp"
+#include "methods/data_dir.hpp"
 
 #include <cstdlib>
 #include <filesystem>

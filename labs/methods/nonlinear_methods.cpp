@@ -1,4 +1,4 @@
-#include "commands/nonlinear_methods.hpp"
+#include "methods/nonlinear_methods.hpp"
 
 #include <fmt/format.h>
 
@@ -6,10 +6,10 @@
 #include <cctype>
 #include <stdexcept>
 
+#include "numlab/nonlinear/dogleg.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
-#include "cli/argument_parsing.hpp"
-#include "cli/cli_common.hpp"
+#include "parsing/argument_parsing.hpp"
 #include "numlab/linalg/matrix_file.hpp"
 #include "numlab/nonlinear/linear_step.hpp"
 
@@ -31,7 +31,7 @@ std::string gsl_termination(const nonlinear::NewtonResult<Eigen::Dynamic>& resul
 
 const std::vector<std::string>& nonlinear_method_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> all = {"newton"};
+    std::vector<std::string> all = {"newton", "dogleg"};
     for (const std::string& type : nonlinear::gsl_multiroot_types()) all.push_back("gsl-" + type);
     return all;
   }();
@@ -63,23 +63,6 @@ nonlinear::ForcingOptions forcing_named(const std::string& text) {
   return forcing;
 }
 
-nonlinear::ForcingOptions forcing_option(const std::optional<std::string>& text, bool is_newton,
-                                         nonlinear::LinearMethod linear) {
-  const bool iterative = linear == nonlinear::LinearMethod::gauss_seidel;
-  require_applies(text.has_value(), is_newton && iterative, "--forcing",
-                  "--method newton with an iterative --linear (gauss-seidel); direct solvers solve exactly");
-  return text ? forcing_named(*text) : nonlinear::ForcingOptions{};
-}
-
-int reuse_jacobian_option(std::optional<int> every, bool is_newton, nonlinear::LinearMethod linear) {
-  if (every && *every < 1) {
-    throw std::invalid_argument(fmt::format("--reuse-jacobian {}: K must be at least 1 (1 is plain Newton)", *every));
-  }
-  require_applies(every.has_value(), is_newton && linear == nonlinear::LinearMethod::gepp, "--reuse-jacobian",
-                  "--method newton with --linear gepp (the chord method reuses GEPP's kept factors)");
-  return every.value_or(1);
-}
-
 NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::DynamicSystem& system,
                                   const Eigen::VectorXd& x0, const NonlinearSettings& settings,
                                   NewtonTraceObserver* observer) {
@@ -96,13 +79,28 @@ NonlinearRun run_nonlinear_method(const std::string& method, const nonlinear::Dy
                          nonlinear::RuntimeLinearStep(settings.linear, system.dimension(),
                                                       nonlinear::inner_gauss_seidel_options(settings.options.forcing)));
     newton.set_observer(observer);
-    const auto result = newton.solve(x0);
+    newton.start(x0);
+    while (newton.step()) {  // one Newton iteration
+    }
+    const auto result = newton.result();
+    return run_of(result, nonlinear::termination_line(result, settings.options));
+  }
+  if (method == "dogleg") {
+    nonlinear::Dogleg dogleg(system, settings.options);
+    dogleg.set_observer(observer);
+    dogleg.start(x0);
+    while (dogleg.step()) {  // one trust-region iteration
+    }
+    const auto result = dogleg.result();
     return run_of(result, nonlinear::termination_line(result, settings.options));
   }
   if (method.starts_with("gsl-")) {
     nonlinear::GslMultiroot gsl(system, method.substr(4), settings.options);
     gsl.set_observer(observer);
-    const auto result = gsl.solve(x0);
+    gsl.start(x0);
+    while (gsl.step()) {  // one iteration of GSL's method
+    }
+    const auto result = gsl.result();
     return run_of(result, gsl_termination(result, settings.options));
   }
   throw std::invalid_argument("unknown nonlinear method '" + method + "'");

@@ -1,4 +1,4 @@
-#include "commands/linkage_report.hpp"
+#include "output/linkage_report.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "cli/argument_parsing.hpp"
+#include "parsing/argument_parsing.hpp"
 
 #include <algorithm>
 #include <charconv>

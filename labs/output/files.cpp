@@ -1,0 +1,115 @@
+#include "output/files.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+namespace numlab::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// "" when a file can be made in `folder`, else why not (strerror). Tried, not guessed from the mode
+// bits: root ignores them, and a read-only file system or /proc refuses root too. The probe file is
+// removed at once.
+std::string cannot_make_files_in(const fs::path& folder) {
+  std::string probe = (folder / ".numlab-write-probe-XXXXXX").string();
+  const int descriptor = mkstemp(probe.data());
+  if (descriptor < 0) return std::strerror(errno);
+  ::close(descriptor);
+  ::unlink(probe.c_str());
+  return "";
+}
+
+// The folder a file at `path` would be written into, or the nearest of its parents that exists
+// (the folders between are made then).
+fs::path nearest_existing_folder(const fs::path& path) {
+  std::error_code error;
+  fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  while (!fs::exists(folder, error) && folder.has_parent_path() && folder.parent_path() != folder) {
+    folder = folder.parent_path();
+  }
+  return folder;
+}
+
+}  // namespace
+
+void ensure_directory(const std::string& path) {
+  std::error_code error;
+  if (path.empty()) throw std::invalid_argument("an output folder needs a name");
+  fs::create_directories(path, error);
+  if (error || !fs::is_directory(path)) throw std::invalid_argument("cannot create output folder '" + path + "'");
+  const std::string refused = cannot_make_files_in(path);
+  if (!refused.empty()) throw std::invalid_argument("the output folder '" + path + "' takes no new files (" + refused + ")");
+}
+
+void write_file_atomically(const std::string& path, const std::string& contents) {
+  const fs::path target(path);
+  std::error_code error;
+  if (path.empty() || !target.has_filename()) throw std::invalid_argument("cannot write '" + path + "': no file name");
+  if (fs::is_directory(target, error)) throw std::invalid_argument("cannot write '" + path + "': it is a folder");
+  if (target.has_parent_path()) ensure_directory(target.parent_path().string());
+  // 1. A unique temporary beside the target (so the rename stays in one file system).
+  std::string temporary = (target.parent_path() / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+  const int descriptor = mkstemp(temporary.data());
+  if (descriptor < 0) throw std::invalid_argument("cannot write '" + path + "': " + std::strerror(errno));
+  // 2. Write it whole, with the permissions a new file gets (mkstemp makes it private).
+  const mode_t mask = umask(0);
+  umask(mask);
+  bool written = fchmod(descriptor, 0666 & ~mask) == 0;
+  for (std::size_t done = 0; written && done < contents.size();) {
+    const ssize_t count = ::write(descriptor, contents.data() + done, contents.size() - done);
+    if (count < 0 && errno == EINTR) continue;
+    written = count > 0;
+    if (written) done += static_cast<std::size_t>(count);
+  }
+  const int write_errno = errno;
+  written = ::close(descriptor) == 0 && written;
+  // 3. Rename into place; on any failure, remove the temporary.
+  if (written && std::rename(temporary.c_str(), path.c_str()) == 0) return;
+  const int cause = written ? errno : write_errno;
+  ::unlink(temporary.c_str());
+  throw std::invalid_argument("cannot write '" + path + "': " + std::strerror(cause));
+}
+
+void check_outputs(const std::vector<PlannedFile>& outputs, const std::vector<std::string>& inputs) {
+  std::error_code error;
+  std::vector<fs::path> seen;
+  for (const PlannedFile& output : outputs) {
+    const std::string named = output.flag + " '" + output.path + "'";
+    if (output.path.empty()) throw std::invalid_argument(output.flag + ": needs a file name");
+    const fs::path path(output.path);
+    if (fs::is_directory(path, error)) throw std::invalid_argument(named + " is a folder, not a file");
+    if (path.has_parent_path() && fs::exists(path.parent_path(), error) && !fs::is_directory(path.parent_path(), error)) {
+      throw std::invalid_argument(named + ": '" + path.parent_path().string() + "' is not a folder");
+    }
+    for (const std::string& input : inputs) {
+      if (fs::exists(path, error) && fs::equivalent(path, input, error)) {
+        throw std::invalid_argument(named + " is the input file '" + input + "'; numlab does not overwrite its input");
+      }
+    }
+    const fs::path folder = nearest_existing_folder(path);
+    if (fs::is_directory(folder, error)) {
+      const std::string refused = cannot_make_files_in(folder);
+      if (!refused.empty()) {
+        throw std::invalid_argument(named + ": the folder '" + folder.string() + "' takes no new files (" + refused + ")");
+      }
+    }
+    const fs::path canonical = fs::weakly_canonical(fs::absolute(path), error);
+    if (std::find(seen.begin(), seen.end(), canonical) != seen.end()) {
+      throw std::invalid_argument(named + " is written twice by this command; give each output its own name");
+    }
+    seen.push_back(canonical);
+  }
+}
+
+}  // namespace numlab::cli

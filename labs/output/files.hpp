@@ -1,0 +1,27 @@
+#pragma once
+// The files numlab writes: whole or not at all, in folders checked before any work.
+
+#include <string>
+#include <vector>
+
+namespace numlab::cli {
+
+// Creates the output folder (and parents) and tries making a file in it; throws
+// std::invalid_argument naming it on failure (so a read-only folder is refused before any work).
+void ensure_directory(const std::string& path);
+
+// Writes a file whole or not at all: to a unique temporary in the same folder, then renamed into
+// place. On any failure the temporary is removed and std::invalid_argument names the file.
+void write_file_atomically(const std::string& path, const std::string& contents);
+
+// Checks, before any work, every file a command will write (`flag` names who asked for it):
+// not empty, not an existing folder, in a folder that accepts files (the nearest existing one is
+// tried), not the same file as an input, not twice among the outputs. Throws
+// std::invalid_argument naming the first conflict.
+struct PlannedFile {
+  std::string path;
+  std::string flag;
+};
+void check_outputs(const std::vector<PlannedFile>& outputs, const std::vector<std::string>& inputs);
+
+}  // namespace numlab::cli
