@@ -46,10 +46,10 @@ std::string linkage_file_for(const std::string& name) {
 namespace {
 
 // --trace and --step: one row per pose on stderr as it is solved, then a pause.
-class PoseTracer {
+class PoseTracer final : public StepObserver<LinkageSweepStepper, LinkagePose> {
  public:
   PoseTracer(const LinkageModel& model, bool print, StepPause& pause) : model_(model), print_(print), pause_(pause) {}
-  StepControl operator()(const LinkagePose& pose) {
+  StepControl on_step(const LinkageSweepStepper&, const LinkagePose& pose) override {
     if (pause_.stopped()) return StepControl::stop;
     rows_.push_back(pose_trace_json(pose));
     if (print_) {
@@ -173,10 +173,13 @@ int run_linkage(const LinkageRun& run) {
   StepPause pause(run.common.step);
   PoseTracer tracer(model, run.common.trace && (run.common.step || run.common.format != Format::json), pause);
   const auto begin = std::chrono::steady_clock::now();
-  const LinkageSweep sweep = linkage_sweep(solver, range.start, range.stop, range.step,
-                                           run.common.trace ? LinkagePoseObserver(std::ref(tracer)) : LinkagePoseObserver(),
-                                           run.switch_at_crossing ? AtCrossing::switch_branch : AtCrossing::smooth);
-  if (sweep.stopped) {
+  LinkageSweepStepper stepper(solver, run.switch_at_crossing ? AtCrossing::switch_branch : AtCrossing::smooth);
+  if (run.common.trace) stepper.set_observer(&tracer);  // untraced, the poses take the fast path
+  stepper.start(range.start, range.stop, range.step);
+  while (stepper.step()) {  // one requested pose
+  }
+  const LinkageSweep& sweep = stepper.result();
+  if (stepper.stopped()) {
     return report_stopped(run.common, {{"mechanism", model.description().name}, {"solver", run.solver}}, tracer.rows());
   }
   const double time_s =

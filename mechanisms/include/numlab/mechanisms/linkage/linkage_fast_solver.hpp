@@ -18,7 +18,7 @@
 // and the crank's cos and sin once per solve, not at every residual.
 // and velocity() solves J qdot = -Phi_t block by block (J is block lower triangular in block order).
 //
-// tests/linkage_fast/ checks that both paths agree on every shipped model and that nothing is
+// tests/mechanisms/linkage/fast/ checks that both paths agree on every shipped model and that nothing is
 // allocated. The teaching path, and --trace and --step, stay with LinkageSolver.
 
 #include <Eigen/Core>
