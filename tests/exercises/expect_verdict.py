@@ -2,23 +2,38 @@
 """Runs `numlab exercise check` on one solution and checks the verdict it gives.
 
   expect_verdict.py NUMLAB reference EXERCISE COMMAND...   every check passes (exit 0, status pass)
-  expect_verdict.py NUMLAB mutant PATCH OUT_DIR            the mutant is caught as its header says
+  expect_verdict.py NUMLAB mutant PATCH OUT_DIR [RUNNER...] the mutant is caught as its header says
   expect_verdict.py NUMLAB summary PATCH_DIR OUT_DIR       the catch rate, overall and by exercise
 
 A mutant is tests/exercises/mutants/EXERCISE/NAME.patch: a unified diff against the exercise's
 Python reference, applied (apply_mutant.py) into OUT_DIR/EXERCISE/NAME.py before the check runs;
-a patch that no longer applies fails, naming itself. The mutant's header names the bug and the
-verdict:
+a patch that no longer applies fails, naming itself. An Octave mutant,
+mutants/octave/EXERCISE/NAME.patch, is a diff against references/octave/EXERCISE.m: the mutant is
+named as its '+++' line says (NAME.m) and run by RUNNER (octave-cli --no-gui --quiet; the default
+RUNNER is this Python). A RUNNER or reference COMMAND that is not on PATH is a skip (exit 77,
+"SKIPPED: ..."), not a failure. The mutant's header names the bug and the verdict:
   # BUG: what is wrong (and, for a seed's error, which seed)
   # EXPECT-CHECK: part of the name of a check that must FAIL (not error)
   # EXPECT-MESSAGE: part of that check's message (one line each; all must appear)
 """
 import json
 import os
+import shutil
 import subprocess
 import sys
 
 from apply_mutant import make_mutant
+
+
+SKIP = 77  # ctest's SKIP_RETURN_CODE for these tests
+
+
+def skip_unless_found(program):
+    """Exits 77 (a skip) naming the program when it is not on PATH: Octave is optional (.ci/setup has it)."""
+    if os.sep not in program and shutil.which(program) is None:
+        hint = " (Debian: apt-get install octave)" if program.startswith("octave") else ""
+        print(f"SKIPPED: {program} is not on PATH{hint}: this test needs it")
+        sys.exit(SKIP)
 
 
 def run_check(numlab, exercise, command):
@@ -63,6 +78,7 @@ def caught(results, fields):
 
 
 def expect_reference(numlab, exercise, command):
+    skip_unless_found(command[0])
     code, results = run_check(numlab, exercise, command)
     wrong = [test for test in results["tests"] if test["status"] != "pass"]
     for test in wrong:
@@ -76,19 +92,29 @@ def mutant_exercise(path):
     return os.path.basename(os.path.dirname(os.path.abspath(path)))
 
 
+def mutant_suffix(patch):
+    """The mutant's file suffix, from the patch's '+++' line: .py, or .m for an Octave mutant."""
+    with open(patch, encoding="utf-8") as text:
+        for line in text:
+            if line.startswith("+++ "):
+                return os.path.splitext(line[4:].split("\t")[0].strip())[1] or ".py"
+    return ".py"
+
+
 def mutant_from_patch(patch, out_dir):
-    """OUT_DIR/EXERCISE/NAME.py, made from mutants/EXERCISE/NAME.patch (exits if it does not apply)."""
+    """OUT_DIR/EXERCISE/NAME.py (or .m), made from mutants/[octave/]EXERCISE/NAME.patch (exits if it does not apply)."""
     exercise = os.path.basename(os.path.dirname(os.path.abspath(patch)))
-    name = os.path.splitext(os.path.basename(patch))[0] + ".py"
+    name = os.path.splitext(os.path.basename(patch))[0] + mutant_suffix(patch)
     path = os.path.join(out_dir, exercise, name)
     make_mutant(patch, path)
     return path
 
 
-def expect_mutant(numlab, patch, out_dir):
+def expect_mutant(numlab, patch, out_dir, runner):
+    skip_unless_found(runner[0])
     path = mutant_from_patch(patch, out_dir)
     fields = header(path)
-    _, results = run_check(numlab, mutant_exercise(path), [sys.executable, os.path.abspath(path)])
+    _, results = run_check(numlab, mutant_exercise(path), runner + [os.path.abspath(path)])
     test, why = caught(results, fields)
     if test is None:
         sys.exit(f"{patch} ({fields['BUG'][0]}) was not caught: {why}")
@@ -122,7 +148,7 @@ if __name__ == "__main__":
     if mode == "reference":
         expect_reference(numlab, sys.argv[3], sys.argv[4:])
     elif mode == "mutant":
-        expect_mutant(numlab, sys.argv[3], sys.argv[4])
+        expect_mutant(numlab, sys.argv[3], sys.argv[4], sys.argv[5:] or [sys.executable])
     elif mode == "summary":
         summary(numlab, sys.argv[3], sys.argv[4])
     else:
