@@ -1,29 +1,15 @@
 #include "methods/linear_methods.hpp"
 
-#include <map>
 #include <stdexcept>
 
 #include "numlab/linalg/eigen_reference.hpp"
 #include "numlab/linalg/gsl_reference.hpp"
 #include "numlab/linalg/inverse2x2.hpp"
+#include "numlab/nonlinear/linear_step.hpp"
 
 namespace numlab::cli {
 
 namespace {
-
-const std::map<std::string, std::string>& descriptions() {
-  static const std::map<std::string, std::string> table = {
-      {"gepp", "Gaussian elimination with partial pivoting (hand-written)"},
-      {"gepp-no-pivot", "Gaussian elimination without pivoting (hand-written, to show why pivoting matters)"},
-      {"gauss-seidel", "Gauss-Seidel on the normal equations A^T A x = A^T b (hand-written)"},
-      {"gauss-seidel-plain", "Gauss-Seidel on A x = b directly (hand-written, for comparison)"},
-      {"inverse2x2", "2x2 closed-form inverse (hand-written; n = 2 only)"},
-      {"gsl-lu", "GSL LU with partial pivoting (gsl_linalg_LU_decomp / LU_solve)"},
-      {"gsl-qr", "GSL Householder QR (gsl_linalg_QR_decomp / QR_solve)"},
-      {"eigen-lu", "Eigen PartialPivLU"},
-  };
-  return table;
-}
 
 DynamicResult run_gauss_elimination(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, linalg::Pivoting pivoting,
                                     const LinearSettings& settings, LinearTracers tracers) {
@@ -71,29 +57,88 @@ DynamicResult run_closed_form(const Eigen::MatrixXd& A, const Eigen::VectorXd& b
 
 }  // namespace
 
+namespace {
+
+// One row per method: its name, what it is, and how it runs. The five Newton can use inside its
+// iteration take their names from the nonlinear library (nonlinear::to_string), so the two lists
+// cannot drift apart.
+struct LinearMethodEntry {
+  std::string name;
+  std::string description;
+  DynamicResult (*run)(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings& settings,
+                       LinearTracers tracers);
+};
+
+std::string newton_name(nonlinear::LinearMethod method) { return std::string(nonlinear::to_string(method)); }
+
+const std::vector<LinearMethodEntry>& linear_methods() {
+  using nonlinear::LinearMethod;
+  using System = linalg::GaussSeidelOptions::System;
+  static const std::vector<LinearMethodEntry> table = {
+      {newton_name(LinearMethod::gepp), "Gaussian elimination with partial pivoting (hand-written)",
+       [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings& s, LinearTracers t) {
+         return run_gauss_elimination(A, b, linalg::Pivoting::partial, s, t);
+       }},
+      {"gepp-no-pivot", "Gaussian elimination without pivoting (hand-written, to show why pivoting matters)",
+       [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings& s, LinearTracers t) {
+         return run_gauss_elimination(A, b, linalg::Pivoting::none, s, t);
+       }},
+      {newton_name(LinearMethod::gauss_seidel), "Gauss-Seidel on the normal equations A^T A x = A^T b (hand-written)",
+       [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings& s, LinearTracers t) {
+         return run_gauss_seidel(A, b, System::normal_equations, s, t);
+       }},
+      {"gauss-seidel-plain", "Gauss-Seidel on A x = b directly (hand-written, for comparison)",
+       [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings& s, LinearTracers t) {
+         return run_gauss_seidel(A, b, System::plain, s, t);
+       }},
+      {newton_name(LinearMethod::inverse2x2), "2x2 closed-form inverse (hand-written; n = 2 only)",
+       [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings&, LinearTracers) {
+         return run_closed_form(A, b);
+       }},
+      {newton_name(LinearMethod::gsl_lu), "GSL LU with partial pivoting (gsl_linalg_LU_decomp / LU_solve)",
+       [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings&, LinearTracers) {
+         return linalg::gsl_lu_solve(A, b);
+       }},
+      {"gsl-qr", "GSL Householder QR (gsl_linalg_QR_decomp / QR_solve)",
+       [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings&, LinearTracers) {
+         return linalg::gsl_qr_solve(A, b);
+       }},
+      {newton_name(LinearMethod::eigen_lu), "Eigen PartialPivLU",
+       [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings&, LinearTracers) {
+         return linalg::EigenLu<Eigen::Dynamic>().solve(A, b);
+       }},
+  };
+  return table;
+}
+
+const LinearMethodEntry* method_named(const std::string& name) {
+  for (const LinearMethodEntry& entry : linear_methods()) {
+    if (entry.name == name) return &entry;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
 const std::vector<std::string>& linear_method_names() {
-  static const std::vector<std::string> names = {"gepp",       "gepp-no-pivot", "gauss-seidel", "gauss-seidel-plain",
-                                                 "inverse2x2", "gsl-lu",        "gsl-qr",       "eigen-lu"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all;
+    for (const LinearMethodEntry& entry : linear_methods()) all.push_back(entry.name);
+    return all;
+  }();
   return names;
 }
 
 std::string describe_linear_method(const std::string& method) {
-  const auto found = descriptions().find(method);
-  return found == descriptions().end() ? method : found->second;
+  const LinearMethodEntry* entry = method_named(method);
+  return entry == nullptr ? method : entry->description;
 }
 
 DynamicResult run_linear_method(const std::string& method, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
                                 const LinearSettings& settings, LinearTracers tracers) {
-  using System = linalg::GaussSeidelOptions::System;
-  if (method == "gepp") return run_gauss_elimination(A, b, linalg::Pivoting::partial, settings, tracers);
-  if (method == "gepp-no-pivot") return run_gauss_elimination(A, b, linalg::Pivoting::none, settings, tracers);
-  if (method == "gauss-seidel") return run_gauss_seidel(A, b, System::normal_equations, settings, tracers);
-  if (method == "gauss-seidel-plain") return run_gauss_seidel(A, b, System::plain, settings, tracers);
-  if (method == "inverse2x2") return run_closed_form(A, b);
-  if (method == "gsl-lu") return linalg::gsl_lu_solve(A, b);
-  if (method == "gsl-qr") return linalg::gsl_qr_solve(A, b);
-  if (method == "eigen-lu") return linalg::EigenLu<Eigen::Dynamic>().solve(A, b);
-  throw std::invalid_argument("unknown linear method '" + method + "'");
+  const LinearMethodEntry* entry = method_named(method);
+  if (entry == nullptr) throw std::invalid_argument("unknown linear method '" + method + "'");
+  return entry->run(A, b, settings, tracers);
 }
 
 }  // namespace numlab::cli
