@@ -310,8 +310,12 @@ int MechanismCommand::sweep_jansen(const CommonOptions& common, const SweepRange
   StepPause pause(common.step);
   Tracer tracer(common.trace && (common.step || common.format != Format::json) ? &std::cerr : nullptr, &pause);
   const auto begin = std::chrono::steady_clock::now();
-  const mechanisms::JansenSweep sweep = mechanisms::crank_sweep(model, *solver, range.start, range.stop, range.step, {},
-                                                                common.trace ? &tracer : nullptr);
+  mechanisms::JansenSweepStepper stepper(model, *solver);
+  if (common.trace) stepper.set_observer(&tracer);
+  stepper.start(range.start, range.stop, range.step);
+  while (stepper.step()) {  // one pose (the walk-in's included)
+  }
+  const mechanisms::JansenSweep sweep = mechanisms::checked_sweep(model, stepper.result());
   if (pause.stopped()) {
     nlohmann::ordered_json attempts = nlohmann::ordered_json::array();
     for (const auto& attempt : tracer.attempts()) attempts.push_back(attempt_json(attempt));

@@ -185,8 +185,12 @@ int run_mustang(const MustangRequest& request) {
   StepPause pause(common.step);
   Tracer tracer(common.step ? &std::cerr : nullptr, &pause);
   const auto begin = std::chrono::steady_clock::now();
-  const MustangSweep sweep =
-      mechanisms::mustang_sweep(*solver, request.start, request.stop, request.step, {}, common.trace ? &tracer : nullptr);
+  mechanisms::MustangSweepStepper stepper(*solver);
+  if (common.trace) stepper.set_observer(&tracer);
+  stepper.start(request.start, request.stop, request.step);
+  while (stepper.step()) {  // one requested angle, its marching and halvings included
+  }
+  const MustangSweep& sweep = stepper.result();
   if (pause.stopped()) {
     return report_stopped(common, {{"mechanism", "mustang"}, {"solver", request.solver}}, trace_json(tracer.attempts()));
   }

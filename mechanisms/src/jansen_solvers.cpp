@@ -382,7 +382,10 @@ ClosedFormBound jansen_closed_form_bound(JansenModel model, double crank, const 
 JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
                         double step_deg, const JansenSweepOptions& options,
                         SweepObserver<JansenSweepStepper>* observer) {
-  const JansenSweepAngles solved = solve_crank_sweep(model, solver, start_deg, stop_deg, step_deg, options, observer);
+  return checked_sweep(model, solve_crank_sweep(model, solver, start_deg, stop_deg, step_deg, options, observer), options);
+}
+
+JansenSweep checked_sweep(JansenModel model, const JansenSweepAngles& solved, const JansenSweepOptions& options) {
   const JansenLeg leg;
   JansenSweep sweep;
   sweep.status = solved.status;

@@ -150,5 +150,8 @@ JansenSweepAngles solve_crank_sweep(JansenModel model, JansenPoseSolver& solver,
 JansenSweep crank_sweep(JansenModel model, JansenPoseSolver& solver, double start_deg, double stop_deg,
                         double step_deg, const JansenSweepOptions& options = {},
                         SweepObserver<JansenSweepStepper>* observer = nullptr);
+// The second half of crank_sweep(): the poses a JansenSweepStepper solved, with their joints and
+// (with options.checks) their checks against the closed form. For a caller that drives the stepper.
+JansenSweep checked_sweep(JansenModel model, const JansenSweepAngles& solved, const JansenSweepOptions& options = {});
 
 }  // namespace numlab::mechanisms
