@@ -11,8 +11,10 @@
 #include "exercises/checker.hpp"
 #include "exercises/child_session.hpp"
 #include "exercises/exercise.hpp"
+#include "exercises/replay.hpp"
 #include "exercises/results.hpp"
 #include "exercises/starters.hpp"
+#include "numlab/printable_text.hpp"
 
 namespace numlab::cli {
 
@@ -88,10 +90,75 @@ int exit_code_for(const std::vector<exercises::CheckResult>& results) {
   return exit_success;
 }
 
+// A word as a POSIX shell reads it back: as it is when it holds only safe characters, else quoted.
+std::string shell_word(const std::string& word) {
+  const bool plain = !word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                             "0123456789_-+./=:,@%") == std::string::npos;
+  if (plain) return word;
+  std::string quoted = "'";
+  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 std::string shell_words(const std::vector<std::string>& words) {
   std::string line;
-  for (const auto& word : words) line += (line.empty() ? "" : " ") + word;
+  for (const auto& word : words) {
+    if (!line.empty()) line.push_back(' ');
+    line.append(shell_word(word));
+  }
   return line;
+}
+
+std::string out_dir_problem(const std::string& text) {
+  if (text.empty()) return "must name a folder, got an empty name";
+  const bool odd = text.find('\'') != std::string::npos || printable(text) != text;
+  return odd ? "'" + text + "': a folder name without quotes, control or invisible characters, please" : "";
+}
+
+// The failing checks' replay files (DIR/replay/NN-CHECK.jsonl), each result told the command that
+// replays it. A check without a request (one not run) has none.
+std::vector<std::pair<std::string, std::string>> plan_replays(std::vector<exercises::CheckResult>& results,
+                                                              const fs::path& out_dir,
+                                                              const std::vector<std::string>& program) {
+  std::vector<std::pair<std::string, std::string>> files;  // name, contents
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    auto& result = results[k];
+    if (result.status == CheckStatus::pass || result.exchanges.empty()) continue;
+    const std::string name = exercises::replay_file_name(static_cast<int>(k) + 1, result.name);
+    result.replay = "numlab exercise replay " + shell_word((out_dir / "replay" / name).string()) + " -- " +
+                    shell_words(program);
+    files.emplace_back(name, exercises::replay_lines(result));
+  }
+  return files;
+}
+
+// DIR/replay holds this run's failures only: made whole beside it, then put in place of the last
+// run's (which is removed), so no replay of a check that now passes is left behind.
+void write_replays(const fs::path& out_dir, const std::vector<std::pair<std::string, std::string>>& files) {
+  const fs::path target = out_dir / "replay";
+  std::error_code error;
+  if (fs::exists(target, error) && !fs::is_directory(target, error)) {
+    throw std::invalid_argument("exercise check: '" + target.string() + "' exists and is not a folder");
+  }
+  if (files.empty() && !fs::exists(target, error)) return;
+  std::string pattern = (out_dir / ".replay.partial-XXXXXX").string();
+  if (::mkdtemp(pattern.data()) == nullptr) {
+    throw std::invalid_argument("exercise check: cannot make a folder in '" + out_dir.string() + "'");
+  }
+  const fs::path staging = pattern;
+  try {
+    for (const auto& [name, contents] : files) write_file_atomically((staging / name).string(), contents);
+    if (fs::exists(target, error)) {
+      std::string old = (out_dir / ".replay.old-XXXXXX").string();
+      if (::mkdtemp(old.data()) == nullptr) throw std::invalid_argument("cannot make a folder");
+      fs::rename(target, fs::path(old) / "replay");
+      fs::remove_all(old, error);
+    }
+    fs::rename(staging, target);
+  } catch (const std::exception& failure) {
+    fs::remove_all(staging, error);
+    throw std::invalid_argument("exercise check: cannot write '" + target.string() + "': " + failure.what());
+  }
 }
 
 }  // namespace
@@ -106,13 +173,33 @@ ExerciseCommand::ExerciseCommand(CLI::App& app) {
   init_->add_option("NAME", name_, "The exercise")->required();
   init_->add_option("DIR", folder_, "The folder for the starter (made if missing; no file in it is overwritten)")
       ->required();
-  init_->add_option("--lang", language_, "python (default), cpp or octave");
+  init_->add_option("--lang,--language", language_, "python (default), cpp or octave");
   check_ = command_->add_subcommand("check", "Run COMMAND as a child process and check its replies");
   check_->add_option("NAME", name_, "The exercise")->required();
+  check_->add_option_function<std::string>(
+            "--format", [this](const std::string& text) { json_ = text == "json"; },
+            "On stdout: text (default), or json (results.json's contents)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            return text == "text" || text == "json" ? std::string() : "must be text or json, got '" + text + "'";
+          },
+          "text|json"));
+  check_->add_option("--out", out_dir_,
+                     "Also write, after the checks ran, DIR/report.html, DIR/results.json and, for each check that "
+                     "does not pass, DIR/replay/NN-CHECK.jsonl (its requests; the report gives the command that "
+                     "replays it). Without --out nothing is written")
+      ->check(CLI::Validator(out_dir_problem, "DIR"));
   check_->add_option("--timeout", timeout_seconds_, "Seconds allowed per request (default 10)")
       ->check(CLI::Validator(timeout_problem, "S"));
   check_->add_option("COMMAND", program_, "The student's program and its arguments, after --")->required();
-  add_common_options(*check_, common_);
+  replay_ = command_->add_subcommand(
+      "replay", "Send a failing check's requests (FILE, from check --out) to COMMAND again; show each reply beside "
+                "numlab's; exit 1 while they differ beyond the check's tolerance");
+  replay_->add_option("FILE", replay_file_, "DIR/replay/NN-CHECK.jsonl, as exercise check --out DIR wrote it")
+      ->required();
+  replay_->add_option("--timeout", timeout_seconds_, "Seconds allowed per request (default 10)")
+      ->check(CLI::Validator(timeout_problem, "S"));
+  replay_->add_option("COMMAND", program_, "The student's program and its arguments, after --")->required();
 }
 
 int ExerciseCommand::run() const {
@@ -120,7 +207,9 @@ int ExerciseCommand::run() const {
   if (show_->parsed()) return show();
   if (init_->parsed()) return init();
   if (check_->parsed()) return check();
-  throw std::invalid_argument("exercise: say what to do: list, show NAME, init NAME DIR or check NAME -- COMMAND");
+  if (replay_->parsed()) return replay();
+  throw std::invalid_argument(
+      "exercise: say what to do: list, show NAME, init NAME DIR, check NAME -- COMMAND or replay FILE -- COMMAND");
 }
 
 int ExerciseCommand::list() const {
@@ -152,32 +241,50 @@ int ExerciseCommand::init() const {
 
 int ExerciseCommand::check() const {
   // 1. Everything the user gave, checked before the program is started.
-  const CommonOptions common = checked_common_options(common_, "exercise check");
   const auto& exercise = exercises::find_exercise(name_);
   std::vector<PlannedFile> outputs;
-  if (given(common, "--out")) {
-    outputs = {{(fs::path(common.out_dir) / "report.html").string(), "--out"},
-               {(fs::path(common.out_dir) / "results.json").string(), "--out"}};
+  const bool out = !out_dir_.empty();
+  if (out) {
+    outputs = {{(fs::path(out_dir_) / "report.html").string(), "--out"},
+               {(fs::path(out_dir_) / "results.json").string(), "--out"},
+               {(fs::path(out_dir_) / "replay" / "01-check.jsonl").string(), "--out"}};
     check_outputs(outputs, {});
   }
   // 2. The program, started in its sandbox (a command that cannot start is bad input).
   exercises::ChildSession session(exercise.name, program_, timeout_seconds_);
   // 3. The battery.
-  const auto results = exercises::run_checks(exercise, session);
+  auto results = exercises::run_checks(exercise, session);
   session.finish();
-  // 4. The verdicts: on stdout, and as files with --out.
+  // 4. The verdicts: on stdout, and as files with --out (with a replay file per failing check).
+  const auto replays = out ? plan_replays(results, out_dir_, program_)
+                           : std::vector<std::pair<std::string, std::string>>{};
   const auto json = exercises::results_json(results);
-  if (common.format == Format::json) {
+  if (json_) {
     std::cout << json.dump(2) << '\n';
   } else {
     std::cout << exercises::results_text(exercise, results);
   }
-  if (!outputs.empty()) {
-    ensure_directory(common.out_dir);
+  if (out) {
+    ensure_directory(out_dir_);
     write_file_atomically(outputs[0].path, exercises::results_html(exercise, results, shell_words(program_)));
     write_file_atomically(outputs[1].path, json.dump(2) + "\n");
+    write_replays(out_dir_, replays);
   }
   return exit_code_for(results);
+}
+
+int ExerciseCommand::replay() const {
+  // 1. The file, its exercise and its check, before the program is started.
+  const exercises::ReplayFile file = exercises::read_replay_file(replay_file_);
+  const auto& exercise = exercises::find_exercise(file.exercise);
+  const exercises::Check check = exercises::find_check(exercise, file.check);
+  // 2. The same check, through the same sandbox as `exercise check`.
+  exercises::ChildSession session(exercise.name, program_, timeout_seconds_);
+  const exercises::CheckResult result = exercises::run_check(exercise, check, session);
+  session.finish();
+  // 3. Request by request, the program's reply beside numlab's, then the verdict.
+  std::cout << exercises::replay_text(result, exercises::requests_mismatch(file, result));
+  return result.status == CheckStatus::pass ? exit_success : exit_method_failed;
 }
 
 }  // namespace numlab::cli

@@ -1,5 +1,5 @@
 #pragma once
-// `numlab exercise list|show|init|check` (docs/exercises.md): a student's own solver, run as a
+// `numlab exercise list|show|init|check|replay` (docs/exercises.md): a student's own solver, run as a
 // sandboxed child process, checked against GSL, Eigen, numlab's steppers and the closed forms.
 
 #include <CLI/CLI.hpp>
@@ -21,18 +21,22 @@ class ExerciseCommand {
   int show() const;
   int init() const;
   int check() const;
+  int replay() const;
 
   CLI::App* command_;
   CLI::App* list_;
   CLI::App* show_;
   CLI::App* init_;
   CLI::App* check_;
+  CLI::App* replay_;
   std::string name_;
   std::string folder_;
   std::string language_ = "python";
   double timeout_seconds_ = 10.0;
   std::vector<std::string> program_;
-  CommonOptions common_;
+  std::string replay_file_;
+  bool json_ = false;          // check --format json
+  std::string out_dir_;        // check --out DIR ("" when not given)
 };
 
 }  // namespace numlab::cli

@@ -17,10 +17,47 @@ std::string to_string(CheckStatus status) {
 
 namespace {
 
+// Passes each request on to the real session and keeps it, with the reply (or why there was none)
+// and what the check said it expected: the makings of a replay file.
+class RecordingSession final : public Session {
+ public:
+  RecordingSession(std::string exercise, Session& inner) : exercise_(std::move(exercise)), inner_(inner) {}
+
+  nlohmann::json ask(nlohmann::json request) override {
+    Exchange exchange;
+    exchange.request = request;
+    exchange.request["exercise"] = exercise_;
+    exchange.request["id"] = static_cast<long long>(exchanges.size()) + 1;
+    exchanges.push_back(std::move(exchange));
+    try {
+      nlohmann::json reply = inner_.ask(std::move(request));
+      exchanges.back().reply = reply;
+      exchanges.back().reply["id"] = exchanges.back().request["id"];  // the id the file's request carries
+      return reply;
+    } catch (const std::exception& error) {
+      exchanges.back().error = error.what();
+      throw;
+    }
+  }
+  double seconds_per_request() const override { return inner_.seconds_per_request(); }
+  void begin_check() override { inner_.begin_check(); }
+  std::string take_output() override { return inner_.take_output(); }
+  void expect(Expectation expected) override {
+    if (!exchanges.empty()) exchanges.back().expected = std::move(expected);
+  }
+
+  std::vector<Exchange> exchanges;
+
+ private:
+  std::string exercise_;
+  Session& inner_;
+};
+
 // One check: its verdict, or what stopped the program from giving one.
-CheckResult run_one(const Check& check, Session& session, bool& child_failed) {
-  CheckResult result{check.name, check.task_id, CheckStatus::error, "", "", "", 0.0, {}};
+CheckResult run_one(const std::string& exercise, const Check& check, Session& inner, bool& child_failed) {
+  CheckResult result{check.name, check.task_id, CheckStatus::error, "", "", "", 0.0, {}, {}, ""};
   child_failed = false;
+  RecordingSession session(exercise, inner);
   session.begin_check();
   try {
     const Verdict verdict = check.run(session);
@@ -43,6 +80,7 @@ CheckResult run_one(const Check& check, Session& session, bool& child_failed) {
   }
   result.seconds_per_request = session.seconds_per_request();
   result.output = session.take_output();
+  result.exchanges = std::move(session.exchanges);
   return result;
 }
 
@@ -55,14 +93,19 @@ std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session) 
     if (failures_in_a_row >= max_failures_in_a_row) {
       results.push_back({check.name, check.task_id, CheckStatus::error,
                          fmt::format("not run: the program gave no reply in the {} checks before", failures_in_a_row),
-                         "", "", 0.0, {}});
+                         "", "", 0.0, {}, {}, ""});
       continue;
     }
     bool child_failed = false;
-    results.push_back(run_one(check, session, child_failed));
+    results.push_back(run_one(exercise.name, check, session, child_failed));
     failures_in_a_row = child_failed ? failures_in_a_row + 1 : 0;
   }
   return results;
+}
+
+CheckResult run_check(const Exercise& exercise, const Check& check, Session& session) {
+  bool child_failed = false;
+  return run_one(exercise.name, check, session, child_failed);
 }
 
 }  // namespace numlab::exercises

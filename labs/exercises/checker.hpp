@@ -14,6 +14,14 @@ enum class CheckStatus { pass, fail, error };
 
 std::string to_string(CheckStatus status);  // "pass", "fail", "error"
 
+// One request of a check and what came of it, for the replay file (replay.hpp).
+struct Exchange {
+  nlohmann::json request;  // as sent: the check's fields, "exercise" and "id" (counted from 1 in each check)
+  nlohmann::json reply;    // the program's reply; null when none came or it replied with an error
+  std::string error;       // the program's "error", or why no reply came; "" otherwise
+  Expectation expected;    // what the check expected (empty when it said nothing)
+};
+
 struct CheckResult {
   std::string name;
   int task_id = 1;
@@ -23,6 +31,8 @@ struct CheckResult {
   std::string output;   // the program's stderr during the check
   double seconds_per_request = 0.0;  // the student's program
   std::vector<ReferenceTime> references;
+  std::vector<Exchange> exchanges;  // the check's requests, in order
+  std::string replay;  // the command that replays a failure (set by `exercise check --out`), or ""
 };
 
 // After this many checks in a row end in ChildFailure, the rest are not run: each is an error that
@@ -30,5 +40,8 @@ struct CheckResult {
 inline constexpr int max_failures_in_a_row = 3;
 
 std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session);
+
+// One check of `exercise` alone (what `exercise replay` runs), its requests recorded.
+CheckResult run_check(const Exercise& exercise, const Check& check, Session& session);
 
 }  // namespace numlab::exercises

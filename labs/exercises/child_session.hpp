@@ -60,6 +60,7 @@ class ChildSession : public Session {
   std::string start_error_;  // why a restart failed; the next request reports it
   CappedText output_{output_cap};
   std::vector<double> seconds_;
+  bool replied_since_start_ = false;  // the first reply after a start waited for the start-up: not timed
   long long last_id_ = 0;
 };
 

@@ -9,6 +9,7 @@
 
 #include "exercises/exercise_list.hpp"
 #include "exercises/linear_checks.hpp"
+#include "exercises/numbers.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
 #include "exercises/task_texts.hpp"
@@ -134,6 +135,16 @@ std::string numlab_ending(const Problem& p, const Reference& reference) {
   }
 }
 
+// numlab's reply to p, for the replay file: its status, sweeps and last x (the check allows a sweep
+// more or less, and x to numlab's accuracy).
+Expectation expectation(const Problem& p, const Reference& reference) {
+  nlohmann::json reply = {{"status", std::string(to_string(reference.status))}, {"iterations", reference.sweeps}};
+  if (!reference.xs.empty()) reply["x"] = to_json(reference.xs.back());
+  return {p.label, reply,
+          numlab_ending(p, reference) + " (your sweeps within 1 of it; x and a trace sweep by sweep as numlab's, to "
+                                        "100*sweep*n*eps*max(1,|x|))"};
+}
+
 // Tasks 1 and 3: converged, in numlab's number of sweeps (+-1 for rounding at the stop test), to
 // numlab's accuracy.
 Verdict converges_accurately(Session& session, const std::vector<Problem>& problems) {
@@ -141,6 +152,7 @@ Verdict converges_accurately(Session& session, const std::vector<Problem>& probl
   for (const Problem& p : problems) {
     const Reference reference = reference_for(p, times);
     const nlohmann::json reply = session.ask(request_for(p));
+    session.expect(expectation(p, reference));
     const std::string status = string_field(reply, "status");
     const long long sweeps = integer_field(reply, "iterations");
     if (status != "converged") {
@@ -174,6 +186,7 @@ Verdict ends_without_converging(Session& session, const Problem& p) {
   linear::ReferenceTimes times;
   const Reference reference = reference_for(p, times);
   const nlohmann::json reply = session.ask(request_for(p));
+  session.expect(expectation(p, reference));
   const std::string status = string_field(reply, "status");
   const long long sweeps = integer_field(reply, "iterations");
   if (reference.status == Status::max_iterations) {
@@ -230,6 +243,7 @@ Verdict sweeps_like_numlab(Session& session, const std::vector<Problem>& problem
   for (const Problem& p : problems) {
     const Reference reference = reference_for(p, times);
     const nlohmann::json reply = session.ask(request_for(p));
+    session.expect(expectation(p, reference));
     const nlohmann::json* trace = linear::optional_trace(reply);
     if (trace == nullptr) return missing_trace(p, times);
     double largest = 1.0;
@@ -251,15 +265,16 @@ Verdict sweeps_like_numlab(Session& session, const std::vector<Problem>& problem
       Eigen::Index i = 0;
       const double difference = (x - expected).cwiseAbs().maxCoeff(&i);
       if (difference > allowed) {
-        return Verdict::fail(fmt::format("{}: sweep {}: x[{}] = {}, numlab's sweep gives {} (difference {}, allowed {} "
+        return Verdict::fail(fmt::format("{}: sweep {}: x[{}] = {}, numlab's sweep gives {} ({}; allowed {} "
                                          "= 100*sweep*n*eps*max(1,|x|))",
-                                         p.label, s + 1, i, sci(x(i)), sci(expected(i)), sci(difference),
-                                         sci(allowed)),
+                                         p.label, s + 1, i, digits17(x(i)), digits17(expected(i)),
+                                         exercises::difference(x(i), expected(i)), sci(allowed)),
                              departure_hint(p, reference, s, x, allowed), times.medians());
       }
       if (std::abs(update - reference.updates[s]) > 2.0 * allowed) {
-        return Verdict::fail(fmt::format("{}: sweep {}: update_inf {}, numlab's {} (allowed difference {})", p.label,
-                                         s + 1, sci(update), sci(reference.updates[s]), sci(2.0 * allowed)),
+        return Verdict::fail(fmt::format("{}: sweep {}: update_inf {}, numlab's {} ({}; allowed difference {})", p.label,
+                                         s + 1, digits17(update), digits17(reference.updates[s]),
+                                         exercises::difference(update, reference.updates[s]), sci(2.0 * allowed)),
                              "update_inf is max_i |x_i(new) - x_i(old)| over the sweep", times.medians());
       }
     }
@@ -278,6 +293,7 @@ Verdict converged_claims_hold(Session& session, const std::vector<Problem>& prob
   for (const Problem& p : problems) {
     const Reference reference = reference_for(p, times);
     const nlohmann::json reply = session.ask(request_for(p));
+    session.expect(expectation(p, reference));
     const nlohmann::json* trace = linear::optional_trace(reply);
     if (trace == nullptr) return missing_trace(p, times);
     if (string_field(reply, "status") != "converged") continue;

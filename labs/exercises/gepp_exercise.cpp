@@ -8,6 +8,7 @@
 
 #include "exercises/exercise_list.hpp"
 #include "exercises/linear_checks.hpp"
+#include "exercises/numbers.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
 #include "exercises/task_texts.hpp"
@@ -29,9 +30,12 @@ struct System {
   Eigen::VectorXd b;
 };
 
+// A random matrix's label names its seed, so that the failure can be made again by hand
+// (numlab's generate_system(kind, n, seed)).
 System generated(const std::string& label, std::string_view kind, int n, unsigned seed = 1) {
   linalg::GeneratedSystem system = linalg::generate_system(kind, n, seed);
-  return {label, std::move(system.A), std::move(system.b)};
+  const bool random = kind == "random" || kind == "singular";
+  return {random ? fmt::format("{}, seed {}", label, seed) : label, std::move(system.A), std::move(system.b)};
 }
 
 System given(const std::string& label, Eigen::MatrixXd A) {
@@ -172,9 +176,10 @@ std::optional<Departure> first_departure(const nlohmann::json& trace, const Refe
                        hint};
     }
     if (std::abs(pivot - expected.pivot) > pivot_tolerance) {
-      return Departure{fmt::format("column {}: your pivot on row {} is {}; numlab's is {}, allowed difference {} "
+      return Departure{fmt::format("column {}: your pivot on row {} is {}; numlab's is {} ({}), allowed difference {} "
                                    "(10*n*eps*growth*max|a_ij|)",
-                                   k, row, sci(pivot), sci(expected.pivot), sci(pivot_tolerance)),
+                                   k, row, digits17(pivot), digits17(expected.pivot),
+                                   difference(pivot, expected.pivot), sci(pivot_tolerance)),
                        "the right row but another value: an earlier column left different numbers below it "
                        "(a swap of only part of the row, or a wrong elimination update)"};
     }
@@ -205,8 +210,11 @@ std::string where_x_departs(const Eigen::VectorXd& x, const Eigen::VectorXd& ref
   const double scale = std::max(reference.cwiseAbs().maxCoeff(), 1e-300);
   for (Eigen::Index i = x.size() - 1; i >= 0; --i) {
     if (std::abs(x(i) - reference(i)) > allowed * scale) {
-      return i == x.size() - 1 ? fmt::format("; x[{}] is already wrong", i)
-                               : fmt::format("; counting up from the last unknown, x[{}] is the first wrong entry", i);
+      const std::string values = fmt::format("x[{}] = {}, GSL LU's {} ({})", i, digits17(x(i)), digits17(reference(i)),
+                                             difference(x(i), reference(i)));
+      return i == x.size() - 1
+                 ? fmt::format("; x[{}] is already wrong: {}", i, values)
+                 : fmt::format("; counting up from the last unknown, x[{}] is the first wrong entry: {}", i, values);
     }
   }
   return "";
@@ -218,13 +226,17 @@ Verdict solves_accurately(Session& session, const std::vector<System>& systems) 
   for (const System& system : systems) {
     const Reference reference = reference_for(system, times);
     const nlohmann::json reply = session.ask(request_for(system));
+    const double n = reference.n;
+    const double allowed = 10.0 * n * reference.kappa * eps * reference.growth;
+    session.expect({system.label, {{"x", to_json(reference.gsl_x)}},
+                    fmt::format("x within {} (relative, inf-norm) of GSL LU's x above, and a relative residual within "
+                                "{} (10*n*eps*growth)",
+                                sci(allowed), sci(10.0 * n * eps * reference.growth))});
     if (replied_singular(reply)) {
       return Verdict::fail(not_singular_message(system, reference), singular_threshold_hint, times.medians());
     }
     const Eigen::VectorXd x = vector_field(reply, "x", reference.n);
-    const double n = reference.n;
     const double forward = linear::relative_error(x, reference.gsl_x);
-    const double allowed = 10.0 * n * reference.kappa * eps * reference.growth;
     if (!(forward <= allowed)) {
       return Verdict::fail(
           fmt::format("{}: x differs from GSL LU by {} (relative, inf-norm), allowed {} (10*n*kappa*eps*growth; n = {}, "
@@ -252,6 +264,10 @@ Verdict reports_singular(Session& session, const std::vector<System>& systems) {
   for (const System& system : systems) {
     const Reference reference = reference_for(system, times);
     const nlohmann::json reply = session.ask(request_for(system));
+    session.expect({system.label, {{"status", "singular"}},
+                    fmt::format("\"status\": \"singular\": numlab's GEPP stops at column {}, |pivot| {} <= "
+                                "n*eps*max|a_ij| = {}",
+                                reference.stopped_column, sci(reference.stopped_pivot), sci(reference.negligible_pivot))});
     if (!replied_singular(reply)) {
       return Verdict::fail(
           fmt::format("{}: your reply has no \"status\": \"singular\"; numlab's GEPP stops at column {}: |pivot| = {} "
@@ -271,6 +287,14 @@ Verdict pivots_like_numlab(Session& session, const std::vector<System>& systems)
   for (const System& system : systems) {
     const Reference reference = reference_for(system, times);
     const nlohmann::json reply = session.ask(request_for(system));
+    nlohmann::json expected_trace = nlohmann::json::array();
+    for (std::size_t k = 0; k < reference.pivots.size(); ++k) {
+      expected_trace.push_back({{"column", k}, {"pivot_row", reference.pivots[k].row}, {"pivot", reference.pivots[k].pivot}});
+    }
+    session.expect({system.label, {{"trace", expected_trace}},
+                    fmt::format("the trace: each column's pivot_row as numlab's, its pivot within "
+                                "10*n*eps*growth*max|a_ij| = {} (x as for task 1)",
+                                sci(10.0 * reference.n * eps * reference.growth * reference.scale))});
     const nlohmann::json* trace = linear::optional_trace(reply);
     if (trace == nullptr) {
       return Verdict::fail(system.label + ": no trace in the reply",

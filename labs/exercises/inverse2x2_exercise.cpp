@@ -7,6 +7,7 @@
 
 #include "exercises/exercise_list.hpp"
 #include "exercises/linear_checks.hpp"
+#include "exercises/numbers.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
 #include "exercises/task_texts.hpp"
@@ -72,6 +73,9 @@ Verdict inverts_accurately(Session& session, const std::vector<Case>& cases) {
   for (const Case& item : cases) {
     const Reference reference = reference_for(item, times);
     const nlohmann::json reply = session.ask({{"A", to_json(Eigen::MatrixXd(item.A))}});
+    session.expect({item.label, {{"inverse", to_json(Eigen::MatrixXd(reference.closed_form.inverse))}},
+                    fmt::format("the inverse within {} (10*kappa*eps, relative, max-norm) of the closed form's above",
+                                sci(10.0 * reference.closed_form.condition_number * eps))});
     if (replied_singular(reply)) {
       // |det A| / ||A||_F^2 = 1 / (kappa + 1/kappa) for a 2x2 matrix: free of A's scale.
       const double kappa = reference.closed_form.condition_number;
@@ -90,10 +94,10 @@ Verdict inverts_accurately(Session& session, const std::vector<Case>& cases) {
     if (!(error <= allowed)) {
       Eigen::Index i = 0, j = 0;
       (yours - inverse).cwiseAbs().maxCoeff(&i, &j);
-      return Verdict::fail(fmt::format("{}: inverse[{}][{}] = {}, the closed form gives {}: inverse differs by {} "
+      return Verdict::fail(fmt::format("{}: inverse[{}][{}] = {}, the closed form gives {} ({}): inverse differs by {} "
                                        "(relative, max-norm), allowed {} (10*kappa*eps, kappa = {}); GSL LU agrees "
                                        "with the closed form to {}",
-                                       item.label, i, j, sci(yours(i, j)), sci(inverse(i, j)), sci(error),
+                                       item.label, i, j, digits17(yours(i, j)), digits17(inverse(i, j)), difference(yours(i, j), inverse(i, j)), sci(error),
                                        sci(allowed), sci(kappa), sci(linear::relative_error(reference.gsl, inverse))),
                            hint_for(yours, inverse, item.A, allowed), times.medians());
     }
@@ -107,6 +111,9 @@ Verdict reports_singular(Session& session, const std::vector<Case>& cases) {
   for (const Case& item : cases) {
     const Reference reference = reference_for(item, times);
     const nlohmann::json reply = session.ask({{"A", to_json(Eigen::MatrixXd(item.A))}});
+    session.expect({item.label, {{"status", "singular"}},
+                    fmt::format("\"status\": \"singular\": |det A| = {} <= eps*||A||_F^2 = {}",
+                                sci(std::abs(reference.closed_form.determinant)), sci(reference.threshold))});
     if (!replied_singular(reply)) {
       return Verdict::fail(fmt::format("{}: your reply has no \"status\": \"singular\"; |det A| = {} <= "
                                        "eps*||A||_F^2 = {} (kappa_2 >= 1/eps)",

@@ -12,6 +12,7 @@
 #include "exercises/exercise_list.hpp"
 #include "exercises/jansen_poses.hpp"
 #include "exercises/linkage_checks.hpp"
+#include "exercises/numbers.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
 #include "exercises/task_texts.hpp"
@@ -106,14 +107,17 @@ Verdict check_f(Session& session) {
   const auto list = poses();
   for (const Pose& pose : list) {
     const nlohmann::json reply = session.ask(request_for(pose));
-    const Eigen::VectorXd f = vector_field(reply, "f", 10);
     Jansen10Closure::Vector expected;
     Jansen10Closure(pose.crank_angle).residual(pose.theta, expected);
+    session.expect({pose_text(pose), {{"f", to_json(Eigen::VectorXd(expected))}},
+                    fmt::format("each f[i] within {} of numlab's Jansen10Closure above", sci(tolerance))});
+    const Eigen::VectorXd f = vector_field(reply, "f", 10);
     for (int i = 0; i < 10; ++i) {
       if (std::abs(f(i) - expected(i)) <= tolerance) continue;
-      return Verdict::fail(fmt::format("f[{}] = {:.10g}, expected {:.10g} (numlab's Jansen10Closure, seed 001's f{}, "
-                                       "eq {}) at {}; allowed |error| {} (1e3 eps times the links' sum {:.4g})",
-                                       i, f(i), expected(i), i + 1, i + 8, pose_text(pose), sci(tolerance), links_sum()),
+      return Verdict::fail(fmt::format("f[{}] = {}, expected {} from numlab's Jansen10Closure (seed 001's f{}, eq {}) at {}; "
+                                       "{}, allowed |error| {} (1e3 eps times the links' sum {:.4g})",
+                                       i, digits17(f(i)), digits17(expected(i)), i + 1, i + 8, pose_text(pose),
+                                       difference(f(i), expected(i)), sci(tolerance), links_sum()),
                            f_hint(i, f(i), expected(i)));
     }
   }
@@ -177,20 +181,23 @@ Verdict check_J(Session& session) {
   const auto list = poses();
   for (const Pose& pose : list) {
     const nlohmann::json reply = session.ask(request_for(pose));
-    const Eigen::MatrixXd J = matrix_field(reply, "J", 10, 10);
     const Jansen10Closure closure(pose.crank_angle);
     Jansen10Closure::Matrix expected;
     closure.jacobian(pose.theta, expected);
-    const Eigen::MatrixXd differences = central_differences(closure, pose.theta);
     // J's entries are at most a link long; rounding in them is a few eps of that.
     const double tolerance = 1e3 * eps * expected.cwiseAbs().maxCoeff();
+    session.expect({pose_text(pose), {{"J", to_json(Eigen::MatrixXd(expected))}},
+                    fmt::format("each J[i][k] within {} of numlab's analytic Jansen10Closure J above", sci(tolerance))});
+    const Eigen::MatrixXd J = matrix_field(reply, "J", 10, 10);
+    const Eigen::MatrixXd differences = central_differences(closure, pose.theta);
     for (int i = 0; i < 10; ++i) {
       for (int k = 0; k < 10; ++k) {
         if (std::abs(J(i, k) - expected(i, k)) <= tolerance) continue;
         return Verdict::fail(
-            fmt::format("J[{}][{}] = {:.6g}, expected {:.6g} (d f[{}] / d {} from numlab's Jansen10Closure; central "
-                        "differences of f give {:.6g}) at {}; allowed |error| {} (1e3 eps times max |J|)",
-                        i, k, J(i, k), expected(i, k), i, angle_name(k), differences(i, k), pose_text(pose),
+            fmt::format("J[{}][{}] = {}, expected {} ({}; d f[{}] / d {} from numlab's Jansen10Closure; "
+                        "central differences of f give {}) at {}; allowed |error| {} (1e3 eps times max |J|)",
+                        i, k, digits17(J(i, k)), digits17(expected(i, k)), difference(J(i, k), expected(i, k)), i,
+                        angle_name(k), digits17(differences(i, k)), pose_text(pose),
                         sci(tolerance)),
             J_hint(J, expected, pose, i, k, tolerance));
       }

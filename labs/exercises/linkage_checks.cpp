@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "exercises/numbers.hpp"
 #include "exercises/reply_fields.hpp"
 
 namespace numlab::exercises {
@@ -80,8 +81,10 @@ std::optional<TraceDeparture> departure_at(const std::vector<TraceRow>& student,
   std::optional<TraceDeparture> departure{std::in_place};
   departure->message = fmt::format(
       "iteration {}: residual_inf = {}, step_inf = {}; numlab's Newton (GEPP, x <- x + dx with J dx = -f) from the same "
-      "start has residual_inf = {}, step_inf = {} ({})",
-      k + 1, sci(got.residual_inf), sci(got.step_inf), sci(ref.residual_inf), sci(ref.step_inf), allowed);
+      "start has residual_inf = {} ({}), step_inf = {} ({}); {}",
+      k + 1, digits17(got.residual_inf), digits17(got.step_inf), digits17(ref.residual_inf),
+      difference(got.residual_inf, ref.residual_inf), digits17(ref.step_inf), difference(got.step_inf, ref.step_inf),
+      allowed);
   const double before = k == 0 ? start_residual : reference[k - 1].residual_inf;
   if (std::abs(got.residual_inf - before) <= relative * before + residual_floor) {
     departure->hint = "residual_inf is the residual before the step: record ||f|| after x <- x + dx";

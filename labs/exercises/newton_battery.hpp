@@ -94,6 +94,10 @@ class NewtonBattery {
     for (std::size_t r = 0; r < requests.size(); ++r) {
       const Request& request = requests[r];
       const Answer answer = ask(session, request);
+      session.expect({Linkage::where(request.angle),
+                      {{Linkage::answer, to_json(Eigen::VectorXd(exact[r]))}, {"status", "converged"}},
+                      "status \"converged\" and the angles of the closed form above, to what the tolerance and "
+                      "kappa(J) allow (angles modulo 2 pi)"});
       const std::string where = Linkage::where(request.angle);
       const Closure closure(request.angle);
       typename Closure::Vector f;

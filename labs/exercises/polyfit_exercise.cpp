@@ -10,6 +10,7 @@
 #include "exercises/exercise_list.hpp"
 #include "exercises/linkage_checks.hpp"
 #include "exercises/nist_polynomial_sets.hpp"
+#include "exercises/numbers.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
 #include "exercises/task_texts.hpp"
@@ -122,6 +123,10 @@ std::optional<Verdict> wrong_count(const nlohmann::json& reply, const FitCase& f
 Verdict check_fits(Session& session, const std::vector<FitCase>& cases) {
   for (const FitCase& fit : cases) {
     const nlohmann::json reply = session.ask(request_for(fit));
+    session.expect({fmt::format("{}, degree {}, {} points", fit.name, fit.degree, fit.x.size()),
+                    {{"coefficients", to_json(fit.expected)}},
+                    fmt::format("the coefficients within {} of {} above (relative, each weighted by its column's norm)",
+                                sci(accuracy_of(fit).allowed), fit.reference)});
     if (auto verdict = wrong_status(reply, fit)) return *verdict;
     if (auto verdict = wrong_count(reply, fit)) return *verdict;
     const Eigen::VectorXd got = vector_field(reply, "coefficients", fit.degree + 1);
@@ -130,10 +135,11 @@ Verdict check_fits(Session& session, const std::vector<FitCase>& cases) {
     const double error = scaled_error(got, fit, a, worst);
     if (error <= a.allowed) continue;
     return Verdict::fail(
-        fmt::format("{} (degree {}, {} points): coefficients[{}] = {:.15g}, expected {:.15g} ({}); the coefficients "
+        fmt::format("{} (degree {}, {} points): coefficients[{}] = {}, expected {} ({}, {}); the coefficients "
                     "differ by {} (relative, each weighted by its column's norm), allowed {} (10 m eps (kappa + "
                     "kappa^2 tan theta), kappa = {}, tan theta = {})",
-                    fit.name, fit.degree, fit.x.size(), worst, got(worst), fit.expected(worst), fit.reference, sci(error),
+                    fit.name, fit.degree, fit.x.size(), worst, digits17(got(worst)), digits17(fit.expected(worst)),
+                    fit.reference, difference(got(worst), fit.expected(worst)), sci(error),
                     sci(a.allowed), sci(a.kappa), sci(a.tan_theta)) +
             (scaled_error(got.reverse(), fit, a, worst) <= a.allowed ? "; in reverse order your coefficients match: "
                                                                        "powers reversed"

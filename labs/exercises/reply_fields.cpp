@@ -63,10 +63,18 @@ double number_field(const nlohmann::json& reply, const std::string& key) {
 
 long long integer_field(const nlohmann::json& reply, const std::string& key) {
   const nlohmann::json& value = field(reply, key);
-  if (!value.is_number_integer()) {
-    throw ReplyError(fmt::format("\"{}\" is {}, not a whole number", key, value.type_name()));
+  if (value.is_number_integer()) return value.get<long long>();
+  // A tolerant reader takes 13.0 for 13: JSON has one number type, and Octave's jsonencode, or a
+  // float counter in Python, may write a whole number with a fraction.
+  if (value.is_number_float()) {
+    const double number = value.get<double>();
+    constexpr double limit = 9.2e18;  // inside long long's range
+    if (std::isfinite(number) && number == std::trunc(number) && std::abs(number) < limit) {
+      return static_cast<long long>(number);
+    }
+    throw ReplyError(fmt::format("\"{}\" is {}, not a whole number", key, value.dump()));
   }
-  return value.get<long long>();
+  throw ReplyError(fmt::format("\"{}\" is {}, not a whole number", key, value.type_name()));
 }
 
 std::string string_field(const nlohmann::json& reply, const std::string& key) {

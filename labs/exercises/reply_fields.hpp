@@ -21,7 +21,7 @@ Eigen::VectorXd vector_field(const nlohmann::json& reply, const std::string& key
 // reply[key] as `rows` lists of `cols` finite numbers.
 Eigen::MatrixXd matrix_field(const nlohmann::json& reply, const std::string& key, Eigen::Index rows,
                              Eigen::Index cols);
-// reply[key] as a finite number / a whole number / a string.
+// reply[key] as a finite number / a whole number (13 or 13.0, not 13.5) / a string.
 double number_field(const nlohmann::json& reply, const std::string& key);
 long long integer_field(const nlohmann::json& reply, const std::string& key);
 std::string string_field(const nlohmann::json& reply, const std::string& key);

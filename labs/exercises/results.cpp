@@ -61,6 +61,16 @@ std::string indented(const std::string& text, const std::string& indent) {
   return out;
 }
 
+// The first check that does not pass: the one to fix first (a later failure often follows from it).
+const CheckResult* first_failure(const std::vector<CheckResult>& results) {
+  for (const CheckResult& result : results) {
+    if (result.status != CheckStatus::pass) return &result;
+  }
+  return nullptr;
+}
+
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
 std::string mark(const CheckResult& result) {
   switch (result.status) {
     case CheckStatus::pass: return "✓ " + result.name;
@@ -119,7 +129,13 @@ std::string results_summary(const std::vector<CheckResult>& results) {
 }
 
 std::string results_text(const Exercise& exercise, const std::vector<CheckResult>& results) {
-  std::string text = fmt::format("numlab exercise {}: {}\n\n", exercise.name, exercise.summary);
+  std::string text;
+  if (const CheckResult* first = first_failure(results)) {
+    text += "Fix first: " + first->name + " — " + first_line(first->message) + '\n';
+    if (!first->replay.empty()) text += "Replay it: " + first->replay + '\n';
+    text += '\n';
+  }
+  text += fmt::format("numlab exercise {}: {}\n\n", exercise.name, exercise.summary);
   for (const CheckResult& result : results) {
     text += mark(result) + '\n';
     if (const std::string timing = timing_line(result); !timing.empty()) text += "    " + timing + '\n';
@@ -130,6 +146,7 @@ std::string results_text(const Exercise& exercise, const std::vector<CheckResult
       if (result.status == CheckStatus::pass) continue;
       text += '\n' + mark(result) + '\n' + indented(message_with_hint(result), "    ");
       if (!result.output.empty()) text += "    Output (stderr):\n" + indented(shortened(result.output), "      | ");
+      if (!result.replay.empty()) text += "    Replay: " + result.replay + '\n';
     }
   }
   return text + '\n' + results_summary(results) + '\n';
@@ -137,7 +154,14 @@ std::string results_text(const Exercise& exercise, const std::vector<CheckResult
 
 std::string results_html(const Exercise& exercise, const std::vector<CheckResult>& results,
                          const std::string& command) {
-  std::string body = "<p><em>" + html_escape(exercise.summary) + "</em></p>\n<p>Checked: <code>" +
+  std::string body;
+  if (const CheckResult* first = first_failure(results)) {
+    body += "<div class=\"first\"><p><strong>Fix first:</strong> " + html_escape(first->name) + " — " +
+            html_escape(first_line(first->message)) + "</p>\n";
+    if (!first->replay.empty()) body += "<p>Replay it: <code>" + html_escape(first->replay) + "</code></p>\n";
+    body += "</div>\n";
+  }
+  body += "<p><em>" + html_escape(exercise.summary) + "</em></p>\n<p>Checked: <code>" +
                      html_escape(command) + "</code></p>\n<p class=\"summary\">" +
                      html_escape(results_summary(results)) + "</p>\n";
   // One column per reference, in the order they first appear.
@@ -174,6 +198,7 @@ std::string results_html(const Exercise& exercise, const std::vector<CheckResult
                           html_escape(result.name), html_escape(result.message));
       if (!result.hint.empty()) body += "<p class=\"hint\">Hint: " + html_escape(result.hint) + "</p>\n";
       if (!result.output.empty()) body += "<p>Output (stderr):</p>\n<pre>" + html_escape(result.output) + "</pre>\n";
+      if (!result.replay.empty()) body += "<p>Replay: <code>" + html_escape(result.replay) + "</code></p>\n";
     }
   }
   const std::string css =
@@ -181,7 +206,8 @@ std::string results_html(const Exercise& exercise, const std::vector<CheckResult
       ".error { color: #b54708; font-weight: bold; } .summary { font-size: 1.15em; font-weight: bold; }\n"
       ".message { white-space: pre-wrap; font-family: monospace; } .hint { background: #fff8e1; padding: 0.4em; }\n"
       "td:first-child { white-space: normal; min-width: 28em; } td:nth-child(2) { text-align: center; }\n"
-      "td:nth-child(3) { text-align: left; }\n";
+      "td:nth-child(3) { text-align: left; }\n"
+      ".first { border-left: 4px solid #b42318; background: #fdf2f2; padding: 0.2em 0.8em; margin-bottom: 1em; }\n";
   return cli::html_page("numlab exercise " + exercise.name, body, css);
 }
 

@@ -20,15 +20,17 @@ namespace numlab::exercises {
 // (null when empty); "timing" (an extra field) holds seconds per request: "you" and each reference.
 nlohmann::ordered_json results_json(const std::vector<CheckResult>& results, const std::string& error_message = "");
 
-// One line per check ("✓ name", "✗ name", "✗ name (error)") with the time per request beside the
-// references', then the failures (message, hint, shortened output), then the summary line
-// ("5 of 9 checks pass; 3 fail, 1 error").
+// When a check does not pass, first "Fix first: CHECK — its message's first line" (and "Replay it:
+// COMMAND" when the result has a replay); then one line per check ("✓ name", "✗ name", "✗ name
+// (error)") with the time per request beside the references', then the failures (message, hint,
+// shortened output, replay command), then the summary line ("5 of 9 checks pass; 3 fail, 1 error").
 std::string results_text(const Exercise& exercise, const std::vector<CheckResult>& results);
 
 // The summary line alone.
 std::string results_summary(const std::vector<CheckResult>& results);
 
-// report.html: the exercise, the command checked, a table of the checks and each failure in full.
+// report.html: the failure to fix first (as in the text), the exercise, the command checked, a table
+// of the checks and each failure in full with its replay command.
 std::string results_html(const Exercise& exercise, const std::vector<CheckResult>& results,
                          const std::string& command);
 

@@ -23,6 +23,15 @@ class StudentError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// What numlab expects of the reply to the request just sent, kept in the replay file of a failing
+// check (docs/exercises.md, "Replaying a failure"). A check may say it after each ask(); a request
+// without one is shown with the check's name as the property.
+struct Expectation {
+  std::string inputs;    // what the request holds, so it can be made again by hand: "random 8x8, seed 2"
+  nlohmann::json reply;  // numlab's reply (its fields), or null when no single reply is right
+  std::string property;  // what is checked of the reply and to what tolerance
+};
+
 class Session {
  public:
   virtual ~Session() = default;
@@ -37,6 +46,8 @@ class Session {
   virtual void begin_check() {}
   // What the program wrote to stderr during the current check (capped), taken out of the session.
   virtual std::string take_output() { return ""; }
+  // What numlab expects of the reply to the last request (kept only where a check is recorded).
+  virtual void expect(Expectation) {}
 };
 
 }  // namespace numlab::exercises

@@ -133,8 +133,10 @@ std::string octave_solution(const Exercise& exercise) {
 %
 % Write solve(request): it gets one request (a struct from jsondecode; a matrix given as a list of
 % rows arrives as a matrix) and returns the reply (a struct). Call error(...) to say you cannot
-% answer: the checker shows the message as a failing check. Reply vectors as rows (x(:)'):
-% jsonencode writes a column vector as a list of one-element lists.
+% answer: the checker shows the message as a failing check. to_json below sends a vector (row or
+% column) as a list and a matrix as a list of rows. A 1x1 value is sent as a number (a 1x1 struct
+% as an object): a list that may have one entry (x when n = 1, a trace of one step) goes as a cell,
+% num2cell(x) or num2cell(trace).
 % The loop at the end speaks the protocol: one JSON request per line on stdin, one JSON reply per
 % line on stdout. Do not print to stdout (end statements with ;); fprintf(stderr, ...) for
 % diagnostics: the checker shows them beside the check.
@@ -144,6 +146,45 @@ std::string octave_solution(const Exercise& exercise) {
 
 function reply = solve(request)
 {body}end
+
+% The reply as JSON, every number with 17 significant digits (NaN and Inf as null): Octave 7's
+% jsonencode writes numbers below about 1e-15 as 0, so it only quotes strings here.
+function text = to_json(value)
+  if isstruct(value) && isscalar(value)
+    names = fieldnames(value);
+    parts = cell(1, numel(names));
+    for k = 1:numel(names)
+      parts{{k}} = [jsonencode(names{{k}}), ':', to_json(value.(names{{k}}))];
+    end
+    text = ['{{', strjoin(parts, ','), '}}'];
+  elseif isstruct(value) || iscell(value)
+    if isstruct(value)
+      value = num2cell(value);
+    end
+    text = ['[', strjoin(cellfun(@to_json, reshape(value, 1, []), 'UniformOutput', false), ','), ']'];
+  elseif ischar(value)
+    text = jsonencode(value);
+  elseif islogical(value) && isscalar(value)
+    text = 'false';
+    if value
+      text = 'true';
+    end
+  elseif isscalar(value)
+    text = json_number(value);
+  elseif isvector(value) || isempty(value)
+    text = ['[', strjoin(arrayfun(@json_number, reshape(value, 1, []), 'UniformOutput', false), ','), ']'];
+  else
+    rows = arrayfun(@(i) to_json(value(i, :)), 1:size(value, 1), 'UniformOutput', false);
+    text = ['[', strjoin(rows, ','), ']'];
+  end
+end
+
+function text = json_number(v)
+  text = 'null';
+  if isfinite(v)
+    text = sprintf('%.17g', double(v));
+  end
+end
 
 % input('', 's') reads one line as soon as it arrives (fgetl(stdin) would wait for the pipe to
 % fill or close); at the end of stdin it raises, and the loop ends.
@@ -160,9 +201,9 @@ while true
   try
     reply = solve(request);
     reply.id = request.id;
-    text = jsonencode(reply);
+    text = to_json(reply);
   catch err
-    text = jsonencode(struct('id', request.id, 'error', err.message));
+    text = to_json(struct('id', request.id, 'error', err.message));
   end
   fputs(stdout, [text, "\n"]);
   fflush(stdout);

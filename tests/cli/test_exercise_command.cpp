@@ -61,15 +61,37 @@ TEST_CASE("exercise: bad input is one line and exit 2", "[exercise]") {
   require_bad_input("exercise check gepp -- no-such-program-on-path", "cannot run 'no-such-program-on-path'");
   require_bad_input("exercise check gepp --timeout 0 -- python3", "--timeout");
   require_bad_input("exercise check gepp --timeout nan -- python3", "--timeout");
-  require_bad_input("exercise check gepp --format csv -- python3", "--format csv does not apply to numlab exercise check");
-  require_bad_input("exercise check gepp --trace -- python3", "--trace does not apply to numlab exercise check");
+  // check takes only its own options: the shared --trace, --step, --tol, --max-iter and csv are unknown to it.
+  require_bad_input("exercise check gepp --format csv -- python3", "--format: must be text or json, got 'csv'");
+  require_bad_input("exercise check gepp --trace -- python3", "unexpected arguments '--trace'");
+  require_bad_input("exercise replay /no/such/file.jsonl -- python3", "/no/such/file.jsonl: cannot be read");
   require_bad_input("exercise init gepp " + temporary_folder() + "/x --lang fortran", "--lang");
   require_bad_input("exercise init gepp /no/such/parent/x", "does not exist");
   require_bad_input("exercise check gepp", "COMMAND");
   require_bad_input("exercise", "exercise");
 }
 
-TEST_CASE("exercise check --out writes report.html and results.json there, and nothing else", "[exercise]") {
+TEST_CASE("exercise check --help lists only the options check honours, and says what --out writes", "[exercise]") {
+  const ProgramRun run = run_numlab("exercise check --help");
+  CHECK(run.exit_code == 0);
+  CHECK_THAT(run.out, Contains("--format") && Contains("text|json") && Contains("--timeout") && Contains("--out"));
+  CHECK_THAT(run.out, Contains("DIR/report.html, DIR/results.json") && Contains("DIR/replay/NN-CHECK.jsonl"));
+  for (const char* refused : {"--trace", "--step", "--tol", "--max-iter", "csv"}) {
+    INFO(refused);
+    CHECK(run.out.find(refused) == std::string::npos);
+  }
+}
+
+TEST_CASE("exercise init takes --language as the long form of --lang", "[exercise]") {
+  const std::string folder = temporary_folder();
+  const ProgramRun run = run_numlab("exercise init gepp " + folder + "/s --language cpp");
+  CHECK(run.exit_code == 0);
+  CHECK(fs::exists(folder + "/s/solution.cpp"));
+  require_bad_input("exercise init gepp " + folder + "/t --language fortran", "--lang");
+  fs::remove_all(folder);
+}
+
+TEST_CASE("exercise check --out writes report.html, results.json and a replay per failing check", "[exercise]") {
   const std::string folder = temporary_folder();
   const std::string starter = folder + "/starter";
   REQUIRE(run_numlab("exercise init inverse2x2 " + starter).exit_code == 0);
@@ -85,6 +107,14 @@ TEST_CASE("exercise check --out writes report.html and results.json there, and n
   CHECK_THAT(read_all(folder + "/verdict/report.html"), Contains("<html"));
   int entries = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(folder + "/verdict")) ++entries;
-  CHECK(entries == 2);
+  CHECK(entries == 3);
+  // One replay file per check (each fails), named by its place and name.
+  int replays = 0;
+  for (const auto& entry : fs::directory_iterator(folder + "/verdict/replay")) {
+    CHECK(entry.path().extension() == ".jsonl");
+    ++replays;
+  }
+  CHECK(replays == static_cast<int>(results["tests"].size()));
+  CHECK_THAT(run.out, Contains("Replay it: numlab exercise replay " + folder + "/verdict/replay/01-"));
   fs::remove_all(folder);
 }

@@ -4,6 +4,7 @@
   expect_verdict.py NUMLAB reference EXERCISE COMMAND...   every check passes (exit 0, status pass)
   expect_verdict.py NUMLAB mutant PATCH OUT_DIR [RUNNER...] the mutant is caught as its header says
   expect_verdict.py NUMLAB summary PATCH_DIR OUT_DIR       the catch rate, overall and by exercise
+  expect_verdict.py NUMLAB tolerant PATCH OUT_DIR          a valid variant passes every check
 
 A mutant is tests/exercises/mutants/EXERCISE/NAME.patch: a unified diff against the exercise's
 Python reference, applied (apply_mutant.py) into OUT_DIR/EXERCISE/NAME.py before the check runs;
@@ -15,6 +16,12 @@ RUNNER is this Python). A RUNNER or reference COMMAND that is not on PATH is a s
   # BUG: what is wrong (and, for a seed's error, which seed)
   # EXPECT-CHECK: part of the name of a check that must FAIL (not error)
   # EXPECT-MESSAGE: part of that check's message (one line each; all must appear)
+
+A tolerant variant, tolerant/EXERCISE/NAME.patch, is a patch against a reference that keeps it
+correct but writes its replies as a tolerant reader must accept them (13.0 for 13, blank lines
+between replies, a slow start): every check must pass. Its header says what differs:
+  # VARIANT: what the variant does differently
+  # EXPECT-SECONDS-PER-REQUEST-BELOW: S  (optional) every check's time per request is below S
 """
 import json
 import os
@@ -86,6 +93,7 @@ def expect_reference(numlab, exercise, command):
     if code != 0 or results["status"] != "pass" or wrong or not results["tests"]:
         sys.exit(f"the reference solution did not pass every check (exit {code}, status {results['status']})")
     print(f"{len(results['tests'])} checks pass")
+    return results
 
 
 def mutant_exercise(path):
@@ -121,6 +129,28 @@ def expect_mutant(numlab, patch, out_dir, runner):
     print(f"caught by '{test['name']}':\n{test['message']}")
 
 
+def expect_tolerant(numlab, patch, out_dir):
+    path = mutant_from_patch(patch, out_dir)
+    fields = {"VARIANT": [], "EXPECT-SECONDS-PER-REQUEST-BELOW": []}
+    with open(path, encoding="utf-8") as source:
+        for line in source:
+            key, _, value = line[1:].strip().partition(":")
+            if line.startswith("#") and key in fields:
+                fields[key].append(value.strip())
+    if len(fields["VARIANT"]) != 1:
+        sys.exit(f"{path}: the header needs one '# VARIANT:' line")
+    print(f"variant: {fields['VARIANT'][0]}")
+    results = expect_reference(numlab, mutant_exercise(path), [sys.executable, os.path.abspath(path)])
+    for limit in fields["EXPECT-SECONDS-PER-REQUEST-BELOW"]:
+        times = {test["name"]: (test.get("timing") or {}).get("you") for test in results["tests"]}
+        slow = {name: seconds for name, seconds in times.items() if seconds is None or seconds >= float(limit)}
+        for name, seconds in slow.items():
+            print(f"time per request {seconds} s (not below {limit} s): {name}")
+        if slow:
+            sys.exit(f"{len(slow)} checks timed the program's start-up, or not at all")
+        print(f"every check's time per request is below {limit} s (the slowest {max(times.values()):.3g} s)")
+
+
 def summary(numlab, folder, out_dir):
     counts = {}
     for exercise in sorted(os.listdir(folder)):
@@ -149,6 +179,8 @@ if __name__ == "__main__":
         expect_reference(numlab, sys.argv[3], sys.argv[4:])
     elif mode == "mutant":
         expect_mutant(numlab, sys.argv[3], sys.argv[4], sys.argv[5:] or [sys.executable])
+    elif mode == "tolerant":
+        expect_tolerant(numlab, sys.argv[3], sys.argv[4])
     elif mode == "summary":
         summary(numlab, sys.argv[3], sys.argv[4])
     else:

@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "exercises/numbers.hpp"
 #include "exercises/results.hpp"
 #include "tiny_exercise.hpp"
 
@@ -11,14 +12,14 @@ using Catch::Matchers::Contains;
 namespace {
 
 CheckResult passed(const std::string& name, int task_id = 1) {
-  return {name, task_id, CheckStatus::pass, "", "", "", 0.00041, {{"numlab GEPP", 0.000012}, {"GSL LU", 0.000009}}};
+  return {name, task_id, CheckStatus::pass, "", "", "", 0.00041, {{"numlab GEPP", 0.000012}, {"GSL LU", 0.000009}}, {}, ""};
 }
 CheckResult failed(const std::string& name, const std::string& message, const std::string& hint = "",
                    const std::string& output = "") {
-  return {name, 2, CheckStatus::fail, message, hint, output, 0.0005, {{"GSL LU", 0.00001}}};
+  return {name, 2, CheckStatus::fail, message, hint, output, 0.0005, {{"GSL LU", 0.00001}}, {}, ""};
 }
 CheckResult errored(const std::string& name, const std::string& message) {
-  return {name, 3, CheckStatus::error, message, "", "", 0.0, {}};
+  return {name, 3, CheckStatus::error, message, "", "", 0.0, {}, {}, ""};
 }
 
 // 2 pass, 1 fails with a hint and stderr, 1 errors.
@@ -134,4 +135,31 @@ TEST_CASE("report.html names every check, the command, the failures, and escapes
   CHECK_THAT(html, Contains("<th>you (ms/request)</th><th>numlab GEPP (ms)</th><th>GSL LU (ms)</th></tr>"));
   CHECK_THAT(html, Contains("<td>0.41</td><td>0.012</td><td>0.009</td></tr>"));
   CHECK_THAT(html, Contains("<td>0.5</td><td>-</td><td>0.01</td></tr>"));
+}
+
+TEST_CASE("The text and report.html lead with the first failure to fix, and give its replay", "[results]") {
+  auto results = mixed();
+  results[2].replay = "numlab exercise replay out/replay/03-pivots.jsonl -- python3 solution.py";
+  const std::string text = results_text(numlab::test::tiny_exercise(), results);
+  CHECK(text.starts_with("Fix first: pivots on the largest |a| in each column — column 1: you pivoted on row 1 "
+                         "(|a| = 0.21)\nReplay it: numlab exercise replay out/replay/03-pivots.jsonl -- python3 "
+                         "solution.py\n"));
+  CHECK_THAT(text, Contains("    Replay: numlab exercise replay out/replay/03-pivots.jsonl -- python3 solution.py\n"));
+  const std::string html = results_html(numlab::test::tiny_exercise(), results, "python3 solution.py");
+  CHECK_THAT(html, Contains("<strong>Fix first:</strong> pivots on the largest |a| in each column — column 1"));
+  CHECK(html.find("Fix first") < html.find("<h2>Checks</h2>"));
+  CHECK_THAT(html, Contains("<p>Replay: <code>numlab exercise replay out/replay/03-pivots.jsonl -- python3 "
+                            "solution.py</code></p>"));
+  // All pass: nothing to fix first.
+  CHECK(results_text(numlab::test::tiny_exercise(), {passed("a")}).find("Fix first") == std::string::npos);
+  CHECK(results_html(numlab::test::tiny_exercise(), {passed("a")}, "x").find("Fix first") == std::string::npos);
+}
+
+TEST_CASE("A mismatched number shows 17 significant digits and the difference", "[results]") {
+  // Two values equal to six digits, told apart.
+  CHECK(compared(-43.351312345678901, -43.351298765432101) ==
+        "-43.351312345678899, expected -43.351298765432098 (differs by 1.4e-05, 3.1e-07 relative)");
+  CHECK(digits17(0.1) == "0.10000000000000001");
+  CHECK(difference(0.5, 0.0) == "differs by 0.5");  // no relative difference from 0
+  CHECK(difference(1.0, 1.0) == "differs by 0, 0 relative");
 }

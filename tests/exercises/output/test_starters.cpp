@@ -158,6 +158,36 @@ TEST_CASE("The Octave starter, as generated, fails every check with 'not impleme
   std::filesystem::remove_all(folder);
 }
 
+TEST_CASE("The Octave starter sends every digit: tiny numbers, vectors as lists, one-entry lists as cells",
+          "[starters][octave]") {
+  if (!on_path("octave-cli")) {
+    WARN("SKIPPED: octave-cli is not on PATH (apt-get install octave); the Octave starter is not run");
+    return;
+  }
+  // Octave 7's jsonencode writes 1e-170 and 1.5e-16 as 0: the starter's to_json must not.
+  Exercise exercise = numlab::test::tiny_exercise();
+  exercise.stubs.octave =
+      "reply = struct('tiny', [1e-170, 1.5e-16], 'third', 1/3, 'column', [1; 2], 'rows', [1, 2; 3, 4]);\n"
+      "reply.one = num2cell(7);\n"
+      "reply.steps = num2cell(struct('a', {5}));\n"
+      "reply.status = 'converged';\n"
+      "reply.flag = true;\n";
+  const std::string folder = fresh_folder("octave-json");
+  write_starter_files(folder, starter_files(exercise, Language::octave));
+  ChildSession session(exercise.name, {"octave-cli", "--no-gui", "--quiet", folder + "/solution.m"}, 30.0);
+  const nlohmann::json reply = session.ask({{"v", {1.0}}});
+  CHECK(reply.at("tiny") == nlohmann::json({1e-170, 1.5e-16}));
+  CHECK(reply.at("third").get<double>() == 1.0 / 3.0);
+  CHECK(reply.at("column") == nlohmann::json({1, 2}));
+  CHECK(reply.at("rows") == nlohmann::json({{1, 2}, {3, 4}}));
+  CHECK(reply.at("one") == nlohmann::json::array({7}));
+  CHECK(reply.at("steps") == nlohmann::json::array({{{"a", 5}}}));
+  CHECK(reply.at("status") == "converged");
+  CHECK(reply.at("flag") == true);
+  session.finish();
+  std::filesystem::remove_all(folder);
+}
+
 TEST_CASE("Every exercise's Python and Octave starters, as generated, fail every check with 'not implemented'",
           "[starters][python][octave]") {
   const bool octave = on_path("octave-cli");

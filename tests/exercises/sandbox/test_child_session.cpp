@@ -48,6 +48,31 @@ TEST_CASE("a well-behaved program gets the exercise and increasing ids, and its 
   CHECK(session.seconds_per_request() == 0.0);
 }
 
+TEST_CASE("the time per request leaves out the program's start-up: the first request is timed again", "[protocol][timing]") {
+  ChildSession session("echo", python_child("slow_start.py"), generous_limit);
+  session.begin_check();
+  const auto start = std::chrono::steady_clock::now();
+  const nlohmann::json first = session.ask({});
+  CHECK(seconds_since(start) >= 1.0);  // the reply waited for the 1 s import
+  CHECK(first.at("seen") == nlohmann::json({1}));
+  // The time is that of the same request sent again (same id), once the program was up.
+  CHECK(session.seconds_per_request() > 0.0);
+  CHECK(session.seconds_per_request() < 0.5);
+  CHECK(session.ask({}).at("seen") == nlohmann::json({1, 1, 2}));
+  CHECK(session.seconds_per_request() < 0.5);
+  // The next check has its own times; the program, still running, is not timed again twice.
+  session.begin_check();
+  CHECK(session.ask({}).at("seen") == nlohmann::json({1, 1, 2, 3}));
+  CHECK(session.seconds_per_request() < 0.5);
+}
+
+TEST_CASE("blank lines between replies are skipped, and a CRLF line end is one", "[protocol]") {
+  ChildSession session("echo", python_child("blank_lines.py"), generous_limit);
+  session.begin_check();
+  for (long long id = 1; id <= 3; ++id) CHECK(session.ask({}).at("id") == id);
+  CHECK(session.seconds_per_request() > 0.0);
+}
+
 TEST_CASE("a crash is reported with its signal, before the request it left unanswered", "[failure]") {
   ChildSession session("echo", python_child("crash.py"), generous_limit);
   session.begin_check();
