@@ -17,6 +17,7 @@
 #include "commands/common_options.hpp"
 #include "commands/basins_command.hpp"
 #include "commands/exercise_command.hpp"
+#include "commands/exercise_grade.hpp"
 #include "commands/fit_command.hpp"
 #include "commands/labs_command.hpp"
 #include "commands/mechanism_command.hpp"
@@ -195,6 +196,7 @@ int main(int argc, char** argv) {
   const MechanismCommand mechanism(app);
   const FitCommand fit(app);
   const ExerciseCommand exercise(app);
+  const ExerciseGradeCommand exercise_grade(*app.get_subcommand("exercise"));
   const BasinsCommand basins(app);
   const ModelsCommand models(app);
 
@@ -219,6 +221,7 @@ int main(int argc, char** argv) {
     if (bench.selected()) return bench.run();
     if (mechanism.selected()) return mechanism.run();
     if (fit.selected()) return fit.run();
+    if (exercise_grade.selected()) return exercise_grade.run();
     if (exercise.selected()) return exercise.run();
     if (basins.selected()) return basins.run();
     if (models.selected()) return models.run();

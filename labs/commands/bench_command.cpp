@@ -7,6 +7,7 @@
 #include "bench/bench_all.hpp"
 #include "bench/bench_basins.hpp"
 #include "bench/bench_fit.hpp"
+#include "bench/bench_grade.hpp"
 #include "bench/bench_linear.hpp"
 #include "bench/bench_linkage_scaling.hpp"
 #include "bench/bench_mustang.hpp"
@@ -17,8 +18,9 @@ namespace numlab::cli {
 BenchCommand::BenchCommand(CLI::App& app) {
   command_ = app.add_subcommand("bench", "Measure speed: median of repeated in-process runs, as ratios");
   command_->add_option("what", what_,
-                       "What to measure: all (default), linear, jansen, mustang, fit, basins, robustness or linkage-scaling")
-      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang", "fit", "basins", "robustness", "linkage-scaling"}));
+                       "What to measure: all (default), linear, jansen, mustang, fit, basins, robustness, linkage-scaling or grade "
+                       "(numlab exercise grade on 300 Python GEPP submissions)")
+      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang", "fit", "basins", "robustness", "linkage-scaling", "grade"}));
   command_->add_option("--chart", chart_,
                        "Main chart (.svg or .png); default OUT/work-precision.svg (all) or OUT/bench-linear.svg");
   command_->add_option("--sizes", sizes_, "Sizes n, comma-separated")->delimiter(',')->check(CLI::Range(1, 4096));
@@ -46,6 +48,7 @@ int BenchCommand::run() const {
   if (what_ == "basins") return run_basins_bench(bench_options, quick_);
   if (what_ == "robustness") return run_bench_robustness(bench_options, quick_);
   if (what_ == "linkage-scaling") return run_linkage_scaling_bench(bench_options, quick_);
+  if (what_ == "grade") return run_grade_bench(bench_options, quick_);
   return run_linear_bench(bench_options, chart, sizes_, quick_);
 }
 

@@ -119,6 +119,7 @@ const std::vector<CommonFlagUse>& common_flag_table() {
       {"bench fit", true, false, false, false, false, false, true},
       {"bench robustness", true, false, false, false, false, false, true},
       {"bench linkage-scaling", true, true, false, false, false, false, false},
+      {"bench grade", false, false, false, false, false, false, false},
       {"exercise check", true, false, false, false, false, false, true},
       {"basins", true, true, false, false, false, true, true},
       {"bench basins", true, false, false, false, false, false, false},
