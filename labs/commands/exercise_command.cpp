@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "exercises/checker.hpp"
+#include "exercises/command_line.hpp"
 #include "exercises/child_session.hpp"
 #include "exercises/exercise.hpp"
 #include "exercises/replay.hpp"
@@ -22,6 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using exercises::CheckStatus;
+using exercises::shell_word;
+using exercises::shell_words;
 
 constexpr double max_timeout_seconds = 3600.0;
 
@@ -88,25 +91,6 @@ int exit_code_for(const std::vector<exercises::CheckResult>& results) {
     if (result.status != CheckStatus::pass) return exit_method_failed;
   }
   return exit_success;
-}
-
-// A word as a POSIX shell reads it back: as it is when it holds only safe characters, else quoted.
-std::string shell_word(const std::string& word) {
-  const bool plain = !word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                             "0123456789_-+./=:,@%") == std::string::npos;
-  if (plain) return word;
-  std::string quoted = "'";
-  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::string shell_words(const std::vector<std::string>& words) {
-  std::string line;
-  for (const auto& word : words) {
-    if (!line.empty()) line.push_back(' ');
-    line.append(shell_word(word));
-  }
-  return line;
 }
 
 std::string out_dir_problem(const std::string& text) {

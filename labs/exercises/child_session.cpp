@@ -1,5 +1,6 @@
 #include "exercises/child_session.hpp"
 
+#include "exercises/command_line.hpp"
 #include "exercises/descendants.hpp"
 
 #include <sys/prctl.h>
@@ -53,17 +54,7 @@ std::string resolve_program(const std::string& name) {
     if (const std::string why = why_not_runnable(path); !why.empty()) throw cannot_run(name, why);
     return path.string();
   }
-  const char* search = std::getenv("PATH");
-  const std::string folders = search != nullptr && *search != '\0' ? search : "/usr/local/bin:/usr/bin:/bin";
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t end = folders.find(':', start);
-    const std::string folder = folders.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    const fs::path candidate = fs::absolute(fs::path(folder.empty() ? "." : folder) / name);
-    if (why_not_runnable(candidate).empty()) return candidate.string();
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
+  if (const std::string found = find_on_path(name); !found.empty()) return found;
   throw cannot_run(name, "not found on PATH");
 }
 
