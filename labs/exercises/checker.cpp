@@ -55,7 +55,7 @@ class RecordingSession final : public Session {
 
 // One check: its verdict, or what stopped the program from giving one.
 CheckResult run_one(const std::string& exercise, const Check& check, Session& inner, bool& child_failed) {
-  CheckResult result{check.name, check.task_id, CheckStatus::error, "", "", "", 0.0, {}, {}, ""};
+  CheckResult result{check.name, check.task_id, CheckStatus::error, "", "", "", 0.0, {}, {}, "", std::nullopt};
   child_failed = false;
   RecordingSession session(exercise, inner);
   session.begin_check();
@@ -65,6 +65,7 @@ CheckResult run_one(const std::string& exercise, const Check& check, Session& in
     result.message = verdict.message;
     result.hint = verdict.hint;
     result.references = verdict.references;
+    if (!verdict.passed) result.diagnosis = verdict.diagnosis;
   } catch (const StudentError& error) {
     result.status = CheckStatus::fail;
     result.message = fmt::format("your program replied with an error: {}", error.what());
@@ -93,7 +94,7 @@ std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session) 
     if (failures_in_a_row >= max_failures_in_a_row) {
       results.push_back({check.name, check.task_id, CheckStatus::error,
                          fmt::format("not run: the program gave no reply in the {} checks before", failures_in_a_row),
-                         "", "", 0.0, {}, {}, ""});
+                         "", "", 0.0, {}, {}, "", std::nullopt});
       continue;
     }
     bool child_failed = false;
@@ -106,6 +107,20 @@ std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session) 
 CheckResult run_check(const Exercise& exercise, const Check& check, Session& session) {
   bool child_failed = false;
   return run_one(exercise.name, check, session, child_failed);
+}
+
+std::optional<Diagnosis> overall_diagnosis(const std::vector<CheckResult>& results) {
+  std::optional<Diagnosis> best;
+  for (const CheckResult& result : results) {
+    if (result.status != CheckStatus::pass) best = more_specific(best, result.diagnosis);
+  }
+  return best;
+}
+
+std::string explanation(const CheckResult& result) {
+  if (result.diagnosis) return "Diagnosis: " + result.diagnosis->evidence;
+  if (!result.hint.empty()) return "Hint: " + result.hint;
+  return "";
 }
 
 }  // namespace numlab::exercises

@@ -2,6 +2,7 @@
 // Runs an exercise's battery through a session and turns each check's outcome into a result:
 // pass, fail (the program answered, wrongly, or said it could not), or error (no proper reply).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,16 @@ struct CheckResult {
   std::vector<ReferenceTime> references;
   std::vector<Exchange> exchanges;  // the check's requests, in order
   std::string replay;  // the command that replays a failure (set by `exercise check --out`), or ""
+  std::optional<Diagnosis> diagnosis;  // the detector that explained the failure, if one fired
 };
+
+// The diagnosis of a whole run: the most specific over the checks that did not pass (the first
+// among equals), or nothing when no detector fired.
+std::optional<Diagnosis> overall_diagnosis(const std::vector<CheckResult>& results);
+
+// What to tell the student about one failed check after its message: "Diagnosis: ..." when a
+// detector fired, else "Hint: ..." when a generic hint fits, else "".
+std::string explanation(const CheckResult& result);
 
 // After this many checks in a row end in ChildFailure, the rest are not run: each is an error that
 // says so (a program that hangs on every request costs at most this many time limits).

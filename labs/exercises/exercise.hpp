@@ -7,9 +7,12 @@
 // numlab's own steppers, a closed form, NIST) and returns a Verdict.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "exercises/diagnosis.hpp"
 
 namespace numlab::exercises {
 
@@ -28,15 +31,23 @@ struct Verdict {
   // On failure: the quantity, the tolerance and the reference, e.g. "x differs from GSL LU by
   // 3.1e-2 (relative), allowed 1.2e-12 (kappa*eps*10)"; for a trace, the first step that departs.
   std::string message;
-  // A known mistake that fits the symptom ("" when none fits), shown after the message.
+  // A generic hint: a family of mistakes that fits the symptom ("" when none fits), shown after the
+  // message only when no detector fired (diagnosis.hpp).
   std::string hint;
   std::vector<ReferenceTime> references;
+  // The most specific detector that fired on this failure, with its evidence; it replaces the hint.
+  std::optional<Diagnosis> diagnosis;
 
   static Verdict pass(std::vector<ReferenceTime> references = {}) {
-    return Verdict{true, "", "", std::move(references)};
+    return Verdict{true, "", "", std::move(references), std::nullopt};
   }
   static Verdict fail(std::string message, std::string hint = "", std::vector<ReferenceTime> references = {}) {
-    return Verdict{false, std::move(message), std::move(hint), std::move(references)};
+    return Verdict{false, std::move(message), std::move(hint), std::move(references), std::nullopt};
+  }
+  // A failure a detector explained: the hint is kept only for when `diagnosis` is empty.
+  static Verdict fail(std::string message, std::optional<Diagnosis> diagnosis, std::string hint = "",
+                      std::vector<ReferenceTime> references = {}) {
+    return Verdict{false, std::move(message), std::move(hint), std::move(references), std::move(diagnosis)};
   }
 };
 

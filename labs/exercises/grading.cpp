@@ -182,10 +182,14 @@ GradedSubmission grade_submission(const Exercise& exercise, const std::string& s
     graded.row.total = static_cast<int>(graded.results.size());
     graded.row.passed = static_cast<int>(std::count_if(graded.results.begin(), graded.results.end(),
                                                        [](const CheckResult& r) { return r.status == CheckStatus::pass; }));
-    for (const CheckResult& result : graded.results) {
-      if (result.status == CheckStatus::pass) continue;
-      graded.row.diagnosis = !result.hint.empty() ? result.hint : result.message;
-      break;
+    if (const std::optional<Diagnosis> diagnosis = overall_diagnosis(graded.results)) {
+      graded.row.diagnosis = diagnosis->evidence;
+    } else {
+      for (const CheckResult& result : graded.results) {
+        if (result.status == CheckStatus::pass) continue;
+        graded.row.diagnosis = !result.hint.empty() ? result.hint : result.message;
+        break;
+      }
     }
   }
   graded.row.seconds = seconds_since(start);

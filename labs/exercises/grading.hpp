@@ -30,7 +30,7 @@ struct GradeRow {
   std::string variant;  // empty: variants do not exist yet
   int passed = 0;
   int total = 0;
-  std::string diagnosis;  // the first failing check's hint, else its message; or why nothing ran
+  std::string diagnosis;  // the run's diagnosis, else the first failing check's hint or message; or why nothing ran
   double seconds = 0.0;   // the submission's whole grading (build included)
 };
 

@@ -147,7 +147,9 @@ std::string replay_text(const CheckResult& result, const std::string& mismatch) 
     text += "✓ " + result.name + "\nEvery reply agrees with numlab's within the check's tolerance.\n";
   } else {
     text += "✗ " + result.name + (result.status == CheckStatus::error ? " (error)" : "") + '\n';
-    std::istringstream lines(result.message + (result.hint.empty() ? "" : "\nHint: " + result.hint));
+    std::string told = result.message;
+    if (const std::string why = explanation(result); !why.empty()) told.append("\n").append(why);
+    std::istringstream lines(told);
     std::string line;
     while (std::getline(lines, line)) text += "    " + line + '\n';
   }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 #include <sstream>
 
 #include "output/report_style.hpp"
@@ -19,10 +20,10 @@ int count(const std::vector<CheckResult>& results, CheckStatus status) {
   return n;
 }
 
-// The check's message and, when a known mistake fits, its hint.
+// The check's message and its diagnosis (or, when no detector fired, its hint).
 std::string message_with_hint(const CheckResult& result) {
-  if (result.hint.empty()) return result.message;
-  return result.message + "\nHint: " + result.hint;
+  const std::string why = explanation(result);
+  return why.empty() ? result.message : result.message + "\n" + why;
 }
 
 std::string milliseconds(double seconds) { return fmt::format("{:.3g} ms", seconds * 1e3); }
@@ -101,6 +102,10 @@ nlohmann::ordered_json results_json(const std::vector<CheckResult>& results, con
     json["message"] = fmt::format("every check errored; the first, '{}': {}", results.front().name,
                                   results.front().message);
   }
+  // Extra top-level fields (Exercism's runner ignores unknown keys): the cause found, or null.
+  const std::optional<Diagnosis> diagnosis = overall_diagnosis(results);
+  json["diagnosis"] = diagnosis ? nlohmann::ordered_json(diagnosis->evidence) : nlohmann::ordered_json();
+  json["diagnosis_cause"] = diagnosis ? nlohmann::ordered_json(diagnosis->cause) : nlohmann::ordered_json();
   json["tests"] = nlohmann::ordered_json::array();
   for (const CheckResult& result : results) {
     nlohmann::ordered_json test;
@@ -130,6 +135,9 @@ std::string results_summary(const std::vector<CheckResult>& results) {
 
 std::string results_text(const Exercise& exercise, const std::vector<CheckResult>& results) {
   std::string text;
+  if (const std::optional<Diagnosis> diagnosis = overall_diagnosis(results)) {
+    text += "Diagnosis: " + diagnosis->evidence + '\n';
+  }
   if (const CheckResult* first = first_failure(results)) {
     text += "Fix first: " + first->name + " — " + first_line(first->message) + '\n';
     if (!first->replay.empty()) text += "Replay it: " + first->replay + '\n';
@@ -156,7 +164,11 @@ std::string results_html(const Exercise& exercise, const std::vector<CheckResult
                          const std::string& command) {
   std::string body;
   if (const CheckResult* first = first_failure(results)) {
-    body += "<div class=\"first\"><p><strong>Fix first:</strong> " + html_escape(first->name) + " — " +
+    body += "<div class=\"first\">";
+    if (const std::optional<Diagnosis> diagnosis = overall_diagnosis(results)) {
+      body += "<p class=\"diagnosis\"><strong>Diagnosis:</strong> " + html_escape(diagnosis->evidence) + "</p>\n";
+    }
+    body += "<p><strong>Fix first:</strong> " + html_escape(first->name) + " — " +
             html_escape(first_line(first->message)) + "</p>\n";
     if (!first->replay.empty()) body += "<p>Replay it: <code>" + html_escape(first->replay) + "</code></p>\n";
     body += "</div>\n";
@@ -196,7 +208,9 @@ std::string results_html(const Exercise& exercise, const std::vector<CheckResult
       if (result.status == CheckStatus::pass) continue;
       body += fmt::format("<h3 class=\"{}\">✗ {}</h3>\n<p class=\"message\">{}</p>\n", to_string(result.status),
                           html_escape(result.name), html_escape(result.message));
-      if (!result.hint.empty()) body += "<p class=\"hint\">Hint: " + html_escape(result.hint) + "</p>\n";
+      if (const std::string why = explanation(result); !why.empty()) {
+        body += "<p class=\"hint\">" + html_escape(why) + "</p>\n";
+      }
       if (!result.output.empty()) body += "<p>Output (stderr):</p>\n<pre>" + html_escape(result.output) + "</pre>\n";
       if (!result.replay.empty()) body += "<p>Replay: <code>" + html_escape(result.replay) + "</code></p>\n";
     }

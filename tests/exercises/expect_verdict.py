@@ -16,6 +16,7 @@ RUNNER is this Python). A RUNNER or reference COMMAND that is not on PATH is a s
   # BUG: what is wrong (and, for a seed's error, which seed)
   # EXPECT-CHECK: part of the name of a check that must FAIL (not error)
   # EXPECT-MESSAGE: part of that check's message (one line each; all must appear)
+  # EXPECT-CAUSE: the run's diagnosis_cause (docs/exercises.md, "Diagnosis"); optional
 
 A tolerant variant, tolerant/EXERCISE/NAME.patch, is a patch against a reference that keeps it
 correct but writes its replies as a tolerant reader must accept them (13.0 for 13, blank lines
@@ -54,7 +55,7 @@ def run_check(numlab, exercise, command):
 
 
 def header(path):
-    fields = {"BUG": [], "EXPECT-CHECK": [], "EXPECT-MESSAGE": []}
+    fields = {"BUG": [], "EXPECT-CHECK": [], "EXPECT-MESSAGE": [], "EXPECT-CAUSE": []}
     with open(path, encoding="utf-8") as source:
         for line in source:
             if not line.startswith("#"):
@@ -127,6 +128,11 @@ def expect_mutant(numlab, patch, out_dir, runner):
     if test is None:
         sys.exit(f"{patch} ({fields['BUG'][0]}) was not caught: {why}")
     print(f"caught by '{test['name']}':\n{test['message']}")
+    for cause in fields["EXPECT-CAUSE"]:
+        if results.get("diagnosis_cause") != cause:
+            sys.exit(f"{patch}: the diagnosis is {results.get('diagnosis_cause')!r} "
+                     f"({results.get('diagnosis')!r}), not {cause!r}")
+        print(f"diagnosed as {cause}: {results['diagnosis']}")
 
 
 def expect_tolerant(numlab, patch, out_dir):
