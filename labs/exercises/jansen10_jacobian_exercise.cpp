@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 
+#include "exercises/detectors/mechanism_jacobian.hpp"
 #include "exercises/exercise_list.hpp"
 #include "exercises/jansen_poses.hpp"
 #include "exercises/linkage_checks.hpp"
@@ -91,13 +92,20 @@ std::vector<ReferenceTime> closure_time(const Pose& pose) {
   return {{"numlab Jansen10Closure (f and J)", residual_and_jacobian_seconds(Jansen10Closure(pose.crank_angle), pose.theta)}};
 }
 
-// Rows 0, 1, 6 and 7 start from P1->A = (b + li cos theta2, a + li sin theta2).
-std::string f_hint(int row, double got, double expected) {
+// Rows 0, 1, 6 and 7 start from P1->A = (b + li cos theta2, a + li sin theta2): one of them off by
+// exactly b - a has the offsets swapped (a wrong_link detector).
+std::optional<std::string> offset_mistake(int row, double got, double expected) {
   const mechanisms::JansenLengths L;
   const bool from_crank = row == 0 || row == 1 || row == 6 || row == 7;
   if (from_crank && std::abs(std::abs(got - expected) - (L.b - L.a)) < 1e-6) {
-    return "the offsets of P1 are swapped: X = b + li cos(theta2) with b = 38, Y = a + li sin(theta2) with a = 7.8";
+    return fmt::format("f[{}] is off by exactly b - a = {:.4g}: the offsets of P1 are swapped: X = b + li cos(theta2) "
+                       "with b = 38, Y = a + li sin(theta2) with a = 7.8",
+                       row, L.b - L.a);
   }
+  return std::nullopt;
+}
+
+std::string f_hint() {
   return "compare the row with the task's equation: even rows are x components (cosines), odd rows y components "
          "(sines), each loop's vectors with the signs of its direction";
 }
@@ -118,17 +126,21 @@ Verdict check_f(Session& session) {
                                        "{}, allowed |error| {} (1e3 eps times the links' sum {:.4g})",
                                        i, digits17(f(i)), digits17(expected(i)), i + 1, i + 8, pose_text(pose),
                                        difference(f(i), expected(i)), sci(tolerance), links_sum()),
-                           f_hint(i, f(i), expected(i)));
+                           diagnose_residual({f, expected, pose.crank_angle, pose.theta, evaluator_of<Jansen10Closure>(),
+                                              tolerance},
+                                             {{"wrong_link", Specificity::exact,
+                                               [&] { return offset_mistake(i, f(i), expected(i)); }}}),
+                           f_hint());
     }
   }
   return Verdict::pass(closure_time(list.front()));
 }
 
-// The digits of a length to 0.1 (67.5 and 65.7 have the same ones).
-std::string sorted_digits(double length) {
-  std::string digits = fmt::format("{:.1f}", length);
-  std::sort(digits.begin(), digits.end());
-  return digits;
+// Column k's link, named as the detectors name it: "|r8|".
+std::vector<ColumnLink> column_links() {
+  std::vector<ColumnLink> named;
+  for (const Link& link : links()) named.push_back({fmt::format("|{}|", link.vector), link.length});
+  return named;
 }
 
 // The length a student's J[row][col] implies: even (x) rows hold -+L sin, odd (y) rows +-L cos.
@@ -199,6 +211,8 @@ Verdict check_J(Session& session) {
                         i, k, digits17(J(i, k)), digits17(expected(i, k)), difference(J(i, k), expected(i, k)), i,
                         angle_name(k), digits17(differences(i, k)), pose_text(pose),
                         sci(tolerance)),
+            diagnose_jacobian({J, expected, pose.crank_angle, pose.theta, evaluator_of<Jansen10Closure>(), tolerance,
+                               angle_name, column_links()}),
             J_hint(J, expected, pose, i, k, tolerance));
       }
     }

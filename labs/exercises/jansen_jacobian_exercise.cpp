@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 #include <limits>
 
+#include "exercises/detectors/mechanism_jacobian.hpp"
 #include "exercises/exercise_list.hpp"
 #include "exercises/jansen_poses.hpp"
 #include "exercises/linkage_checks.hpp"
@@ -57,11 +58,18 @@ std::vector<ReferenceTime> closure_time(const Pose& pose) {
   return {{"numlab JansenClosure (f and J)", residual_and_jacobian_seconds(JansenClosure(pose.crank_angle), pose.theta)}};
 }
 
-std::string f_hint(int row, double got, double expected) {
+// An x row off by exactly b - a: the offset a where b belongs (a wrong_link detector).
+std::optional<std::string> offset_mistake(int row, double got, double expected) {
   const mechanisms::JansenLengths L;
   if (row % 2 == 1 && std::abs(std::abs(got - expected) - (L.b - L.a)) < 1e-6) {
-    return "the cosine rows use the offset a where b belongs (seed 000's printed eqs 23 and 25): X = li cos(ti) + b";
+    return fmt::format("f[{}] is off by exactly b - a = {:.4g}: the cosine rows use the offset a where b belongs (seed "
+                       "000's printed eqs 23 and 25): X = li cos(ti) + b",
+                       row, L.b - L.a);
   }
+  return std::nullopt;
+}
+
+std::string f_hint() {
   return "compare the row with the task's equation: even rows are y components (sines), odd rows x components (cosines)";
 }
 
@@ -81,7 +89,10 @@ Verdict check_f(Session& session) {
                                        "allowed |error| {} (1e3 eps times the links' sum {})",
                                        i, digits17(f(i)), digits17(expected(i)), i + 1, pose_text(pose),
                                        difference(f(i), expected(i)), sci(tolerance), jansen_links_sum()),
-                           f_hint(i, f(i), expected(i)));
+                           diagnose_residual({f, expected, pose.crank_angle, pose.theta, evaluator_of<JansenClosure>(), tolerance},
+                                             {{"wrong_link", Specificity::exact,
+                                               [&] { return offset_mistake(i, f(i), expected(i)); }}}),
+                           f_hint());
     }
   }
   return Verdict::pass(closure_time(list.front()));
@@ -98,6 +109,12 @@ std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, 
   }
   return "an entry from the wrong link or a mistyped constant: J[i][k] is +-l cos or +-l sin of theta_(k+1), with the "
          "length l of that angle's link in row i";
+}
+
+// theta_(k+1)'s link is l(k+1): J's column k is +-l(k+1) sin or cos of theta_(k+1).
+std::vector<ColumnLink> column_links() {
+  const mechanisms::JansenLengths L;
+  return {{"l1", L.l1}, {"l2", L.l2}, {"l3", L.l3}, {"l4", L.l4}, {"l5", L.l5}, {"l6", L.l6}, {"l7", L.l7}, {"l8", L.l8}};
 }
 
 Verdict check_J(Session& session) {
@@ -121,6 +138,8 @@ Verdict check_J(Session& session) {
                         i, k, digits17(J(i, k)), digits17(expected(i, k)), difference(J(i, k), expected(i, k)), i,
                         jansen_angle_name(k), digits17(differences(i, k)), pose_text(pose),
                         sci(tolerance)),
+            diagnose_jacobian({J, expected, pose.crank_angle, pose.theta, evaluator_of<JansenClosure>(), tolerance,
+                               jansen_angle_name, column_links()}),
             J_hint(J, expected, pose, i, k, tolerance));
       }
     }

@@ -63,14 +63,15 @@ Verdict no_assembly(Session& session) {
                                                                          {60.0, 56.3}}) {
     const auto closed = linkage.closed_form(deg * degrees);
     if (closed.status == Status::converged) throw std::logic_error("the Mustang assembles beyond its limits");
-    const auto answer = Battery::ask(session, from(deg, start, 1e-10, 30));
+    const Request request = from(deg, start, 1e-10, 30);
+    const auto answer = Battery::ask(session, request);
     if (answer.reply.status == "converged") {
       return Verdict::fail(
           fmt::format("theta {} deg: status \"converged\", but the linkage cannot assemble there ({} cannot close, by the "
                       "closed form; the assembly range is -41.4257 ... 56.4540 deg); your ||f||_inf = {}, tolerance 1e-10",
                       deg, mechanisms::mustang_loop_names[static_cast<std::size_t>(closed.failed_loop - 1)],
                       sci(answer.reply.residual_inf)),
-          "past an assembly limit no angles satisfy f = 0: only max |f_i| <= tolerance may say converged (not "
+          Battery::diagnosis(request, answer), "past an assembly limit no angles satisfy f = 0: only max |f_i| <= tolerance may say converged (not "
           "|f_i + f_j|, which lets components cancel)");
     }
   }

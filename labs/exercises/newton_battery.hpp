@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "exercises/detectors/mechanism_newton.hpp"
 #include "exercises/exercise.hpp"
 #include "exercises/linkage_checks.hpp"
 #include "exercises/newton_replies.hpp"
@@ -70,6 +71,42 @@ class NewtonBattery {
     return answer;
   }
 
+  // The seed's own start, if the closure has one (restart_from_seed_guess tests it).
+  static Eigen::VectorXd seed_start() {
+    if constexpr (requires { Closure::seed_guess(); }) {
+      return Closure::seed_guess();
+    } else if constexpr (requires { Closure::seed_estimates(); }) {
+      return Closure::seed_estimates();
+    } else {
+      return {};
+    }
+  }
+
+  // The most specific cause the reply's numbers show (detectors/mechanism_newton.hpp), or nothing.
+  static std::optional<Diagnosis> diagnosis(const Request& request, const Answer& answer,
+                                            const std::optional<Vector>& exact = std::nullopt) {
+    NewtonEvidence evidence;
+    evidence.driver = request.angle;
+    evidence.start = request.start;
+    evidence.tolerance = request.tolerance;
+    evidence.max_iterations = request.max_iterations;
+    evidence.x = answer.x;
+    evidence.status = answer.reply.status;
+    evidence.iterations = answer.reply.iterations;
+    try {
+      evidence.trace = read_trace(answer.raw);
+    } catch (const ReplyError&) {
+      // a malformed trace is evidence of nothing: the detectors that need one stay silent
+    }
+    evidence.evaluate = evaluator_of<Closure>();
+    evidence.seed_start = seed_start();
+    if (exact) evidence.exact = Eigen::VectorXd(*exact);
+    evidence.rounding = rounding();
+    evidence.links_sum = Linkage::links_sum();
+    evidence.angle_name = [](int k) { return Linkage::angle_name(k); };
+    return diagnose_newton(evidence);
+  }
+
   static nonlinear::NewtonOptions options_for(const Request& request) {
     nonlinear::NewtonOptions options;
     options.residual_tolerance = request.tolerance;
@@ -111,7 +148,7 @@ class NewtonBattery {
                                          "converges in {} (tolerance {}, kappa_inf(J) = {} at the pose)",
                                          where, answer.reply.status, answer.reply.iterations, reference.iterations,
                                          sci(request.tolerance), sci(kappa_inf(J))),
-                             "check the Newton step: J dx = -f, then x <- x + dx; and J entry by entry");
+                             diagnosis(request, answer, exact[r]), "check the Newton step: J dx = -f, then x <- x + dx; and J entry by entry");
       }
       // First order: |x - x*| <= ||J^-1|| ||f(x)||; f is at most tolerance, plus rounding.
       const double allowed = 2.0 * inverse_norm * (request.tolerance + rounding());
@@ -123,12 +160,13 @@ class NewtonBattery {
                         "L), kappa_inf(J) = {}); ||f||_inf at your angles (numlab's f) = {}",
                         where, Linkage::angle_name(worst), sci(error), sci(allowed), sci(kappa_inf(J)),
                         sci(answer.reply.residual_inf)),
-            error > 0.1 ? "a root of another branch (assembly mode), or a wrong f: start from the given angles and "
+            diagnosis(request, answer, exact[r]), error > 0.1 ? "a root of another branch (assembly mode), or a wrong f: start from the given angles and "
                           "check f against the task's equations"
                         : "the residual test passed on a wrong f: compare f with the task's equations (lengths, "
                           "and which angles are measured from -x)");
       }
       if (auto dishonest = dishonest_reply(answer.reply, request.tolerance, request.max_iterations, rounding(), where)) {
+        dishonest->diagnosis = diagnosis(request, answer, exact[r]);
         return *dishonest;
       }
     }
@@ -141,6 +179,7 @@ class NewtonBattery {
       const Answer answer = ask(session, request);
       if (auto dishonest = dishonest_reply(answer.reply, request.tolerance, request.max_iterations, rounding(),
                                            Linkage::where(request.angle))) {
+        dishonest->diagnosis = diagnosis(request, answer);
         return *dishonest;
       }
     }
@@ -166,7 +205,7 @@ class NewtonBattery {
                                            f.template lpNorm<Eigen::Infinity>())) {
         return Verdict::fail(fmt::format("{} (your status \"{}\" after {} iterations), {}", where, answer.reply.status,
                                          answer.reply.iterations, departure->message),
-                             departure->hint);
+                             diagnosis(request, answer), departure->hint);
       }
     }
     return Verdict::pass(reference_times(requests.front()));
