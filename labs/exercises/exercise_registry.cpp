@@ -3,6 +3,7 @@
 
 #include "exercises/exercise.hpp"
 #include "exercises/exercise_list.hpp"
+#include "exercises/linkage_exercise.hpp"
 
 namespace numlab::exercises {
 
@@ -16,6 +17,7 @@ const std::vector<Exercise>& all_exercises() {
       jansen10_jacobian_exercise(),
       jansen_newton_exercise(),
       mustang_newton_exercise(),
+      linkage_exercise_without_model(),  // made for a model by linkage_exercise() (--model)
   };
   return exercises;
 }

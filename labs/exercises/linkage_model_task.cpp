@@ -1,0 +1,157 @@
+// The linkage exercise's model, as the requests carry it (JSON) and as TASK.md states it (Markdown):
+// both made from numlab's derived LinkageModel, so they are specific to the description file.
+
+#include <fmt/format.h>
+
+#include <numbers>
+
+#include "exercises/linkage_exercise.hpp"
+
+namespace numlab::exercises {
+
+namespace {
+
+using mechanisms::Constraint;
+using mechanisms::ConstraintKind;
+using mechanisms::LinkageModel;
+
+std::string joint_name(const LinkageModel& model, int joint) {
+  return model.description().joints[static_cast<std::size_t>(joint)].name;
+}
+
+const char* kind_name(ConstraintKind kind) {
+  switch (kind) {
+    case ConstraintKind::distance: return "distance";
+    case ConstraintKind::body_point: return "body_point";
+    case ConstraintKind::slider_line: return "slider_line";
+    case ConstraintKind::crank: return "crank";
+    case ConstraintKind::slider_travel: return "slider_travel";
+  }
+  return "";
+}
+
+nlohmann::json pair(const Eigen::Vector2d& v) { return nlohmann::json::array({v.x(), v.y()}); }
+
+std::string number(double value) { return fmt::format("{:.17g}", value); }
+
+// p_J's x or y as the task writes it: a symbol for a moving joint, the number for a ground joint.
+std::string coordinate(const LinkageModel& model, int joint, int axis) {
+  const auto& spec = model.description().joints[static_cast<std::size_t>(joint)];
+  if (spec.ground) return fmt::format("({})", number(spec.position(axis)));
+  return fmt::format("{}_{}", axis == 0 ? 'x' : 'y', spec.name);
+}
+
+// The rows of constraint c, as equations in the unknowns (t: the driver in model units).
+std::vector<std::string> row_formulas(const LinkageModel& model, const Constraint& c) {
+  const auto x = [&](int k) { return coordinate(model, c.joints[static_cast<std::size_t>(k)], 0); };
+  const auto y = [&](int k) { return coordinate(model, c.joints[static_cast<std::size_t>(k)], 1); };
+  switch (c.kind) {
+    case ConstraintKind::distance: {
+      const std::string L = number(c.length);
+      return {fmt::format("(({} - {})^2 + ({} - {})^2 - {}^2) / (2 * {})", x(0), x(1), y(0), y(1), L, L)};
+    }
+    case ConstraintKind::body_point: {
+      const std::string a = number(c.coefficients.x()), b = number(c.coefficients.y());
+      return {fmt::format("{2} - {0} - {3} * ({1} - {0}) + {4} * ({5} - {6})", x(0), x(1), x(2), a, b, y(1), y(0)),
+              fmt::format("{2} - {0} - {3} * ({1} - {0}) - {4} * ({5} - {6})", y(0), y(1), y(2), a, b, x(1), x(0))};
+    }
+    case ConstraintKind::slider_line:
+      return {fmt::format("{} * ({} - {}) - {} * ({} - {})", number(c.direction.x()), y(0), number(c.point.y()),
+                          number(c.direction.y()), x(0), number(c.point.x()))};
+    case ConstraintKind::crank: {
+      const std::string angle = c.offset == 0.0 ? "t" : "t + " + number(c.offset);
+      return {fmt::format("{} - {} - {} * cos({})", x(1), x(0), number(c.length), angle),
+              fmt::format("{} - {} - {} * sin({})", y(1), y(0), number(c.length), angle)};
+    }
+    case ConstraintKind::slider_travel:
+      return {fmt::format("{} * ({} - {}) + {} * ({} - {}) - t", number(c.direction.x()), x(0), number(c.point.x()),
+                          number(c.direction.y()), y(0), number(c.point.y()))};
+  }
+  return {};
+}
+
+}  // namespace
+
+nlohmann::json linkage_model_json(const LinkageModel& model) {
+  const auto& d = model.description();
+  nlohmann::json joints = nlohmann::json::array();
+  for (const auto& joint : d.joints) {
+    joints.push_back({{"name", joint.name}, {"ground", joint.ground}, {"position", pair(joint.position)}});
+  }
+  nlohmann::json unknowns = nlohmann::json::array();
+  for (int k = 0; k < model.unknown_count(); ++k) unknowns.push_back(model.column_name(k));
+  nlohmann::json equations = nlohmann::json::array();
+  for (const Constraint& c : model.constraints()) {
+    nlohmann::json names = nlohmann::json::array();
+    for (int joint : c.joints) {
+      if (joint >= 0) names.push_back(joint_name(model, joint));
+    }
+    nlohmann::json equation = {{"kind", kind_name(c.kind)}, {"name", c.name}, {"rows", c.rows()}, {"joints", names}};
+    if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) equation["length"] = c.length;
+    if (c.kind == ConstraintKind::crank) equation["offset"] = c.offset;
+    if (c.kind == ConstraintKind::body_point) equation["coefficients"] = pair(c.coefficients);
+    if (c.kind == ConstraintKind::slider_line || c.kind == ConstraintKind::slider_travel) {
+      equation["point"] = pair(c.point);
+      equation["direction"] = pair(c.direction);
+    }
+    equations.push_back(std::move(equation));
+  }
+  const auto& driver = d.driver;
+  nlohmann::json driver_json = {{"type", model.crank_driven() ? "crank" : "slider"},
+                                {"joint", joint_name(model, driver.joint)},
+                                {"reference", driver.reference},
+                                {"units", model.crank_driven() ? "degrees" : "length"}};
+  if (model.crank_driven()) driver_json["pivot"] = joint_name(model, driver.pivot);
+  return {{"name", d.name}, {"joints", joints}, {"unknowns", unknowns}, {"driver", driver_json}, {"equations", equations}};
+}
+
+std::string linkage_model_task(const LinkageModel& model) {
+  const auto& d = model.description();
+  std::string text = fmt::format("## Your linkage: {}{}\n\n", d.name, d.title.empty() ? "" : " (" + d.title + ")");
+  text += "Ground joints (fixed):";
+  bool any_ground = false;
+  for (const auto& joint : d.joints) {
+    if (!joint.ground) continue;
+    text += fmt::format(" {} = ({}, {});", joint.name, number(joint.position.x()), number(joint.position.y()));
+    any_ground = true;
+  }
+  if (!any_ground) text += " none;";
+  text.back() = '.';
+  text += "\n\n";
+  const auto& driver = d.driver;
+  if (model.crank_driven()) {
+    text += fmt::format("**Driver:** a crank: joint {} turns about ground joint {}; a request's `driver` is the crank "
+                        "angle in **degrees** (t = driver * pi / 180 in the equations below); the reference pose is "
+                        "at {} degrees.\n\n",
+                        joint_name(model, driver.joint), joint_name(model, driver.pivot), number(driver.reference));
+  } else {
+    text += fmt::format("**Driver:** a slider: joint {} moves along its line; a request's `driver` is its travel t "
+                        "(length units) from the line's point; the reference pose is at t = {}.\n\n",
+                        joint_name(model, driver.joint), number(driver.reference));
+  }
+  text += fmt::format("**Unknowns ({}), in this order:** q = (", model.unknown_count());
+  for (int k = 0; k < model.unknown_count(); ++k) text += fmt::format("{}{}", k > 0 ? ", " : "", model.column_name(k));
+  text += ")\n\n";
+  text += fmt::format("**Equations ({}), in this order** (f[i] is row i; every row is in length units):\n\n",
+                      model.equation_count());
+  int row = 0;
+  for (const Constraint& c : model.constraints()) {
+    const auto formulas = row_formulas(model, c);
+    for (std::size_t r = 0; r < formulas.size(); ++r) {
+      text += fmt::format("{}. f[{}] = `{}`  ({}{})\n", row + 1, row, formulas[r], c.name,
+                          formulas.size() > 1 ? (r == 0 ? ", x" : ", y") : "");
+      ++row;
+    }
+  }
+  text += "\nThe lengths:";
+  for (const Constraint& c : model.constraints()) {
+    if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) {
+      text += fmt::format(" {} {};", c.name, number(c.length));
+    }
+  }
+  text.back() = '.';
+  text += "\n";
+  return text;
+}
+
+}  // namespace numlab::exercises
