@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <optional>
 
+#include "exercises/detectors/gauss_seidel_detectors.hpp"
 #include "exercises/exercise_list.hpp"
 #include "exercises/linear_checks.hpp"
 #include "exercises/numbers.hpp"
@@ -112,6 +113,34 @@ Reference reference_for(const Problem& p, linear::ReferenceTimes& times) {
   return reference;
 }
 
+// The most specific known mistake that explains the reply (gauss_seidel_detectors.hpp); a field
+// that does not read is left out of the evidence.
+std::optional<Diagnosis> diagnosis_for(const Problem& p, const nlohmann::json& reply) {
+  detectors::GaussSeidelAnswer answer;
+  try {
+    answer.status = string_field(reply, "status");
+    answer.iterations = integer_field(reply, "iterations");
+  } catch (const ReplyError&) {
+    return std::nullopt;
+  }
+  try {
+    answer.x = vector_field(reply, "x", p.A.cols());
+  } catch (const ReplyError&) {
+  }
+  try {
+    if (const nlohmann::json* trace = linear::optional_trace(reply)) {
+      std::vector<detectors::GaussSeidelSweep> sweeps;
+      for (std::size_t s = 0; s < trace->size(); ++s) {
+        const nlohmann::json& entry = linear::trace_entry(*trace, s);
+        sweeps.push_back({vector_field(entry, "x", p.A.cols()), number_field(entry, "update_inf")});
+      }
+      answer.trace = std::move(sweeps);
+    }
+  } catch (const ReplyError&) {
+  }
+  return detectors::diagnose_gauss_seidel({p.A, p.b, p.x0, p.tolerance, p.max_iterations, p.normal_equations}, answer);
+}
+
 std::string status_name(Status status) { return std::string(numlab::to_string(status)); }
 
 const char* const stop_test_hint =
@@ -158,13 +187,14 @@ Verdict converges_accurately(Session& session, const std::vector<Problem>& probl
     if (status != "converged") {
       return Verdict::fail(fmt::format("{}: status \"{}\" after {} sweeps; {}", p.label, status, sweeps,
                                        numlab_ending(p, reference)),
+                           diagnosis_for(p, reply),
                            p.normal_equations && status == "diverged" ? normal_equations_hint : stop_test_hint,
                            times.medians());
     }
     if (std::abs(sweeps - reference.sweeps) > 1) {
       return Verdict::fail(fmt::format("{}: converged after {} sweeps; {} with the same stop test (allowed +-1)",
                                        p.label, sweeps, numlab_ending(p, reference)),
-                           stop_test_hint, times.medians());
+                           diagnosis_for(p, reply), stop_test_hint, times.medians());
     }
     const Eigen::VectorXd x = vector_field(reply, "x", p.A.cols());
     const double error = linear::relative_error(x, reference.exact);
@@ -175,7 +205,7 @@ Verdict converges_accurately(Session& session, const std::vector<Problem>& probl
                                        "Gauss-Seidel error {}, tolerance, n*kappa*eps))",
                                        p.label, p.A.rows() == p.A.cols() ? "GSL LU" : "Eigen's QR least squares",
                                        sci(error), sci(allowed), sci(reference.error)),
-                           p.normal_equations ? normal_equations_hint : "", times.medians());
+                           diagnosis_for(p, reply), p.normal_equations ? normal_equations_hint : "", times.medians());
     }
   }
   return Verdict::pass(times.medians());
@@ -193,6 +223,7 @@ Verdict ends_without_converging(Session& session, const Problem& p) {
     if (status != "max_iterations" || sweeps != reference.sweeps) {
       return Verdict::fail(fmt::format("{}: status \"{}\" after {} sweeps; {} (max_iterations = {})", p.label, status,
                                        sweeps, numlab_ending(p, reference), p.max_iterations),
+                           diagnosis_for(p, reply),
                            "after each sweep: converged if the stop test passes, else max_iterations once the sweep "
                            "count reaches max_iterations",
                            times.medians());
@@ -200,6 +231,7 @@ Verdict ends_without_converging(Session& session, const Problem& p) {
   } else if (status != "diverged" && status != "max_iterations") {
     return Verdict::fail(fmt::format("{}: status \"{}\" after {} sweeps; expected \"diverged\" or \"max_iterations\": {}",
                                      p.label, status, sweeps, numlab_ending(p, reference)),
+                         diagnosis_for(p, reply),
                          status == "converged" ? std::string("a divergent iteration reported as converged: ") +
                                                      stop_test_hint
                                                : "",
@@ -255,7 +287,7 @@ Verdict sweeps_like_numlab(Session& session, const std::vector<Problem>& problem
                                          "tolerance*max(1,|x|)",
                                          p.label, trace->size(), numlab_ending(p, reference), s,
                                          s == 0 ? std::string("-") : sci(reference.updates[s - 1])),
-                             stop_test_hint, times.medians());
+                             diagnosis_for(p, reply), stop_test_hint, times.medians());
       }
       const nlohmann::json& entry = linear::trace_entry(*trace, s);
       const Eigen::VectorXd x = vector_field(entry, "x", p.A.cols());
@@ -269,19 +301,20 @@ Verdict sweeps_like_numlab(Session& session, const std::vector<Problem>& problem
                                          "= 100*sweep*n*eps*max(1,|x|))",
                                          p.label, s + 1, i, digits17(x(i)), digits17(expected(i)),
                                          exercises::difference(x(i), expected(i)), sci(allowed)),
-                             departure_hint(p, reference, s, x, allowed), times.medians());
+                             diagnosis_for(p, reply), departure_hint(p, reference, s, x, allowed), times.medians());
       }
       if (std::abs(update - reference.updates[s]) > 2.0 * allowed) {
         return Verdict::fail(fmt::format("{}: sweep {}: update_inf {}, numlab's {} ({}; allowed difference {})", p.label,
                                          s + 1, digits17(update), digits17(reference.updates[s]),
                                          exercises::difference(update, reference.updates[s]), sci(2.0 * allowed)),
-                             "update_inf is max_i |x_i(new) - x_i(old)| over the sweep", times.medians());
+                             diagnosis_for(p, reply), "update_inf is max_i |x_i(new) - x_i(old)| over the sweep",
+                             times.medians());
       }
     }
     if (trace->size() > reference.xs.size()) {
       return Verdict::fail(fmt::format("{}: your trace goes on to sweep {}; {} (status {} there)", p.label,
                                        trace->size(), numlab_ending(p, reference), status_name(reference.status)),
-                           stop_test_hint, times.medians());
+                           diagnosis_for(p, reply), stop_test_hint, times.medians());
     }
   }
   return Verdict::pass(times.medians());
@@ -298,8 +331,8 @@ Verdict converged_claims_hold(Session& session, const std::vector<Problem>& prob
     if (trace == nullptr) return missing_trace(p, times);
     if (string_field(reply, "status") != "converged") continue;
     if (trace->empty()) {
-      return Verdict::fail(p.label + ": status converged with an empty trace; " + numlab_ending(p, reference), "",
-                           times.medians());
+      return Verdict::fail(p.label + ": status converged with an empty trace; " + numlab_ending(p, reference),
+                           diagnosis_for(p, reply), "", times.medians());
     }
     const std::size_t last = trace->size() - 1;
     const Eigen::VectorXd x = vector_field(linear::trace_entry(*trace, last), "x", p.A.cols());
@@ -313,7 +346,7 @@ Verdict converged_claims_hold(Session& session, const std::vector<Problem>& prob
                                        p.label, last + 1, sci(update), sci(p.tolerance),
                                        signed_test ? "; your stop test lets a negative change pass" : "",
                                        numlab_ending(p, reference)),
-                           stop_test_hint, times.medians());
+                           diagnosis_for(p, reply), stop_test_hint, times.medians());
     }
   }
   return Verdict::pass(times.medians());

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <optional>
 
+#include "exercises/detectors/gepp_detectors.hpp"
 #include "exercises/exercise_list.hpp"
 #include "exercises/linear_checks.hpp"
 #include "exercises/numbers.hpp"
@@ -137,6 +138,40 @@ struct Departure {
   std::string hint;
 };
 
+// True when every entry of the trace pivots on its own column's row: no row was ever swapped in.
+bool never_swaps(const nlohmann::json& trace) {
+  for (const nlohmann::json& entry : trace) {
+    if (!entry.is_object() || entry.value("pivot_row", -1LL) != entry.value("column", -2LL)) return false;
+  }
+  return true;
+}
+
+// What the student replied, for the detectors: a trace or an x that does not read is left out.
+detectors::GeppAnswer answer_of(const nlohmann::json& reply, int n) {
+  detectors::GeppAnswer answer;
+  answer.singular = replied_singular(reply);
+  try {
+    if (!answer.singular) answer.x = vector_field(reply, "x", n);
+  } catch (const ReplyError&) {
+  }
+  try {
+    if (const nlohmann::json* trace = linear::optional_trace(reply)) {
+      std::vector<detectors::GeppTraceEntry> entries;
+      for (std::size_t k = 0; k < trace->size(); ++k) {
+        const nlohmann::json& entry = linear::trace_entry(*trace, k);
+        entries.push_back({integer_field(entry, "pivot_row"), number_field(entry, "pivot")});
+      }
+      answer.trace = std::move(entries);
+    }
+  } catch (const ReplyError&) {
+  }
+  return answer;
+}
+
+std::optional<Diagnosis> diagnosis_for(const System& system, const Reference& reference, const nlohmann::json& reply) {
+  return detectors::diagnose_gepp(system.A, system.b, reference.kappa, answer_of(reply, reference.n));
+}
+
 // The first column where the student's trace leaves numlab's pivot choices, if any.
 std::optional<Departure> first_departure(const nlohmann::json& trace, const Reference& reference) {
   const double pivot_tolerance = 10.0 * reference.n * eps * reference.growth * reference.scale;
@@ -164,7 +199,7 @@ std::optional<Departure> first_departure(const nlohmann::json& trace, const Refe
       const Eigen::VectorXd& candidates = expected.candidates;
       const double yours = candidates(row - static_cast<long long>(k));
       std::string hint;
-      if (row == static_cast<long long>(k)) {
+      if (row == static_cast<long long>(k) && never_swaps(trace)) {
         hint = "no pivoting: at each column, swap in the row with the largest |a_ik| on or below the diagonal";
       } else if (yours == candidates.maxCoeff()) {
         hint = "pivoting on the signed value: compare |a_ik|, not a_ik (a large negative entry is a good pivot)";
@@ -233,7 +268,8 @@ Verdict solves_accurately(Session& session, const std::vector<System>& systems) 
                                 "{} (10*n*eps*growth)",
                                 sci(allowed), sci(10.0 * n * eps * reference.growth))});
     if (replied_singular(reply)) {
-      return Verdict::fail(not_singular_message(system, reference), singular_threshold_hint, times.medians());
+      return Verdict::fail(not_singular_message(system, reference), diagnosis_for(system, reference, reply),
+                           singular_threshold_hint, times.medians());
     }
     const Eigen::VectorXd x = vector_field(reply, "x", reference.n);
     const double forward = linear::relative_error(x, reference.gsl_x);
@@ -243,7 +279,7 @@ Verdict solves_accurately(Session& session, const std::vector<System>& systems) 
                       "kappa = {}, growth = {}){}",
                       system.label, sci(forward), sci(allowed), reference.n, sci(reference.kappa), sci(reference.growth),
                       where_x_departs(x, reference.gsl_x, allowed)),
-          hint_for_wrong_x(reply, reference), times.medians());
+          diagnosis_for(system, reference, reply), hint_for_wrong_x(reply, reference), times.medians());
     }
     const double backward = linalg::relative_residual(system.A, system.b, x);
     const double allowed_backward = 10.0 * n * eps * reference.growth;
@@ -252,7 +288,8 @@ Verdict solves_accurately(Session& session, const std::vector<System>& systems) 
                                        "(10*n*eps*growth: GEPP is backward stable; n = {}, growth = {})",
                                        system.label, sci(backward), sci(allowed_backward), reference.n,
                                        sci(reference.growth)),
-                           hint_for_wrong_x(reply, reference), times.medians());
+                           diagnosis_for(system, reference, reply), hint_for_wrong_x(reply, reference),
+                           times.medians());
     }
   }
   return Verdict::pass(times.medians());
@@ -274,6 +311,7 @@ Verdict reports_singular(Session& session, const std::vector<System>& systems) {
                       "<= n*eps*max|a_ij| = {} (n = {}, max|a_ij| = {})",
                       system.label, reference.stopped_column, sci(reference.stopped_pivot),
                       sci(reference.negligible_pivot), reference.n, sci(reference.scale)),
+          diagnosis_for(system, reference, reply),
           "missing singular test: before dividing by a pivot (after the swap), compare |pivot| with n*eps*max|a_ij|",
           times.medians());
     }
@@ -301,10 +339,12 @@ Verdict pivots_like_numlab(Session& session, const std::vector<System>& systems)
                            "add \"trace\": one {\"column\", \"pivot_row\", \"pivot\"} per column", times.medians());
     }
     if (replied_singular(reply)) {
-      return Verdict::fail(not_singular_message(system, reference), singular_threshold_hint, times.medians());
+      return Verdict::fail(not_singular_message(system, reference), diagnosis_for(system, reference, reply),
+                           singular_threshold_hint, times.medians());
     }
     if (const auto departure = first_departure(*trace, reference)) {
-      return Verdict::fail(system.label + ": " + departure->message, departure->hint, times.medians());
+      return Verdict::fail(system.label + ": " + departure->message, diagnosis_for(system, reference, reply),
+                           departure->hint, times.medians());
     }
   }
   return Verdict::pass(times.medians());

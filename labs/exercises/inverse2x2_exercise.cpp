@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <optional>
 
+#include "exercises/detectors/inverse2x2_detectors.hpp"
 #include "exercises/exercise_list.hpp"
 #include "exercises/linear_checks.hpp"
 #include "exercises/numbers.hpp"
@@ -55,6 +56,17 @@ Reference reference_for(const Case& item, linear::ReferenceTimes& times) {
 
 bool replied_singular(const nlohmann::json& reply) { return optional_status(reply) == std::optional<std::string>("singular"); }
 
+// The most specific known mistake that explains the reply (inverse2x2_detectors.hpp).
+std::optional<Diagnosis> diagnosis_for(const Case& item, const nlohmann::json& reply) {
+  detectors::InverseAnswer answer;
+  answer.singular = replied_singular(reply);
+  try {
+    if (!answer.singular) answer.inverse = matrix_field(reply, "inverse", 2, 2);
+  } catch (const ReplyError&) {
+  }
+  return detectors::diagnose_inverse2x2(item.A, answer);
+}
+
 // The mistake that turns the closed form into `yours`.
 std::string hint_for(const Eigen::Matrix2d& yours, const Eigen::Matrix2d& inverse, const Eigen::Matrix2d& A,
                      double allowed) {
@@ -82,6 +94,7 @@ Verdict inverts_accurately(Session& session, const std::vector<Case>& cases) {
       return Verdict::fail(fmt::format("{}: you replied \"singular\"; |det A| / ||A||_F^2 = {} is above eps = {} "
                                        "(kappa = {}): numlab's closed form, with A scaled by a power of two, inverts it",
                                        item.label, sci(1.0 / (kappa + 1.0 / kappa)), sci(eps), sci(kappa)),
+                           diagnosis_for(item, reply),
                            "only |det A| <= eps*||A||_F^2 means singular; scale A by a power of two first when a d "
                            "or b c could overflow or underflow",
                            times.medians());
@@ -99,7 +112,7 @@ Verdict inverts_accurately(Session& session, const std::vector<Case>& cases) {
                                        "with the closed form to {}",
                                        item.label, i, j, digits17(yours(i, j)), digits17(inverse(i, j)), difference(yours(i, j), inverse(i, j)), sci(error),
                                        sci(allowed), sci(kappa), sci(linear::relative_error(reference.gsl, inverse))),
-                           hint_for(yours, inverse, item.A, allowed), times.medians());
+                           diagnosis_for(item, reply), hint_for(yours, inverse, item.A, allowed), times.medians());
     }
   }
   return Verdict::pass(times.medians());
@@ -119,6 +132,7 @@ Verdict reports_singular(Session& session, const std::vector<Case>& cases) {
                                        "eps*||A||_F^2 = {} (kappa_2 >= 1/eps)",
                                        item.label, sci(std::abs(reference.closed_form.determinant)),
                                        sci(reference.threshold)),
+                           diagnosis_for(item, reply),
                            "missing singular test: compare |a d - b c| with eps*(a^2 + b^2 + c^2 + d^2) before "
                            "dividing by the determinant",
                            times.medians());

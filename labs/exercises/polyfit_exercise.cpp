@@ -7,6 +7,7 @@
 #include <limits>
 #include <set>
 
+#include "exercises/detectors/polyfit_detectors.hpp"
 #include "exercises/exercise_list.hpp"
 #include "exercises/linkage_checks.hpp"
 #include "exercises/nist_polynomial_sets.hpp"
@@ -69,9 +70,20 @@ std::vector<ReferenceTime> fit_times(const FitCase& fit) {
           {"GSL gsl_multifit_linear", median_seconds([&] { fitting::gsl_multifit_fit(fit.x, fit.y, fit.degree); })}};
 }
 
-std::string fit_hint(const Eigen::VectorXd& got, const FitCase& fit, const Accuracy& a) {
+// True when `got` in reverse order matches, and reversal changes the answer (on Wampler1, whose
+// certified coefficients are all 1, it changes nothing: no evidence for reversed powers there).
+bool reversal_matches(const Eigen::VectorXd& got, const FitCase& fit, const Accuracy& a, double tolerance) {
   int unused = 0;
-  if (scaled_error(got.reverse(), fit, a, unused) <= 1e-6) {
+  return scaled_error(got.reverse(), fit, a, unused) <= tolerance &&
+         scaled_error(fit.expected.reverse(), fit, a, unused) > a.allowed;
+}
+
+std::optional<Diagnosis> diagnosis_for(const FitCase& fit, const Accuracy& a, const Eigen::VectorXd& got) {
+  return detectors::diagnose_polyfit({fit.x, fit.y, fit.degree, fit.expected, a.allowed}, got);
+}
+
+std::string fit_hint(const Eigen::VectorXd& got, const FitCase& fit, const Accuracy& a) {
+  if (reversal_matches(got, fit, a, 1e-6)) {
     return "the powers are reversed: reply lowest power first (numpy.polyfit returns the highest first)";
   }
   return "solve the least-squares problem min |V b - y| stably (QR or SVD of V, columns scaled to unit length); the "
@@ -115,9 +127,15 @@ std::optional<Verdict> wrong_count(const nlohmann::json& reply, const FitCase& f
   if (found == reply.end() || !found->is_array() || found->size() == static_cast<std::size_t>(fit.degree + 1)) {
     return std::nullopt;  // vector_field reports a missing or malformed field
   }
+  std::optional<Diagnosis> diagnosis;
+  try {
+    const Eigen::VectorXd got = vector_field(reply, "coefficients", static_cast<Eigen::Index>(found->size()));
+    diagnosis = detectors::diagnose_polyfit({fit.x, fit.y, fit.degree, fit.expected, accuracy_of(fit).allowed}, got);
+  } catch (const ReplyError&) {
+  }
   return Verdict::fail(fmt::format("{}: coefficients has {} entries, expected degree + 1 = {} (b0 ... b{})", fit.name,
                                    found->size(), fit.degree + 1, fit.degree),
-                       "a loop over the powers that stops one short, or starts at 1: the constant term b0 comes first");
+                       std::move(diagnosis), "a loop over the powers that stops one short, or starts at 1: the constant term b0 comes first");
 }
 
 Verdict check_fits(Session& session, const std::vector<FitCase>& cases) {
@@ -141,10 +159,9 @@ Verdict check_fits(Session& session, const std::vector<FitCase>& cases) {
                     fit.name, fit.degree, fit.x.size(), worst, digits17(got(worst)), digits17(fit.expected(worst)),
                     fit.reference, difference(got(worst), fit.expected(worst)), sci(error),
                     sci(a.allowed), sci(a.kappa), sci(a.tan_theta)) +
-            (scaled_error(got.reverse(), fit, a, worst) <= a.allowed ? "; in reverse order your coefficients match: "
-                                                                       "powers reversed"
-                                                                     : ""),
-        fit_hint(got, fit, a));
+            (reversal_matches(got, fit, a, a.allowed) ? "; in reverse order your coefficients match: powers reversed"
+                                                      : ""),
+        diagnosis_for(fit, a, got), fit_hint(got, fit, a));
   }
   return Verdict::pass(fit_times(cases.back()));
 }
@@ -196,6 +213,9 @@ Verdict undetermined(Session& session) {
                                        "status saying so: \"singular\"",
                                        xs.size(), distinct, degree, status.value_or("(none)"),
                                        unknown_status_note(status), degree + 1, distinct, distinct),
+                           status.value_or("converged") != "converged"
+                               ? std::nullopt
+                               : std::optional<Diagnosis>(detectors::undetermined_fit(xs.size(), distinct, degree)),
                            "check the rank of V (or the count of distinct x) before solving; a least-squares solver "
                            "returns some answer even when infinitely many fit equally well");
     }

@@ -1,0 +1,263 @@
+#include "exercises/detectors/gauss_seidel_detectors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "exercises/detectors/explains.hpp"
+
+namespace numlab::exercises::detectors {
+
+namespace {
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+struct Swept {
+  Eigen::MatrixXd M;
+  Eigen::VectorXd c;
+};
+
+// M and c of `system`; nothing when it cannot be formed (A A^T of a matrix that is not square).
+std::optional<Swept> swept(const GaussSeidelProblem& p, SweptSystem system) {
+  const bool square = p.A.rows() == p.A.cols();
+  switch (system) {
+    case SweptSystem::asked: return swept(p, p.normal_equations ? SweptSystem::normal : SweptSystem::plain);
+    case SweptSystem::plain:
+      if (!square) return std::nullopt;
+      return Swept{p.A, p.b};
+    case SweptSystem::normal: return Swept{p.A.transpose() * p.A, p.A.transpose() * p.b};
+    case SweptSystem::a_at:
+      if (!square) return std::nullopt;
+      return Swept{p.A * p.A.transpose(), p.A.transpose() * p.b};
+  }
+  return std::nullopt;
+}
+
+Eigen::VectorXd sweep(const Swept& s, Eigen::VectorXd x, SweepKind kind) {
+  if (kind == SweepKind::no_update) return x;
+  const Eigen::VectorXd old = x;
+  const Eigen::Index n = x.size();
+  for (Eigen::Index step = 0; step < n; ++step) {
+    const Eigen::Index i = kind == SweepKind::reverse ? n - 1 - step : step;
+    const Eigen::VectorXd& used = kind == SweepKind::jacobi ? old : x;
+    x(i) = (s.c(i) - s.M.row(i).dot(used) + s.M(i, i) * used(i)) / s.M(i, i);
+  }
+  return x;
+}
+
+bool stops(StopRule rule, const Eigen::VectorXd& x, const Eigen::VectorXd& old, double update, double tolerance) {
+  const double size = x.cwiseAbs().maxCoeff();
+  switch (rule) {
+    case StopRule::signed_change: return (x - old).maxCoeff() < tolerance;
+    case StopRule::absolute: return update <= tolerance;
+    case StopRule::relative: return update <= tolerance * size;
+    default: return update <= tolerance * std::max(1.0, size);
+  }
+}
+
+// One sweep as a hypothesis: what it computes, in words, and the remedy.
+struct SweepHypothesis {
+  const char* cause;
+  SweptSystem system;
+  SweepKind kind;
+  const char* what;
+  const char* remedy;
+};
+
+std::vector<SweepHypothesis> sweep_hypotheses(const GaussSeidelProblem& p) {
+  std::vector<SweepHypothesis> list = {
+      {"x_never_updated", SweptSystem::asked, SweepKind::no_update, "a sweep that leaves x as it was",
+       "assign x_i inside the sweep, and carry the new x to the next sweep and the reply"},
+      {"jacobi_sweep", SweptSystem::asked, SweepKind::jacobi, "a Jacobi sweep (every x_j from the sweep before)",
+       "x_i must use the x_j already updated in this sweep (j < i)"},
+      {"reverse_order", SweptSystem::asked, SweepKind::reverse, "a sweep from the last equation to the first",
+       "sweep the equations in order, i = 0, 1, ..., n-1"},
+  };
+  if (p.normal_equations) {
+    list.push_back({"plain_when_normal_asked", SweptSystem::plain, SweepKind::gauss_seidel,
+                    "a Gauss-Seidel sweep of A x = b", "with normal_equations true, sweep M = A^T A and c = A^T b"});
+    list.push_back({"a_at_instead_of_at_a", SweptSystem::a_at, SweepKind::gauss_seidel,
+                    "a Gauss-Seidel sweep of A A^T x = A^T b", "M = A^T A: A transposed on the left"});
+  } else {
+    list.push_back({"normal_when_plain_asked", SweptSystem::normal, SweepKind::gauss_seidel,
+                    "a Gauss-Seidel sweep of A^T A x = A^T b",
+                    "with normal_equations false, sweep A x = b itself"});
+  }
+  return list;
+}
+
+struct StopHypothesis {
+  const char* cause;
+  StopRule rule;
+  const char* what;
+  const char* remedy;
+};
+
+const std::vector<StopHypothesis> stop_hypotheses = {
+    {"limit_reported_converged", StopRule::limit_converged, "reporting the sweep limit as converged",
+     "when max_iterations sweeps pass without the stop test passing, the status is max_iterations"},
+    {"one_iteration_too_many", StopRule::extra_sweep, "a loop that runs max_iterations + 1 sweeps",
+     "stop after max_iterations sweeps (while sweep < max_iterations, counting from 0)"},
+    {"stop_test", StopRule::signed_change, "the stop test without abs, max_i (x_i(new) - x_i(old)) < tolerance",
+     "compare max_i |x_i(new) - x_i(old)| with tolerance * max(1, max_i |x_i|)"},
+    {"stop_test", StopRule::absolute, "the stop test update_inf <= tolerance, without max(1, |x|)",
+     "compare update_inf with tolerance * max(1, max_i |x_i|)"},
+    {"stop_test", StopRule::relative, "the stop test update_inf <= tolerance * |x|, without max(1, ...)",
+     "compare update_inf with tolerance * max(1, max_i |x_i|)"},
+};
+
+double row_amplification(const Eigen::MatrixXd& M) {
+  double largest = 1.0;
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    largest = std::max(largest, M.row(i).cwiseAbs().sum() / std::abs(M(i, i)));
+  }
+  return largest;
+}
+
+std::string ending(const std::string& status, long long sweeps) {
+  return fmt::format("\"{}\" after {} sweep{}", status, sweeps, sweeps == 1 ? "" : "s");
+}
+
+// The first sweep of the student's trace that departs from numlab's, with the check's tolerance.
+std::optional<std::size_t> first_departing_sweep(const GaussSeidelRun& reference,
+                                                 const std::vector<GaussSeidelSweep>& trace, double n) {
+  double largest = 1.0;
+  for (const Eigen::VectorXd& x : reference.xs) largest = std::max(largest, x.cwiseAbs().maxCoeff());
+  const std::size_t common = std::min(trace.size(), reference.xs.size());
+  for (std::size_t s = 0; s < common; ++s) {
+    const double allowed = 100.0 * static_cast<double>(s + 1) * n * eps * largest;
+    if (trace[s].x.size() != reference.xs[s].size() || !((trace[s].x - reference.xs[s]).cwiseAbs().maxCoeff() <= allowed)) {
+      return s;
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> sweep_evidence(const GaussSeidelProblem& p, const SweepHypothesis& h,
+                                          const std::vector<GaussSeidelSweep>& trace, std::size_t s) {
+  const std::optional<Swept> system = swept(p, h.system);
+  const std::optional<Swept> asked = swept(p, SweptSystem::asked);
+  const Eigen::VectorXd& previous = s == 0 ? p.x0 : trace[s - 1].x;
+  const Eigen::VectorXd& yours = trace[s].x;
+  if (!system || !asked || previous.size() != asked->c.size() || yours.size() != previous.size()) return std::nullopt;
+  const Eigen::VectorXd hypothesis = sweep(*system, previous, h.kind);
+  const Eigen::VectorXd right = sweep(*asked, previous, SweepKind::gauss_seidel);
+  if (hypothesis.size() != yours.size()) return std::nullopt;
+  const double size = std::max({1.0, hypothesis.cwiseAbs().maxCoeff(), previous.cwiseAbs().maxCoeff()});
+  const double tolerance = 100.0 * static_cast<double>(yours.size()) * eps * size *
+                           std::max(row_amplification(system->M), row_amplification(asked->M));
+  const double distance = (yours - hypothesis).cwiseAbs().maxCoeff();
+  const double separation = (hypothesis - right).cwiseAbs().maxCoeff();
+  if (!explains(distance, separation, tolerance, tolerance)) return std::nullopt;
+  return fmt::format("your sweep {} equals {} from {} to {} (a Gauss-Seidel sweep from the same x differs from it by "
+                     "{}): {}",
+                     s + 1, h.what, s == 0 ? std::string("x0") : fmt::format("your sweep {}'s x", s), measured(distance),
+                     measured(separation), h.remedy);
+}
+
+// Whether a whole replayed run gives the student's status, sweep count, x and trace length, where
+// numlab's run does not.
+bool run_explains(const GaussSeidelRun& run, const GaussSeidelRun& reference, const GaussSeidelAnswer& answer) {
+  if (run.status != answer.status || run.sweeps() != answer.iterations || run.xs.empty()) return false;
+  const Eigen::VectorXd& last = run.xs.back();
+  if (answer.x && !(relative_distance(*answer.x, last) <= 1e-6)) return false;
+  if (answer.trace) {
+    if (answer.trace->size() != run.xs.size()) return false;
+    if (!(relative_distance(answer.trace->back().x, last) <= 1e-6)) return false;
+  }
+  const bool differs = run.status != reference.status || std::abs(run.sweeps() - reference.sweeps()) > 1 ||
+                       (answer.trace && run.sweeps() != reference.sweeps()) ||
+                       !(relative_distance(last, reference.xs.back()) <= 1e-6);
+  return differs;
+}
+
+}  // namespace
+
+GaussSeidelRun replay_gauss_seidel(const GaussSeidelProblem& p, SweptSystem system, SweepKind kind, StopRule stop) {
+  GaussSeidelRun run;
+  const std::optional<Swept> s = swept(p, system);
+  if (!s || s->c.size() != p.x0.size()) return run;
+  Eigen::VectorXd x = p.x0;
+  double first = 0.0;
+  run.status = "max_iterations";
+  const int limit = p.max_iterations + (stop == StopRule::extra_sweep ? 1 : 0);
+  for (int count = 1; count <= limit; ++count) {
+    const Eigen::VectorXd old = x;
+    x = sweep(*s, x, kind);
+    const double update = (x - old).cwiseAbs().maxCoeff();
+    if (count == 1) first = update;
+    run.xs.push_back(x);
+    run.updates.push_back(update);
+    if (!x.allFinite()) {
+      run.status = "diverged";
+      return run;
+    }
+    if (stops(stop, x, old, update, p.tolerance)) {
+      run.status = "converged";
+      return run;
+    }
+    if (update > 1e8 * std::max(first, p.tolerance)) {
+      run.status = "diverged";
+      return run;
+    }
+  }
+  if (stop == StopRule::limit_converged) run.status = "converged";
+  return run;
+}
+
+std::optional<Diagnosis> diagnose_gauss_seidel(const GaussSeidelProblem& p, const GaussSeidelAnswer& answer) {
+  const GaussSeidelRun reference = replay_gauss_seidel(p, SweptSystem::asked, SweepKind::gauss_seidel, StopRule::stated);
+  if (reference.xs.empty()) return std::nullopt;
+  std::vector<Detector> detectors;
+  // The reply's x is x0 itself, where numlab's sweeps move it.
+  detectors.push_back({"x_never_updated", Specificity::exact, [&]() -> std::optional<std::string> {
+                         if (!answer.x || answer.x->size() != p.x0.size()) return std::nullopt;
+                         const double moved = relative_distance(reference.xs.back(), p.x0);
+                         const double distance = relative_distance(*answer.x, p.x0);
+                         if (!explains(distance, moved, 1e-15, 1e-6)) return std::nullopt;
+                         return fmt::format("your x is x0 to {} after {} sweeps, where numlab's sweeps move x by {} "
+                                            "(relative): assign x_i inside the sweep, and reply the updated x",
+                                            measured(distance), answer.iterations, measured(moved));
+                       }});
+  // The first sweep that departs, against the known wrong sweeps from the student's previous x.
+  std::optional<std::size_t> departing;
+  if (answer.trace) departing = first_departing_sweep(reference, *answer.trace, static_cast<double>(p.x0.size()));
+  if (departing) {
+    for (const SweepHypothesis& h : sweep_hypotheses(p)) {
+      detectors.push_back({h.cause, Specificity::exact, [&p, &answer, h, s = *departing]() {
+                             return sweep_evidence(p, h, *answer.trace, s);
+                           }});
+    }
+  }
+  // Whole runs: the wrong systems and sweeps (without a trace), then the wrong stop rules.
+  if (!answer.trace) {
+    for (const SweepHypothesis& h : sweep_hypotheses(p)) {
+      detectors.push_back({h.cause, Specificity::exact, [&, h]() -> std::optional<std::string> {
+                             const GaussSeidelRun run = replay_gauss_seidel(p, h.system, h.kind, StopRule::stated);
+                             if (!run_explains(run, reference, answer)) return std::nullopt;
+                             return fmt::format("Gauss-Seidel with {} ends {} as you do (numlab's ends {}): {}", h.what,
+                                                ending(run.status, run.sweeps()),
+                                                ending(reference.status, reference.sweeps()), h.remedy);
+                           }});
+    }
+  }
+  if (!departing) {
+    for (const StopHypothesis& h : stop_hypotheses) {
+      detectors.push_back({h.cause, Specificity::exact, [&, h]() -> std::optional<std::string> {
+                             const GaussSeidelRun run = replay_gauss_seidel(p, SweptSystem::asked,
+                                                                            SweepKind::gauss_seidel, h.rule);
+                             if (!run_explains(run, reference, answer)) return std::nullopt;
+                             const double threshold = p.tolerance * std::max(1.0, run.xs.back().cwiseAbs().maxCoeff());
+                             return fmt::format("{} ends {} as you do, where update_inf is {} and tolerance*max(1,|x|) "
+                                                "= {} (numlab's ends {}): {}",
+                                                h.what, ending(run.status, run.sweeps()), measured(run.updates.back()),
+                                                measured(threshold), ending(reference.status, reference.sweeps()),
+                                                h.remedy);
+                           }});
+    }
+  }
+  return diagnose(detectors);
+}
+
+}  // namespace numlab::exercises::detectors
