@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "exercises/call_rule.hpp"
 #include "exercises/reply_fields.hpp"
 
 namespace numlab::exercises {
@@ -90,6 +91,7 @@ CheckResult run_one(const std::string& exercise, const Check& check, Session& in
 std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session) {
   std::vector<CheckResult> results;
   int failures_in_a_row = 0;
+  CallRule call_rule(exercise.name);  // forbidden library calls (call_rule.hpp)
   for (const Check& check : exercise.battery()) {
     if (failures_in_a_row >= max_failures_in_a_row) {
       results.push_back({check.name, check.task_id, CheckStatus::error,
@@ -99,8 +101,10 @@ std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session) 
     }
     bool child_failed = false;
     results.push_back(run_one(exercise.name, check, session, child_failed));
+    call_rule.after_check(session, results);
     failures_in_a_row = child_failed ? failures_in_a_row + 1 : 0;
   }
+  call_rule.finish(results);
   return results;
 }
 

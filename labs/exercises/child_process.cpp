@@ -106,8 +106,8 @@ struct StartFailure {
 };
 
 // After fork: only async-signal-safe calls from here on.
-[[noreturn]] void become_the_program(const char* program, char* const argv[], const char* directory, pid_t parent,
-                                     int stdin_read, int stdout_write, int stderr_write, int status_write) {
+[[noreturn]] void become_the_program(const char* program, char* const argv[], char* const envp[], const char* directory,
+                                     pid_t parent, int stdin_read, int stdout_write, int stderr_write, int status_write) {
   setpgid(0, 0);
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (getppid() != parent) _exit(127);  // numlab died before the death signal was armed
@@ -132,7 +132,7 @@ struct StartFailure {
   }
   StartFailure failure{1, 0};
   if (chdir(directory) == 0) {
-    execv(program, argv);
+    execve(program, argv, envp);
     failure.stage = 2;
   }
   failure.error = errno;
@@ -147,25 +147,43 @@ std::string start_failure_reason(const StartFailure& failure) {
   return fmt::format("the system refused to start it ({})", reason);
 }
 
+// numlab's environment with each "NAME=VALUE" of `settings` put in place of NAME's (or added).
+std::vector<std::string> environment_with(const std::vector<std::string>& settings) {
+  std::vector<std::string> result;
+  const auto name_of = [](const std::string& entry) { return entry.substr(0, entry.find('=')); };
+  for (char** entry = environ; *entry != nullptr; ++entry) {
+    const std::string inherited = *entry;
+    const bool replaced = std::any_of(settings.begin(), settings.end(),
+                                      [&](const std::string& setting) { return name_of(setting) == name_of(inherited); });
+    if (!replaced) result.push_back(inherited);
+  }
+  result.insert(result.end(), settings.begin(), settings.end());
+  return result;
+}
+
 void set_nonblocking(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK); }
 
 }  // namespace
 
 ChildProcess::ChildProcess(const std::string& program, const std::vector<std::string>& arguments,
-                           const std::string& directory) {
+                           const std::string& directory, const std::vector<std::string>& environment) {
   Pipe in, out, err, status;
   std::vector<std::string> words{program};
   words.insert(words.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;
   for (std::string& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
+  std::vector<std::string> settings = environment_with(environment);
+  std::vector<char*> envp;
+  for (std::string& setting : settings) envp.push_back(setting.data());
+  envp.push_back(nullptr);
 
   const pid_t parent = getpid();
   pid_ = fork();
   if (pid_ < 0) throw_errno("fork");
   if (pid_ == 0)
-    become_the_program(program.c_str(), argv.data(), directory.c_str(), parent, in.read_end(), out.write_end(),
-                       err.write_end(), status.write_end());
+    become_the_program(program.c_str(), argv.data(), envp.data(), directory.c_str(), parent, in.read_end(),
+                       out.write_end(), err.write_end(), status.write_end());
   setpgid(pid_, pid_);  // also done by the child; whichever comes first
 
   close(status.release(1));

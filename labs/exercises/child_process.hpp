@@ -46,10 +46,12 @@ class ChildProcess {
  public:
   using Clock = std::chrono::steady_clock;
 
-  // Starts `program` (an absolute path) with argv = {program, arguments...} in `directory`.
+  // Starts `program` (an absolute path) with argv = {program, arguments...} in `directory`, with
+  // numlab's environment and each "NAME=VALUE" of `environment` set over it.
   // Throws StartError when exec (or chdir) fails in the child, std::system_error when a pipe or
   // fork cannot be made.
-  ChildProcess(const std::string& program, const std::vector<std::string>& arguments, const std::string& directory);
+  ChildProcess(const std::string& program, const std::vector<std::string>& arguments, const std::string& directory,
+               const std::vector<std::string>& environment = {});
   ~ChildProcess();  // stop(0)
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;

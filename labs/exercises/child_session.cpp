@@ -1,6 +1,8 @@
 #include "exercises/child_session.hpp"
 
+#include "exercises/call_watch.hpp"
 #include "exercises/command_line.hpp"
+#include "exercises/forbidden_calls.hpp"
 #include "exercises/descendants.hpp"
 
 #include <sys/prctl.h>
@@ -175,6 +177,9 @@ std::string why_not_a_reply(const nlohmann::json& reply, const std::string& line
   return "";
 }
 
+// Where the watch on forbidden library calls lives in the program's folder (call_watch.hpp).
+std::string watch_folder(const std::string& directory) { return directory + "/.numlab-watch"; }
+
 bool blank(const std::string& line) { return line.find_first_not_of(" \t") == std::string::npos; }
 
 // Sends `text` and reads the next line that is not blank, without its '\r': a tolerant reader
@@ -239,13 +244,16 @@ ChildSession::~ChildSession() {
 
 void ChildSession::start() {
   running_group = 0;
+  collect_calls();
   remove_directory(directory_);
   directory_ = make_temporary_directory();
   process_.reset();
   end_group_on_interrupt();
   remember_running_directory(directory_);
+  const std::vector<std::string> watch = install_call_watch(watch_folder(directory_), forbidden_calls(exercise_));
+  call_log_offset_ = 0;
   process_ = std::make_unique<ChildProcess>(command_[0], std::vector<std::string>(command_.begin() + 1, command_.end()),
-                                            directory_);
+                                            directory_, watch);
   running_group = process_->process_group();
   replied_since_start_ = false;
 }
@@ -279,6 +287,15 @@ void ChildSession::begin_check() {
 }
 
 std::string ChildSession::take_output() { return output_.take(); }
+
+void ChildSession::collect_calls() {
+  if (!directory_.empty()) calls_.add(read_call_log(call_log_path(watch_folder(directory_)), call_log_offset_));
+}
+
+LibraryCalls ChildSession::take_library_calls() {
+  collect_calls();
+  return std::exchange(calls_, LibraryCalls{});
+}
 
 double ChildSession::seconds_per_request() const { return median(seconds_); }
 

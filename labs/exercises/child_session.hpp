@@ -7,9 +7,12 @@
 // object, a wrong id or a reply over 16 MiB is a ChildFailure with a clear message; a program that
 // died in one check is started again at the next. It runs in a fresh temporary directory (removed
 // afterwards) with only the arguments the student gave, and no process of it outlives the session.
+// Python and Octave programs are watched for calls to the library functions the exercise forbids
+// (call_watch.hpp): the watch lives in the folder's .numlab-watch/.
 
 #include <sys/types.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +40,7 @@ class ChildSession : public Session {
   double seconds_per_request() const override;
   void begin_check() override;
   std::string take_output() override;
+  LibraryCalls take_library_calls() override;
 
   // Closes the program's stdin, gives it 1 s to exit, then kills its process group.
   void finish();
@@ -51,6 +55,7 @@ class ChildSession : public Session {
   void stop_now();
   [[noreturn]] void fail(const std::string& message);  // stops the program, throws ChildFailure
   std::string ended_message(long long id);
+  void collect_calls();  // the watch's log read into calls_ (before the folder goes)
 
   std::string exercise_;
   std::vector<std::string> command_;  // resolved: absolute program, absolute file arguments
@@ -62,6 +67,8 @@ class ChildSession : public Session {
   std::vector<double> seconds_;
   bool replied_since_start_ = false;  // the first reply after a start waited for the start-up: not timed
   long long last_id_ = 0;
+  std::uintmax_t call_log_offset_ = 0;  // what of the watch's log was read
+  LibraryCalls calls_;                  // noticed and not yet taken
 };
 
 }  // namespace numlab::exercises

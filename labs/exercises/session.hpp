@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "exercises/library_calls.hpp"
+
 namespace numlab::exercises {
 
 // The program did not give a reply: it crashed, hung past the time limit, printed something that
@@ -48,6 +50,9 @@ class Session {
   virtual std::string take_output() { return ""; }
   // What numlab expects of the reply to the last request (kept only where a check is recorded).
   virtual void expect(Expectation) {}
+  // The forbidden library calls noticed since the last take (call_watch.hpp), taken out of the
+  // session; none where the program is not watched.
+  virtual LibraryCalls take_library_calls() { return {}; }
 };
 
 }  // namespace numlab::exercises
