@@ -51,7 +51,7 @@ class ReplaySession : public Session {
 const std::vector<Check>& checks_of(const Exercise& exercise) {
   static std::map<std::string, std::vector<Check>> batteries;
   auto found = batteries.find(exercise.name);
-  if (found == batteries.end()) found = batteries.emplace(exercise.name, exercise.battery()).first;
+  if (found == batteries.end()) found = batteries.emplace(exercise.name, exercise.battery(Variant())).first;
   return found->second;
 }
 

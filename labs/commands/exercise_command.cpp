@@ -103,7 +103,8 @@ std::string out_dir_problem(const std::string& text) {
 // replays it. A check without a request (one not run) has none.
 std::vector<std::pair<std::string, std::string>> plan_replays(std::vector<exercises::CheckResult>& results,
                                                               const fs::path& out_dir,
-                                                              const std::vector<std::string>& program) {
+                                                              const std::vector<std::string>& program,
+                                                              const exercises::Variant& variant) {
   std::vector<std::pair<std::string, std::string>> files;  // name, contents
   for (std::size_t k = 0; k < results.size(); ++k) {
     auto& result = results[k];
@@ -111,7 +112,7 @@ std::vector<std::pair<std::string, std::string>> plan_replays(std::vector<exerci
     const std::string name = exercises::replay_file_name(static_cast<int>(k) + 1, result.name);
     result.replay = "numlab exercise replay " + shell_word((out_dir / "replay" / name).string()) + " -- " +
                     shell_words(program);
-    files.emplace_back(name, exercises::replay_lines(result));
+    files.emplace_back(name, exercises::replay_lines(result, variant));
   }
   return files;
 }
@@ -158,6 +159,11 @@ ExerciseCommand::ExerciseCommand(CLI::App& app) {
   init_->add_option("DIR", folder_, "The folder for the starter (made if missing; no file in it is overwritten)")
       ->required();
   init_->add_option("--lang,--language", language_, "python (default), cpp or octave");
+  const char* const variant_help =
+      "A variant ID (any non-empty string, e.g. a student number): every random matrix, right-hand side, start and "
+      "crank angle of the checks is drawn from it; the same ID gives the same requests";
+  variant_options_.push_back(init_->add_option("--variant", variant_, std::string(variant_help) +
+                                                                          "; TASK.md names it and its check command"));
   check_ = command_->add_subcommand("check", "Run COMMAND as a child process and check its replies");
   check_->add_option("NAME", name_, "The exercise")->required();
   check_->add_option_function<std::string>(
@@ -175,6 +181,8 @@ ExerciseCommand::ExerciseCommand(CLI::App& app) {
       ->check(CLI::Validator(out_dir_problem, "DIR"));
   check_->add_option("--timeout", timeout_seconds_, "Seconds allowed per request (default 10)")
       ->check(CLI::Validator(timeout_problem, "S"));
+  variant_options_.push_back(check_->add_option(
+      "--variant", variant_, std::string(variant_help) + "; the reports and results.json name it"));
   check_->add_option("COMMAND", program_, "The student's program and its arguments, after --")->required();
   replay_ = command_->add_subcommand(
       "replay", "Send a failing check's requests (FILE, from check --out) to COMMAND again; show each reply beside "
@@ -196,6 +204,18 @@ int ExerciseCommand::run() const {
       "exercise: say what to do: list, show NAME, init NAME DIR, check NAME -- COMMAND or replay FILE -- COMMAND");
 }
 
+exercises::Variant ExerciseCommand::variant() const {
+  for (const CLI::Option* option : variant_options_) {
+    if (option->count() > 0) {
+      if (const std::string problem = exercises::variant_id_problem(variant_); !problem.empty()) {
+        throw std::invalid_argument("exercise: --variant: " + problem);
+      }
+      return exercises::Variant(variant_);
+    }
+  }
+  return {};
+}
+
 int ExerciseCommand::list() const {
   for (const auto& exercise : exercises::all_exercises()) {
     std::cout << fmt::format("{:<18} {}\n", exercise.name, exercise.summary);
@@ -212,7 +232,7 @@ int ExerciseCommand::init() const {
   // 1. Everything checked before anything is written.
   const auto& exercise = exercises::find_exercise(name_);
   const auto language = exercises::parse_language(language_);
-  const auto files = exercises::starter_files(exercise, language);
+  const auto files = exercises::starter_files(exercise, language, variant());
   // 2. The files, whole or not at all.
   write_starter(folder_, files);
   const std::string folder = without_trailing_slashes(folder_).string();
@@ -226,6 +246,7 @@ int ExerciseCommand::init() const {
 int ExerciseCommand::check() const {
   // 1. Everything the user gave, checked before the program is started.
   const auto& exercise = exercises::find_exercise(name_);
+  const exercises::Variant variant = this->variant();
   std::vector<PlannedFile> outputs;
   const bool out = !out_dir_.empty();
   if (out) {
@@ -237,20 +258,20 @@ int ExerciseCommand::check() const {
   // 2. The program, started in its sandbox (a command that cannot start is bad input).
   exercises::ChildSession session(exercise.name, program_, timeout_seconds_);
   // 3. The battery.
-  auto results = exercises::run_checks(exercise, session);
+  auto results = exercises::run_checks(exercise, session, variant);
   session.finish();
   // 4. The verdicts: on stdout, and as files with --out (with a replay file per failing check).
-  const auto replays = out ? plan_replays(results, out_dir_, program_)
+  const auto replays = out ? plan_replays(results, out_dir_, program_, variant)
                            : std::vector<std::pair<std::string, std::string>>{};
-  const auto json = exercises::results_json(results);
+  const auto json = exercises::results_json(results, "", variant);
   if (json_) {
     std::cout << json.dump(2) << '\n';
   } else {
-    std::cout << exercises::results_text(exercise, results);
+    std::cout << exercises::results_text(exercise, results, variant);
   }
   if (out) {
     ensure_directory(out_dir_);
-    write_file_atomically(outputs[0].path, exercises::results_html(exercise, results, shell_words(program_)));
+    write_file_atomically(outputs[0].path, exercises::results_html(exercise, results, shell_words(program_), variant));
     write_file_atomically(outputs[1].path, json.dump(2) + "\n");
     write_replays(out_dir_, replays);
   }
@@ -261,7 +282,7 @@ int ExerciseCommand::replay() const {
   // 1. The file, its exercise and its check, before the program is started.
   const exercises::ReplayFile file = exercises::read_replay_file(replay_file_);
   const auto& exercise = exercises::find_exercise(file.exercise);
-  const exercises::Check check = exercises::find_check(exercise, file.check);
+  const exercises::Check check = exercises::find_check(exercise, file.check, file.variant);
   // 2. The same check, through the same sandbox as `exercise check`.
   exercises::ChildSession session(exercise.name, program_, timeout_seconds_);
   const exercises::CheckResult result = exercises::run_check(exercise, check, session);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "commands/common_options.hpp"
+#include "exercises/variant.hpp"
 
 namespace numlab::cli {
 
@@ -22,6 +23,9 @@ class ExerciseCommand {
   int init() const;
   int check() const;
   int replay() const;
+  // --variant ID as given (std::invalid_argument for an empty ID or one with control characters),
+  // or no variant.
+  exercises::Variant variant() const;
 
   CLI::App* command_;
   CLI::App* list_;
@@ -35,6 +39,8 @@ class ExerciseCommand {
   double timeout_seconds_ = 10.0;
   std::vector<std::string> program_;
   std::string replay_file_;
+  std::string variant_;        // init/check --variant ID (variant.hpp)
+  std::vector<CLI::Option*> variant_options_;  // --variant of init and check: given or not
   bool json_ = false;          // check --format json
   std::string out_dir_;        // check --out DIR ("" when not given)
 };

@@ -57,6 +57,13 @@ ExerciseGradeCommand::ExerciseGradeCommand(CLI::App& exercise) {
                        "build.log for C++); refused when it holds a gradebook.csv or a student's folder already")
       ->required()
       ->check(CLI::Validator(folder_problem, "OUT"));
+  variant_option_ = command_->add_option(
+      "--variant", variant_,
+      "Every student gets this variant ID (the random inputs of the checks drawn from it; gradebook.csv's variant "
+      "column names it)");
+  command_->add_flag("--variant-from-folder", variant_from_folder_,
+                     "Each student's sub-folder name is their variant ID, as `exercise init --variant NAME` gave them "
+                     "(not with --variant)");
   command_->add_option("--jobs", jobs_, "Submissions graded at once (default: the number of cores)")
       ->check(CLI::Range(1, 1024));
   command_->add_option("--timeout", timeout_seconds_, "Seconds allowed per request (default 10)")
@@ -76,20 +83,24 @@ int ExerciseGradeCommand::run() const { return worker_folder_.empty() ? grade_cl
 int ExerciseGradeCommand::grade_one() const {
   const auto& exercise = exercises::find_exercise(name_);
   exercises::GradedSubmission graded;
+  const exercises::Variant variant =
+      variant_option_->count() > 0 ? exercises::Variant(variant_) : exercises::Variant();
   try {
     graded = exercises::grade_submission(exercise, worker_student_, worker_folder_,
-                                         (fs::path(out_dir_) / "build").string(), timeout_seconds_, build_seconds_);
-    const auto json = graded.checked ? exercises::results_json(graded.results)
-                                     : exercises::results_json({}, graded.row.diagnosis);
+                                         (fs::path(out_dir_) / "build").string(), timeout_seconds_, build_seconds_,
+                                         variant);
+    const auto json = graded.checked ? exercises::results_json(graded.results, "", variant)
+                                     : exercises::results_json({}, graded.row.diagnosis, variant);
     write_file_atomically((fs::path(out_dir_) / "results.json").string(), json.dump(2) + "\n");
     write_file_atomically((fs::path(out_dir_) / "report.html").string(),
                           exercises::results_html(exercise, graded.results,
-                                                  graded.checked ? graded.command : graded.row.diagnosis));
+                                                  graded.checked ? graded.command : graded.row.diagnosis, variant));
     if (!graded.build_log.empty())
       write_file_atomically((fs::path(out_dir_) / "build.log").string(), graded.build_log);
   } catch (const std::exception& error) {
     graded.row.student = worker_student_;
     graded.row.exercise = exercise.name;
+    graded.row.variant = variant.id().value_or("");
     graded.row.passed = 0;
     graded.row.diagnosis = fmt::format("not graded: {}", error.what());
   }
@@ -103,6 +114,14 @@ int ExerciseGradeCommand::grade_class() const {
   // 1. Everything checked before any submission is run; nothing in OUT overwritten.
   const auto& exercise = exercises::find_exercise(name_);
   if (submissions_.empty()) throw std::invalid_argument("exercise grade: --submissions DIR is required");
+  if (variant_from_folder_ && variant_option_->count() > 0) {
+    throw std::invalid_argument("exercise grade: --variant ID and --variant-from-folder exclude each other (one "
+                                "variant for all, or each student's folder name)");
+  }
+  if (variant_option_->count() > 0) {
+    if (const std::string problem = exercises::variant_id_problem(variant_); !problem.empty())
+      throw std::invalid_argument("exercise grade: --variant: " + problem);
+  }
   std::error_code error;
   if (!fs::is_directory(submissions_, error))
     throw std::invalid_argument(fmt::format("exercise grade: --submissions '{}' is not a folder", submissions_));
@@ -118,6 +137,14 @@ int ExerciseGradeCommand::grade_class() const {
       throw std::invalid_argument(
           fmt::format("exercise grade: '{}' exists already (nothing was written)", (out / student).string()));
   }
+  if (variant_from_folder_) {
+    for (const std::string& student : students) {
+      if (!exercises::variant_id_problem(student).empty())
+        throw std::invalid_argument(fmt::format("exercise grade: --variant-from-folder: the folder name '{}' holds "
+                                                "control characters; it cannot be a variant ID",
+                                                printable(student)));
+    }
+  }
   if (fs::equivalent(out, submissions_, error))
     throw std::invalid_argument("exercise grade: --out must not be the --submissions folder");
   ensure_directory(out_dir_);
@@ -131,13 +158,17 @@ int ExerciseGradeCommand::grade_class() const {
                        (fs::absolute(submissions_) / student).string(), "--student", student, "--out",
                        (fs::absolute(out) / student).string(), "--timeout", fmt::format("{}", timeout_seconds_),
                        "--build-timeout", fmt::format("{}", build_seconds_)});
+    if (variant_from_folder_ || variant_option_->count() > 0) {
+      workers.back().push_back("--variant");
+      workers.back().push_back(variant_from_folder_ ? student : variant_);
+    }
   }
   const int jobs = jobs_ > 0 ? jobs_ : default_jobs();
   const auto outputs = exercises::run_workers(workers, jobs);
 
   // 3. The gradebook, in name order.
   std::vector<exercises::GradeRow> rows;
-  const int total = static_cast<int>(exercise.battery().size());
+  const int total = static_cast<int>(exercise.battery(exercises::Variant()).size());
   int all_pass = 0;
   for (std::size_t k = 0; k < students.size(); ++k) {
     exercises::GradeRow row;
@@ -146,6 +177,7 @@ int ExerciseGradeCommand::grade_class() const {
     } catch (const std::exception& failure) {
       row.student = students[k];
       row.exercise = exercise.name;
+      row.variant = variant_from_folder_ ? students[k] : variant_option_->count() > 0 ? variant_ : "";
       row.total = total;
       row.seconds = outputs[k].seconds;
       row.diagnosis = fmt::format("not graded: the grading process {} ({})",

@@ -88,11 +88,11 @@ CheckResult run_one(const std::string& exercise, const Check& check, Session& in
 
 }  // namespace
 
-std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session) {
+std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session, const Variant& variant) {
   std::vector<CheckResult> results;
   int failures_in_a_row = 0;
   CallRule call_rule(exercise.name);  // forbidden library calls (call_rule.hpp)
-  for (const Check& check : exercise.battery()) {
+  for (const Check& check : exercise.battery(variant)) {
     if (failures_in_a_row >= max_failures_in_a_row) {
       results.push_back({check.name, check.task_id, CheckStatus::error,
                          fmt::format("not run: the program gave no reply in the {} checks before", failures_in_a_row),

@@ -49,7 +49,8 @@ std::string explanation(const CheckResult& result);
 // says so (a program that hangs on every request costs at most this many time limits).
 inline constexpr int max_failures_in_a_row = 3;
 
-std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session);
+// The battery of `variant` (variant.hpp; without one, the checks as they always were).
+std::vector<CheckResult> run_checks(const Exercise& exercise, Session& session, const Variant& variant = Variant());
 
 // One check of `exercise` alone (what `exercise replay` runs), its requests recorded.
 CheckResult run_check(const Exercise& exercise, const Check& check, Session& session);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "exercises/diagnosis.hpp"
+#include "exercises/variant.hpp"
 
 namespace numlab::exercises {
 
@@ -76,7 +77,12 @@ struct Exercise {
   // An exercise's task is the file tasks/NAME.md, embedded at build time (task_texts.hpp).
   std::string task;
   Stubs stubs;
-  std::function<std::vector<Check>()> battery;
+  // The checks; every random input drawn from `variant` (variant.hpp: without an ID, the same requests
+  // as always).
+  std::function<std::vector<Check>(const Variant&)> battery;
+  // What `check` and `grade` need beyond NAME, in the starter's check command: {"--model", "four-bar"}
+  // for the linkage exercise (linkage_exercise.hpp); empty for the others.
+  std::vector<std::string> arguments{};
 };
 
 // Every exercise, in the order `exercise list` shows them.

@@ -3,6 +3,7 @@
 // sweep count and the trace, sweep by sweep) and GSL LU or Eigen's QR least squares (x).
 
 #include <Eigen/Core>
+#include <cmath>
 #include <Eigen/QR>
 #include <fmt/format.h>
 #include <optional>
@@ -352,18 +353,44 @@ Verdict converged_claims_hold(Session& session, const std::vector<Problem>& prob
   return Verdict::pass(times.medians());
 }
 
-Eigen::MatrixXd overdetermined() { return linalg::random_matrix(8, 21).leftCols(3); }
+Eigen::MatrixXd overdetermined(unsigned seed) { return linalg::random_matrix(8, seed).leftCols(3); }
 
-std::vector<Check> gauss_seidel_battery() {
-  const Eigen::MatrixXd dominant = linalg::diagonally_dominant_matrix(10, 3);
+// Whether numlab's Gauss-Seidel converges on `p` within half its max_iterations (a variant's matrix
+// stays one the check's "converges" holds for, with room to spare).
+bool converges_with_room(const Problem& p) {
+  linear::ReferenceTimes unused;
+  const Reference reference = reference_for(p, unused);
+  return reference.status == Status::converged && 2 * reference.sweeps <= p.max_iterations;
+}
+
+// A random matrix's seed in a label, with a variant (its base seed without one is the label as always).
+std::string seeded(const Variant& variant, const std::string& label, const std::string& generator, unsigned seed) {
+  return variant.active() ? fmt::format("{} ({} seed {})", label, generator, seed) : label;
+}
+
+// Every random matrix (and the start above the solution) from the variant; a variant's matrices are
+// re-drawn until numlab's stepper converges with room to spare where the check says it converges.
+std::vector<Check> gauss_seidel_battery(const Variant& variant) {
+  const unsigned dominant_seed = variant.seed(3);
+  const Eigen::MatrixXd dominant = linalg::diagonally_dominant_matrix(10, dominant_seed);
   const Eigen::MatrixXd diverging = linalg::gauss_seidel_divergence_example();
-  const Problem plain = problem("diagonally dominant 10x10, plain", dominant, false, 1e-10, 200);
-  const Problem from_above = problem("diagonally dominant 10x10, plain, x0 = 10 (above the solution)", dominant, false,
-                                     1e-9, 200, 10.0);
+  const std::string dominant_label = seeded(variant, "diagonally dominant 10x10", "diagonally_dominant_matrix", dominant_seed);
+  const Problem plain = problem(dominant_label + ", plain", dominant, false, 1e-10, 200);
+  const double above = variant.active() ? std::round(variant.stream(10).uniform(5.0, 20.0) * 100.0) / 100.0 : 10.0;
+  const Problem from_above = problem(fmt::format("{}, plain, x0 = {:g} (above the solution)", dominant_label, above),
+                                     dominant, false, 1e-9, 200, above);
   const Problem normal_diverging = problem("[[1,2,4],[2,1,2],[4,2,1]], normal equations", diverging, true, 1e-10, 2000);
+  const unsigned random_seed = variant.seed_where(8, [](unsigned s) {
+    return converges_with_room(problem("", linalg::random_matrix(4, s), true, 1e-10, 5000));
+  });
   const Problem normal_random =
-      problem("random 4x4 (not symmetric), normal equations", linalg::random_matrix(4, 8), true, 1e-10, 5000);
-  const Problem normal_tall = problem("random 8x3 least squares, normal equations", overdetermined(), true, 1e-10, 500);
+      problem(seeded(variant, "random 4x4 (not symmetric), normal equations", "random_matrix", random_seed),
+              linalg::random_matrix(4, random_seed), true, 1e-10, 5000);
+  const unsigned tall_seed = variant.seed_where(
+      21, [](unsigned s) { return converges_with_room(problem("", overdetermined(s), true, 1e-10, 500)); });
+  const Problem normal_tall = problem(seeded(variant, "random 8x3 least squares, normal equations",
+                                             "first 3 columns of random_matrix(8)", tall_seed),
+                                      overdetermined(tall_seed), true, 1e-10, 500);
   const Problem plain_diverging = problem("[[1,2,4],[2,1,2],[4,2,1]], plain", diverging, false, 1e-9, 100);
   const Problem capped = problem("Hilbert 6x6, normal equations, max_iterations = 25", linalg::hilbert_matrix(6), true,
                                  1e-12, 25);

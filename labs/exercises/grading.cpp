@@ -139,12 +139,14 @@ std::optional<Language> detect_language(const std::string& folder) {
 }
 
 GradedSubmission grade_submission(const Exercise& exercise, const std::string& student, const std::string& folder,
-                                  const std::string& build_folder, double timeout_seconds, double build_seconds) {
+                                  const std::string& build_folder, double timeout_seconds, double build_seconds,
+                                  const Variant& variant) {
   const Clock::time_point start = Clock::now();
   GradedSubmission graded;
   graded.row.student = student;
   graded.row.exercise = exercise.name;
-  graded.row.total = static_cast<int>(exercise.battery().size());
+  graded.row.variant = variant.id().value_or("");
+  graded.row.total = static_cast<int>(exercise.battery(variant).size());
   // Processes the program or the build leave come here (as for `exercise check`), and a write to
   // a program that died is EPIPE, not the end of the worker.
   std::signal(SIGPIPE, SIG_IGN);
@@ -171,7 +173,7 @@ GradedSubmission grade_submission(const Exercise& exercise, const std::string& s
   if (!command.empty()) {
     try {
       ChildSession session(exercise.name, command, timeout_seconds);
-      graded.results = run_checks(exercise, session);
+      graded.results = run_checks(exercise, session, variant);
       session.finish();
       graded.checked = true;
     } catch (const std::exception& error) {

@@ -27,7 +27,7 @@ namespace numlab::exercises {
 struct GradeRow {
   std::string student;
   std::string exercise;
-  std::string variant;  // empty: variants do not exist yet
+  std::string variant;  // the variant's ID (--variant, or the folder's name with --variant-from-folder); "" for none
   int passed = 0;
   int total = 0;
   std::string diagnosis;  // the run's diagnosis, else the first failing check's hint or message; or why nothing ran
@@ -49,8 +49,10 @@ struct GradedSubmission {
   bool checked = false;   // the checks ran
   std::string build_log;  // C++: the build's commands and their stderr (64 KiB each at most)
 };
+// The battery is the one of `variant` (variant.hpp), and the row names it.
 GradedSubmission grade_submission(const Exercise& exercise, const std::string& student, const std::string& folder,
-                                  const std::string& build_folder, double timeout_seconds, double build_seconds);
+                                  const std::string& build_folder, double timeout_seconds, double build_seconds,
+                                  const Variant& variant = Variant());
 
 // The worker's one line on stdout, and back.
 std::string row_to_json_line(const GradeRow& row);

@@ -2,6 +2,7 @@
 // form (with its scaling and its singular test) and GSL LU's inverse (one solve per column).
 
 #include <Eigen/Core>
+#include <cmath>
 #include <fmt/format.h>
 #include <optional>
 
@@ -141,14 +142,62 @@ Verdict reports_singular(Session& session, const std::vector<Case>& cases) {
   return Verdict::pass(times.medians());
 }
 
-std::vector<Check> inverse2x2_battery() {
+// A variant's well-conditioned 2x2 matrix: entries in [-9.9, 9.9] with one decimal, kappa_2 <= 50.
+Case drawn_matrix(Variant::Stream& stream) {
+  for (;;) {
+    double e[4];
+    for (double& entry : e) entry = std::round(stream.uniform(-99.0, 99.0)) / 10.0;
+    const Case item = matrix(fmt::format("[[{:g}, {:g}], [{:g}, {:g}]]", e[0], e[1], e[2], e[3]), e[0], e[1], e[2], e[3]);
+    if (item.A.determinant() != 0.0 && linalg::inverse2x2(item.A).condition_number <= 50.0) return item;
+  }
+}
+
+// A variant's exactly singular 2x2 matrix: [[a, b], [k a, k b]] with small whole numbers (det is 0
+// exactly in doubles).
+Case drawn_singular(Variant::Stream& stream) {
+  const auto whole = [&stream](double low, double high) { return std::floor(stream.uniform(low, high + 1.0)); };
+  const double a = whole(1, 9), b = whole(-9, 9), k = whole(2, 5) * (stream.uniform(0, 1) < 0.5 ? -1.0 : 1.0);
+  return matrix(fmt::format("[[{:g}, {:g}], [{:g}, {:g}]]", a, b, k * a, k * b), a, b, k * a, k * b);
+}
+
+std::vector<Case> well_conditioned(const Variant& variant) {
+  if (!variant.active()) {
+    return {matrix("[[4, 7], [2, 6]]", 4, 7, 2, 6), matrix("[[0, 1], [1, 0]]", 0, 1, 1, 0),
+            matrix("[[-3, 5], [2, -1]]", -3, 5, 2, -1), matrix("[[0.3, -1.7], [2.5, 0.9]]", 0.3, -1.7, 2.5, 0.9)};
+  }
+  Variant::Stream stream = variant.stream(1);
+  std::vector<Case> cases;
+  for (int k = 0; k < 4; ++k) cases.push_back(drawn_matrix(stream));
+  return cases;
+}
+
+std::vector<Case> exactly_singular(const Variant& variant) {
+  if (!variant.active()) return {matrix("[[1, 2], [2, 4]]", 1, 2, 2, 4), matrix("[[0, 0], [0, 0]]", 0, 0, 0, 0)};
+  Variant::Stream stream = variant.stream(3);
+  return {drawn_singular(stream), matrix("[[0, 0], [0, 0]]", 0, 0, 0, 0)};
+}
+
+// 1e-170 M and 1e170 M: M = [[4, 7], [2, 6]], or a variant's well-conditioned matrix.
+std::vector<Case> scaled(const Variant& variant) {
+  if (!variant.active()) {
+    return {matrix("1e-170 [[4, 7], [2, 6]]", 4e-170, 7e-170, 2e-170, 6e-170),
+            matrix("1e170 [[4, 7], [2, 6]]", 4e170, 7e170, 2e170, 6e170)};
+  }
+  Variant::Stream stream = variant.stream(5);
+  const Case m = drawn_matrix(stream);
+  std::vector<Case> cases;
+  for (const double s : {1e-170, 1e170}) {
+    cases.push_back({fmt::format("{:g} {}", s, m.label), (m.A * s).eval()});
+  }
+  return cases;
+}
+
+// With a variant, the well-conditioned, the exactly singular and the scaled matrices are drawn from
+// it; the hand-made edge cases (badly scaled, singular to working precision) are the same for all.
+std::vector<Check> inverse2x2_battery(const Variant& variant) {
   return {
       {"the inverse of well-conditioned 2x2 matrices matches the closed form and GSL LU to 10*kappa*eps", 1,
-       [](Session& s) {
-         return inverts_accurately(s, {matrix("[[4, 7], [2, 6]]", 4, 7, 2, 6), matrix("[[0, 1], [1, 0]]", 0, 1, 1, 0),
-                                       matrix("[[-3, 5], [2, -1]]", -3, 5, 2, -1),
-                                       matrix("[[0.3, -1.7], [2.5, 0.9]]", 0.3, -1.7, 2.5, 0.9)});
-       }},
+       [cases = well_conditioned(variant)](Session& s) { return inverts_accurately(s, cases); }},
       {"the inverse of badly scaled and nearly singular 2x2 matrices is accurate to 10*kappa*eps", 1,
        [](Session& s) {
          return inverts_accurately(s, {matrix("[[1e-8, 1], [1, 1]]", 1e-8, 1, 1, 1),
@@ -156,19 +205,17 @@ std::vector<Check> inverse2x2_battery() {
                                        matrix("[[1, 2], [0.5, 1 + 2^-40]] (kappa ~ 7e12)", 1, 2, 0.5,
                                               1 + 0x1p-40)});
        }},
-      {"exactly singular 2x2 matrices ([[1, 2], [2, 4]], [[0, 0], [0, 0]]) are reported as singular", 2,
-       [](Session& s) {
-         return reports_singular(s, {matrix("[[1, 2], [2, 4]]", 1, 2, 2, 4), matrix("[[0, 0], [0, 0]]", 0, 0, 0, 0)});
-       }},
+      {variant.active() ? "exactly singular 2x2 matrices (one row a multiple of the other; [[0, 0], [0, 0]]) are "
+                          "reported as singular"
+                        : "exactly singular 2x2 matrices ([[1, 2], [2, 4]], [[0, 0], [0, 0]]) are reported as singular",
+       2,
+       [cases = exactly_singular(variant)](Session& s) { return reports_singular(s, cases); }},
       {"a 2x2 matrix singular to working precision (|det A| <= eps*||A||_F^2) is reported as singular", 2,
        [](Session& s) {
          return reports_singular(s, {matrix("[[1, 2], [0.5, 1 + 2^-51]]", 1, 2, 0.5, 1 + 0x1p-51)});
        }},
       {"the inverse of a 2x2 matrix scaled by 1e-170 or 1e170 is accurate (a d under/overflows unless A is scaled)",
-       3, [](Session& s) {
-         return inverts_accurately(s, {matrix("1e-170 [[4, 7], [2, 6]]", 4e-170, 7e-170, 2e-170, 6e-170),
-                                       matrix("1e170 [[4, 7], [2, 6]]", 4e170, 7e170, 2e170, 6e170)});
-       }},
+       3, [cases = scaled(variant)](Session& s) { return inverts_accurately(s, cases); }},
   };
 }
 

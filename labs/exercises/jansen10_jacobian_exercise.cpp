@@ -68,14 +68,26 @@ struct Pose {
 
 // The model's start (seed 000's estimates read through their joints), four solved poses around
 // the cycle, and two poses away from any root (where f is large, so every term of every row counts).
-std::vector<Pose> poses() {
+// With a variant, the four solved poses' crank angles are drawn from it, one in each quarter turn,
+// and so are the two poses away from any root (their crank angles and offsets).
+std::vector<Pose> poses(const Variant& variant) {
   std::vector<Pose> list = {
       {mechanisms::JansenClosure::seed_crank_angle, mechanisms::jansen_seed_estimates(JansenModel::ten_equations, mechanisms::JansenLeg())}};
-  for (double deg : {0.0, 90.0, 200.0, 300.0}) list.push_back({deg * degrees, jansen10_closed_form_angles(deg * degrees)});
+  Variant::Stream stream = variant.stream(1);
+  for (double deg : {0.0, 90.0, 200.0, 300.0}) {
+    if (variant.active()) deg = std::floor(deg / 90.0) * 90.0 + stream.uniform(0.0, 90.0);
+    list.push_back({deg * degrees, jansen10_closed_form_angles(deg * degrees)});
+  }
   Jansen10Closure::Vector offset;
   offset << 0.3, -0.2, 0.5, -0.4, 0.25, -0.35, 0.45, -0.15, 0.2, -0.3;
-  list.push_back({1.0, jansen10_closed_form_angles(1.0) + offset});
-  list.push_back({4.0, jansen10_closed_form_angles(4.0) - 2.0 * offset});
+  double first = 1.0, second = 4.0;
+  if (variant.active()) {
+    for (int k = 0; k < 10; ++k) offset(k) = stream.uniform(-0.5, 0.5);
+    first = stream.uniform(0.0, 3.0);
+    second = stream.uniform(3.2, 6.2);
+  }
+  list.push_back({first, jansen10_closed_form_angles(first) + offset});
+  list.push_back({second, jansen10_closed_form_angles(second) - 2.0 * offset});
   return list;
 }
 
@@ -110,9 +122,8 @@ std::string f_hint() {
          "(sines), each loop's vectors with the signs of its direction";
 }
 
-Verdict check_f(Session& session) {
+Verdict check_f(Session& session, const std::vector<Pose>& list) {
   const double tolerance = 1e3 * eps * links_sum();  // far above rounding, far below any wrong term
-  const auto list = poses();
   for (const Pose& pose : list) {
     const nlohmann::json reply = session.ask(request_for(pose));
     Jansen10Closure::Vector expected;
@@ -189,8 +200,7 @@ std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, 
          "length l of that angle's link";
 }
 
-Verdict check_J(Session& session) {
-  const auto list = poses();
+Verdict check_J(Session& session, const std::vector<Pose>& list) {
   for (const Pose& pose : list) {
     const nlohmann::json reply = session.ask(request_for(pose));
     const Jansen10Closure closure(pose.crank_angle);
@@ -230,13 +240,14 @@ Exercise jansen10_jacobian_exercise() {
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: f and J of the 10-equation Jansen closure\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: f and J of the 10-equation Jansen closure\");\n";
   exercise.stubs.octave = "  error('not implemented: f and J of the 10-equation Jansen closure');\n";
-  exercise.battery = [] {
+  exercise.battery = [](const Variant& variant) {
+    const std::vector<Pose> list = poses(variant);
     return std::vector<Check>{
         {"f follows seed 001's closure equations f1-f10 (its eqs 8-17) at 7 poses, to rounding (1e3 eps of the "
          "links' sum)",
-         1, check_f},
+         1, [list](Session& session) { return check_f(session, list); }},
         {"J is the derivative of f: every entry matches numlab's analytic Jacobian of the 10 equations at 7 poses", 2,
-         check_J},
+         [list](Session& session) { return check_J(session, list); }},
     };
   };
   return exercise;

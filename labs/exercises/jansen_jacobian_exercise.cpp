@@ -31,13 +31,25 @@ struct Pose {
 
 // Seed 000's start, four solved poses around the cycle, and two poses away from any root (where
 // f is large, so every term of every row counts).
-std::vector<Pose> poses() {
+// With a variant, the four solved poses' crank angles are drawn from it, one in each quarter turn,
+// and so are the two poses away from any root (their crank angles and offsets).
+std::vector<Pose> poses(const Variant& variant) {
   std::vector<Pose> list = {{JansenClosure::seed_crank_angle, JansenClosure::seed_estimates()}};
-  for (double deg : {0.0, 90.0, 200.0, 300.0}) list.push_back({deg * degrees, jansen_closed_form_angles(deg * degrees)});
+  Variant::Stream stream = variant.stream(1);
+  for (double deg : {0.0, 90.0, 200.0, 300.0}) {
+    if (variant.active()) deg = std::floor(deg / 90.0) * 90.0 + stream.uniform(0.0, 90.0);
+    list.push_back({deg * degrees, jansen_closed_form_angles(deg * degrees)});
+  }
   JansenAngles offset;
   offset << 0.3, -0.2, 0.5, -0.4, 0.25, -0.35, 0.45, -0.15;
-  list.push_back({1.0, jansen_closed_form_angles(1.0) + offset});
-  list.push_back({4.0, jansen_closed_form_angles(4.0) - 2.0 * offset});
+  double first = 1.0, second = 4.0;
+  if (variant.active()) {
+    for (int k = 0; k < 8; ++k) offset(k) = stream.uniform(-0.5, 0.5);
+    first = stream.uniform(0.0, 3.0);
+    second = stream.uniform(3.2, 6.2);
+  }
+  list.push_back({first, jansen_closed_form_angles(first) + offset});
+  list.push_back({second, jansen_closed_form_angles(second) - 2.0 * offset});
   return list;
 }
 
@@ -73,9 +85,8 @@ std::string f_hint() {
   return "compare the row with the task's equation: even rows are y components (sines), odd rows x components (cosines)";
 }
 
-Verdict check_f(Session& session) {
+Verdict check_f(Session& session, const std::vector<Pose>& list) {
   const double tolerance = f_tolerance();
-  const auto list = poses();
   for (const Pose& pose : list) {
     const nlohmann::json reply = session.ask(request_for(pose));
     JansenClosure::Vector expected;
@@ -117,8 +128,7 @@ std::vector<ColumnLink> column_links() {
   return {{"l1", L.l1}, {"l2", L.l2}, {"l3", L.l3}, {"l4", L.l4}, {"l5", L.l5}, {"l6", L.l6}, {"l7", L.l7}, {"l8", L.l8}};
 }
 
-Verdict check_J(Session& session) {
-  const auto list = poses();
+Verdict check_J(Session& session, const std::vector<Pose>& list) {
   for (const Pose& pose : list) {
     const nlohmann::json reply = session.ask(request_for(pose));
     JansenClosure::Matrix expected;
@@ -157,12 +167,13 @@ Exercise jansen_jacobian_exercise() {
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: f and J of the Jansen closure\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: f and J of the Jansen closure\");\n";
   exercise.stubs.octave = "  error('not implemented: f and J of the Jansen closure');\n";
-  exercise.battery = [] {
+  exercise.battery = [](const Variant& variant) {
+    const std::vector<Pose> list = poses(variant);
     return std::vector<Check>{
-        {"f follows seed 000's closure equations (1)-(8) at 7 poses, to rounding (1e3 eps of the links' sum)", 1, check_f},
+        {"f follows seed 000's closure equations (1)-(8) at 7 poses, to rounding (1e3 eps of the links' sum)", 1, [list](Session& session) { return check_f(session, list); }},
         {"J is the derivative of f: every entry matches numlab's analytic Jacobian (checked by central differences) at "
          "7 poses",
-         2, check_J},
+         2, [list](Session& session) { return check_J(session, list); }},
     };
   };
   return exercise;

@@ -2,6 +2,8 @@
 // closed form over a whole crank cycle, the residual test, and numlab's Newton trace.
 
 #include <fmt/format.h>
+#include <optional>
+#include <utility>
 
 #include "exercises/exercise_list.hpp"
 #include "exercises/jansen_poses.hpp"
@@ -31,36 +33,62 @@ Request from_behind(double deg, double back_deg, double tolerance, int max_itera
   return {deg * degrees, jansen_closed_form_angles((deg - back_deg) * degrees), tolerance, max_iterations};
 }
 
-Verdict whole_cycle(Session& session) {
+// With a variant, every crank angle below is moved by an amount drawn from it (the whole cycle by
+// one phase and its starts by another step back); the Jansen leg assembles at every crank angle.
+// `shift(spread)`: 0 without a variant, else uniform in [-spread, spread) degrees.
+struct Shifts {
+  const Variant& variant;
+  Variant::Stream stream;
+  Shifts(const Variant& v, unsigned base) : variant(v), stream(v.stream(base)) {}
+  double operator()(double spread) { return variant.active() ? stream.uniform(-spread, spread) : 0.0; }
+};
+
+// Every 10 degrees of the cycle (from a phase in [0, 10) with a variant), each from 10 degrees back
+// (6 ... 14 with a variant).
+std::pair<std::vector<Request>, std::vector<Battery::Vector>> cycle_requests(const Variant& variant) {
+  Shifts shift(variant, 1);
+  const double phase = variant.active() ? 5.0 + shift(5.0) : 0.0, back = 10.0 + shift(4.0);
   std::vector<Request> requests;
   std::vector<Battery::Vector> exact;
-  for (int deg = 0; deg < 360; deg += 10) {
-    requests.push_back(from_behind(deg, 10.0, 1e-10, 20));
+  for (int step = 0; step < 36; ++step) {
+    const double deg = variant.active() ? phase + 10.0 * step : static_cast<double>(10 * step);
+    requests.push_back(from_behind(deg, back, 1e-10, 20));
     exact.push_back(jansen_closed_form_angles(deg * degrees));
   }
-  return Battery::converges_to(session, requests, exact);
+  return {requests, exact};
 }
 
-Verdict honest_status(Session& session) {
-  std::vector<Request> requests;
-  // Too few iterations from far away: the honest status is max_iterations.
-  for (double deg : {20.0, 110.0, 200.0, 290.0}) requests.push_back(from_behind(deg, 40.0, 1e-12, 2));
-  // A start where every component of f is -0.5: a signed stop test (f_i < tol) passes there.
-  const double deg = 60.0;
+// A start where every component of f is -0.5 at crank `deg`, if numlab's damped Newton finds one.
+std::optional<Request> cancelling_start(double deg) {
   const mechanisms::JansenClosure closure(deg * degrees);
   const auto start = start_with_residual(closure, jansen_closed_form_angles(deg * degrees),
                                          mechanisms::JansenClosure::Vector::Constant(-0.5));
-  requests.push_back({deg * degrees, start, 1e-9, 20});
-  // The seed's tolerances: 1e-5 (seed 000) and 1e-9 (seed 001).
-  requests.push_back(from_behind(150.0, 10.0, 1e-5, 10));
-  requests.push_back(from_behind(250.0, 10.0, 1e-9, 20));
-  return Battery::honest(session, requests);
+  mechanisms::JansenClosure::Vector f;
+  closure.residual(start, f);
+  if ((f.array() + 0.5).abs().maxCoeff() > 1e-9) return std::nullopt;
+  return Request{deg * degrees, start, 1e-9, 20};
 }
 
-Verdict trace(Session& session) {
+std::vector<Request> honest_requests(const Variant& variant) {
+  Shifts shift(variant, 2);
   std::vector<Request> requests;
-  for (double deg : {30.0, 150.0, 240.0, 330.0}) requests.push_back(from_behind(deg, 20.0, 1e-10, 20));
-  return Battery::trace_matches(session, requests);
+  // Too few iterations from far away: the honest status is max_iterations.
+  for (double deg : {20.0, 110.0, 200.0, 290.0}) requests.push_back(from_behind(deg + shift(10.0), 40.0, 1e-12, 2));
+  // A start where every component of f is -0.5: a signed stop test (f_i < tol) passes there.
+  std::optional<Request> cancelling = cancelling_start(60.0 + shift(20.0));
+  while (!cancelling) cancelling = cancelling_start(60.0 + shift(20.0));  // only a variant's angle can miss
+  requests.push_back(*cancelling);
+  // The seed's tolerances: 1e-5 (seed 000) and 1e-9 (seed 001).
+  requests.push_back(from_behind(150.0 + shift(10.0), 10.0, 1e-5, 10));
+  requests.push_back(from_behind(250.0 + shift(10.0), 10.0, 1e-9, 20));
+  return requests;
+}
+
+std::vector<Request> trace_requests(const Variant& variant) {
+  Shifts shift(variant, 3);
+  std::vector<Request> requests;
+  for (double deg : {30.0, 150.0, 240.0, 330.0}) requests.push_back(from_behind(deg + shift(15.0), 20.0, 1e-10, 20));
+  return requests;
 }
 
 }  // namespace
@@ -73,13 +101,16 @@ Exercise jansen_newton_exercise() {
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: Newton-Raphson on the Jansen closure\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: Newton-Raphson on the Jansen closure\");\n";
   exercise.stubs.octave = "  error('not implemented: Newton-Raphson on the Jansen closure');\n";
-  exercise.battery = [] {
+  exercise.battery = [](const Variant& variant) {
+    auto [cycle, exact] = cycle_requests(variant);
     return std::vector<Check>{
         {"Newton reaches the closed-form pose at every 10 degrees of the crank cycle, within 2 ||J^-1|| (tolerance + "
          "rounding)",
-         1, whole_cycle},
-        {"A 'converged' status is backed by ||f(theta)||_inf <= tolerance, and max_iterations is kept", 2, honest_status},
-        {"The trace follows numlab's Newton from the same start, iteration by iteration", 3, trace},
+         1, [cycle, exact](Session& s) { return Battery::converges_to(s, cycle, exact); }},
+        {"A 'converged' status is backed by ||f(theta)||_inf <= tolerance, and max_iterations is kept", 2,
+         [requests = honest_requests(variant)](Session& s) { return Battery::honest(s, requests); }},
+        {"The trace follows numlab's Newton from the same start, iteration by iteration", 3,
+         [requests = trace_requests(variant)](Session& s) { return Battery::trace_matches(s, requests); }},
     };
   };
   return exercise;

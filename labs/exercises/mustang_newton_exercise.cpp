@@ -2,7 +2,10 @@
 // against the closed form across the assembly range, at and beyond its assembly limits, and
 // against numlab's Newton trace.
 
+#include <algorithm>
 #include <fmt/format.h>
+#include <optional>
+#include <utility>
 
 #include "exercises/exercise_list.hpp"
 #include "exercises/jansen_poses.hpp"
@@ -44,23 +47,58 @@ Request from(double deg, double start_deg, double tolerance, int max_iterations)
   return {deg * degrees, exact_at(start_deg), tolerance, max_iterations};
 }
 
+bool assembles(double deg) { return MustangLinkage().closed_form(deg * degrees).status == Status::converged; }
+
+// With a variant, an angle of a request is moved by a draw from it: `deg` + uniform [-spread,
+// spread), re-drawn until the linkage assembles there and at its start (the moved angle +
+// `start_offset`) and the two lie on one side of the kite's crossing at 43.15 deg (1 deg clear),
+// where loop 4's Jacobian is singular. Without a variant, `deg`.
+class Moves {
+ public:
+  Moves(const Variant& variant, unsigned base) : active_(variant.active()), stream_(variant.stream(base)) {}
+  double operator()(double deg, double spread, double start_offset) {
+    if (!active_) return deg;
+    for (;;) {
+      const double moved = deg + stream_.uniform(-spread, spread), start = moved + start_offset;
+      const bool clear = std::min(moved, start) > kite_crossing + 1.0 || std::max(moved, start) < kite_crossing - 1.0;
+      if (clear && assembles(moved) && assembles(start)) return moved;
+    }
+  }
+  // An angle beyond the assembly limits, drawn from [low, high) (`deg` without a variant).
+  double beyond(double deg, double low, double high) {
+    if (!active_) return deg;
+    for (;;) {
+      const double moved = stream_.uniform(low, high);
+      if (!assembles(moved)) return moved;
+    }
+  }
+
+ private:
+  static constexpr double kite_crossing = 43.15;
+  bool active_;
+  Variant::Stream stream_;
+};
+
 // Across the range -41.4257 ... 56.4540 deg, each start 2 degrees nearer the middle; near both
-// limits; not across the kite's crossing at 43.15 deg, where loop 4's Jacobian is singular.
-Verdict assembly_range(Session& session) {
+// limits; not across the kite's crossing at 43.15 deg, where loop 4's Jacobian is singular. With a
+// variant, each inner angle moved by up to 4 deg (1.5 deg near the limits); -41.3 and 56.3 stay.
+std::pair<std::vector<Request>, std::vector<MustangClosure::Vector>> range_requests(const Variant& variant) {
+  Moves move(variant, 1);
   std::vector<Request> requests;
   std::vector<MustangClosure::Vector> exact;
   for (double deg : {-41.3, -40.0, -30.0, -20.0, -10.0, 0.0, 10.0, 20.0, 30.0, 40.0, 48.0, 52.0, 55.0, 56.3}) {
-    const double start = deg < 10.0 ? deg + 2.0 : deg - 2.0;
-    requests.push_back(from(deg, start, 1e-10, 30));
+    const double offset = deg < 10.0 ? 2.0 : -2.0;
+    const bool edge = deg <= -40.0 || deg >= 48.0;
+    if (deg != -41.3 && deg != 56.3) deg = move(deg, edge ? 1.5 : 4.0, offset);
+    requests.push_back(from(deg, deg + offset, 1e-10, 30));
     exact.push_back(exact_at(deg));
   }
-  return Battery::converges_to(session, requests, exact);
+  return {requests, exact};
 }
 
-Verdict no_assembly(Session& session) {
+Verdict no_assembly(Session& session, const std::vector<std::pair<double, double>>& angles) {
   const MustangLinkage linkage;
-  for (const auto& [deg, start] : std::vector<std::pair<double, double>>{{-42.0, -41.3}, {-45.0, -41.3}, {57.0, 56.3},
-                                                                         {60.0, 56.3}}) {
+  for (const auto& [deg, start] : angles) {
     const auto closed = linkage.closed_form(deg * degrees);
     if (closed.status == Status::converged) throw std::logic_error("the Mustang assembles beyond its limits");
     const Request request = from(deg, start, 1e-10, 30);
@@ -78,23 +116,50 @@ Verdict no_assembly(Session& session) {
   return Verdict::pass();
 }
 
-Verdict honest_status(Session& session) {
-  std::vector<Request> requests;
-  // A start where loop k's components are +0.05 and -0.05: seed 003's |f_i + f_j| < 0.001 passes.
-  const double deg = 20.0;
-  MustangClosure::Vector cancelling;
-  cancelling << 0.05, -0.05, 0.05, -0.05, 0.05, -0.05, 0.05, -0.05;
-  requests.push_back({deg * degrees, start_with_residual(MustangClosure(deg * degrees), exact_at(deg), cancelling), 1e-3, 30});
-  // Too few iterations to converge: the honest status is max_iterations.
-  for (double at : {-30.0, 0.0, 30.0}) requests.push_back(from(at, at + 8.0, 1e-12, 2));
-  requests.push_back(from(10.0, 12.0, 1e-10, 30));
-  return Battery::honest(session, requests);
+// Beyond the limits, each from the pose at the nearer limit; with a variant, drawn past each limit.
+std::vector<std::pair<double, double>> beyond_limits(const Variant& variant) {
+  Moves move(variant, 2);
+  return {{move.beyond(-42.0, -43.0, -41.5), -41.3}, {move.beyond(-45.0, -50.0, -43.0), -41.3},
+          {move.beyond(57.0, 56.5, 58.0), 56.3}, {move.beyond(60.0, 58.0, 65.0), 56.3}};
 }
 
-Verdict trace(Session& session) {
+// A start where loop k's components are +0.05 and -0.05 at `deg`, if numlab's damped Newton finds one.
+std::optional<Request> cancelling_start(double deg) {
+  MustangClosure::Vector cancelling;
+  cancelling << 0.05, -0.05, 0.05, -0.05, 0.05, -0.05, 0.05, -0.05;
+  const MustangClosure closure(deg * degrees);
+  const MustangClosure::Vector start = start_with_residual(closure, exact_at(deg), cancelling);
+  MustangClosure::Vector f;
+  closure.residual(start, f);
+  if ((f - cancelling).cwiseAbs().maxCoeff() > 1e-9) return std::nullopt;
+  return Request{deg * degrees, start, 1e-3, 30};
+}
+
+std::vector<Request> honest_requests(const Variant& variant) {
+  Moves move(variant, 3);
   std::vector<Request> requests;
-  for (double deg : {-20.0, 0.0, 20.0, 35.0}) requests.push_back(from(deg, deg - 3.0, 1e-10, 30));
-  return Battery::trace_matches(session, requests);
+  // A start where loop k's components are +0.05 and -0.05: seed 003's |f_i + f_j| < 0.001 passes.
+  std::optional<Request> cancelling = cancelling_start(move(20.0, 8.0, 0.0));
+  while (!cancelling) cancelling = cancelling_start(move(20.0, 8.0, 0.0));  // only a variant's angle can miss
+  requests.push_back(*cancelling);
+  // Too few iterations to converge: the honest status is max_iterations.
+  for (double at : {-30.0, 0.0, 30.0}) {
+    at = move(at, 5.0, 8.0);
+    requests.push_back(from(at, at + 8.0, 1e-12, 2));
+  }
+  const double at = move(10.0, 5.0, 2.0);
+  requests.push_back(from(at, at + 2.0, 1e-10, 30));
+  return requests;
+}
+
+std::vector<Request> trace_requests(const Variant& variant) {
+  Moves move(variant, 4);
+  std::vector<Request> requests;
+  for (double deg : {-20.0, 0.0, 20.0, 35.0}) {
+    deg = move(deg, 4.0, -3.0);
+    requests.push_back(from(deg, deg - 3.0, 1e-10, 30));
+  }
+  return requests;
 }
 
 }  // namespace
@@ -107,14 +172,18 @@ Exercise mustang_newton_exercise() {
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: Newton-Raphson on the Mustang linkage\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: Newton-Raphson on the Mustang linkage\");\n";
   exercise.stubs.octave = "  error('not implemented: Newton-Raphson on the Mustang linkage');\n";
-  exercise.battery = [] {
+  exercise.battery = [](const Variant& variant) {
+    auto [range, exact] = range_requests(variant);
     return std::vector<Check>{
         {"Newton reaches the closed-form pose across the assembly range, near both limits, within 2 ||J^-1|| "
          "(tolerance + rounding)",
-         1, assembly_range},
-        {"No 'converged' status beyond the assembly limits (-41.43 deg, 56.45 deg), where no root exists", 2, no_assembly},
-        {"A 'converged' status is backed by ||f(angles)||_inf <= tolerance, and max_iterations is kept", 3, honest_status},
-        {"The trace follows numlab's Newton from the same start, iteration by iteration", 4, trace},
+         1, [range, exact](Session& s) { return Battery::converges_to(s, range, exact); }},
+        {"No 'converged' status beyond the assembly limits (-41.43 deg, 56.45 deg), where no root exists", 2,
+         [angles = beyond_limits(variant)](Session& s) { return no_assembly(s, angles); }},
+        {"A 'converged' status is backed by ||f(angles)||_inf <= tolerance, and max_iterations is kept", 3,
+         [requests = honest_requests(variant)](Session& s) { return Battery::honest(s, requests); }},
+        {"The trace follows numlab's Newton from the same start, iteration by iteration", 4,
+         [requests = trace_requests(variant)](Session& s) { return Battery::trace_matches(s, requests); }},
     };
   };
   return exercise;

@@ -171,20 +171,43 @@ FitCase gsl_case(std::string name, Eigen::VectorXd x, Eigen::VectorXd y, int deg
   return {std::move(name), std::move(x), std::move(y), degree, std::move(expected), "GSL gsl_multifit_linear"};
 }
 
-Verdict small_fits(Session& session) {
+// A number with one decimal drawn from a variant's stream.
+double tenths(Variant::Stream& stream, double low, double high) { return std::round(stream.uniform(low, high) * 10.0) / 10.0; }
+
+// The line, the interpolating parabola and the noisy cubic; with a variant, their data drawn from it
+// (the same shapes: 5 points on a noisy line, 3 distinct x at least 0.5 apart, 12 points of a cubic
+// plus 0.1 sin(w x)).
+std::vector<FitCase> small_cases(const Variant& variant) {
   std::vector<FitCase> cases;
+  Variant::Stream stream = variant.stream(1);
   Eigen::VectorXd x(5), y(5);
   x << 0, 1, 2, 3, 4;
   y << 2.1, 4.9, 8.2, 10.8, 14.1;
+  if (variant.active()) {
+    const double c0 = tenths(stream, -5, 5), c1 = tenths(stream, -3, 3);
+    for (Eigen::Index i = 0; i < 5; ++i) y(i) = std::round((c0 + c1 * x(i) + stream.uniform(-0.3, 0.3)) * 10.0) / 10.0;
+  }
   cases.push_back(gsl_case("a line through 5 points", x, y, 1));
   Eigen::VectorXd x3(3), y3(3);
   x3 << -1, 0.5, 2;
   y3 << 4, 1, 7;
+  if (variant.active()) {
+    x3 << tenths(stream, -2, -1), tenths(stream, -0.5, 0.5), tenths(stream, 1, 3);
+    y3 << tenths(stream, -5, 8), tenths(stream, -5, 8), tenths(stream, -5, 8);
+  }
   cases.push_back(gsl_case("a parabola through 3 points (interpolation)", x3, y3, 2));
   Eigen::VectorXd x12 = Eigen::VectorXd::LinSpaced(12, -1.0, 2.0), y12(12);
-  for (Eigen::Index i = 0; i < 12; ++i) y12(i) = 1.5 - 2.0 * x12(i) + 0.5 * std::pow(x12(i), 3) + 0.1 * std::sin(7.0 * x12(i));
+  double p[4] = {1.5, -2.0, 0.0, 0.5}, w = 7.0;
+  if (variant.active()) {
+    for (double& coefficient : p) coefficient = tenths(stream, -3, 3);
+    if (p[3] == 0.0) p[3] = 0.5;  // a cubic
+    w = tenths(stream, 5, 9);
+  }
+  for (Eigen::Index i = 0; i < 12; ++i) {
+    y12(i) = p[0] + p[1] * x12(i) + p[2] * x12(i) * x12(i) + p[3] * std::pow(x12(i), 3) + 0.1 * std::sin(w * x12(i));
+  }
   cases.push_back(gsl_case("a cubic through 12 noisy points", x12, y12, 3));
-  return check_fits(session, cases);
+  return cases;
 }
 
 Verdict nist_fits(Session& session) {
@@ -233,11 +256,11 @@ Exercise polyfit_exercise() {
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: the least-squares polynomial fit\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: the least-squares polynomial fit\");\n";
   exercise.stubs.octave = "  error('not implemented: the least-squares polynomial fit');\n";
-  exercise.battery = [] {
+  exercise.battery = [](const Variant& variant) {
     return std::vector<Check>{
         {"Small fits (a line, an interpolating parabola, a noisy cubic) match GSL's gsl_multifit_linear, lowest power "
          "first",
-         1, small_fits},
+         1, [cases = small_cases(variant)](Session& session) { return check_fits(session, cases); }},
         {"NIST StRD polynomial sets match the certified coefficients to the accuracy kappa allows", 2, nist_fits},
         {"A fit with fewer distinct x than coefficients reports status \"singular\"", 3, undetermined},
     };

@@ -53,11 +53,12 @@ std::string replay_file_name(int place, const std::string& check_name) {
   return fmt::format("{:02}-{}.jsonl", place, slug.empty() ? "check" : slug);
 }
 
-std::string replay_lines(const CheckResult& result) {
+std::string replay_lines(const CheckResult& result, const Variant& variant) {
   std::string text;
   for (const Exchange& exchange : result.exchanges) {
     nlohmann::ordered_json line;
     line["check"] = result.name;
+    if (variant.active()) line["variant"] = *variant.id();
     line["inputs"] = exchange.expected.inputs;
     line["request"] = exchange.request;
     line["expected"] = exchange.expected.reply;
@@ -102,6 +103,18 @@ ReplayFile read_replay_file(const std::string& path) {
     } else if (exercise != file.exercise || check != file.check) {
       throw bad_file(path, fmt::format("line {} is from another check than line 1 (one file replays one check)", number));
     }
+    if (line.contains("variant")) {
+      const auto& id = line["variant"];
+      if (!id.is_string() || !variant_id_problem(id.get<std::string>()).empty()) {
+        throw bad_file(path, fmt::format("line {}: \"variant\" is not a variant ID (a non-empty string without "
+                                         "control characters)", number));
+      }
+      if (file.requests.empty()) file.variant = Variant(id.get<std::string>());
+    }
+    const std::string variant_id = file.variant.active() ? *file.variant.id() : "";
+    if (!file.requests.empty() && line.value("variant", std::string()) != variant_id) {
+      throw bad_file(path, fmt::format("line {} is from another variant than line 1 (one file replays one check)", number));
+    }
     file.requests.push_back(line["request"]);
   }
   if (in.bad()) throw bad_file(path, "cannot be read");
@@ -109,8 +122,8 @@ ReplayFile read_replay_file(const std::string& path) {
   return file;
 }
 
-Check find_check(const Exercise& exercise, const std::string& name) {
-  for (Check& check : exercise.battery()) {
+Check find_check(const Exercise& exercise, const std::string& name, const Variant& variant) {
+  for (Check& check : exercise.battery(variant)) {
     if (check.name == name) return check;
   }
   throw std::invalid_argument(

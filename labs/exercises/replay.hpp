@@ -20,22 +20,24 @@ namespace numlab::exercises {
 // battery and its name in lower case, words joined by '-', cut at a word to at most 60 characters.
 std::string replay_file_name(int place, const std::string& check_name);
 
-// The file's text: one line per request of the check, each ending in '\n'.
-std::string replay_lines(const CheckResult& result);
+// The file's text: one line per request of the check, each ending in '\n'. With a variant, each line
+// also has "variant": its ID (a replay rebuilds the check of that variant).
+std::string replay_lines(const CheckResult& result, const Variant& variant = Variant());
 
 // What a replay file holds: the exercise and check it came from, and the requests in order.
 struct ReplayFile {
   std::string exercise;
   std::string check;
   std::vector<nlohmann::json> requests;
+  Variant variant;  // the lines' "variant", if they have one
 };
 
 // Reads a replay file; std::invalid_argument with one line ("exercise replay: FILE line 3: ...")
 // when it cannot be read or is not a replay file.
 ReplayFile read_replay_file(const std::string& path);
 
-// The check of `exercise` named `name`; std::invalid_argument when none is.
-Check find_check(const Exercise& exercise, const std::string& name);
+// The check of `exercise` named `name` in the battery of `variant`; std::invalid_argument when none is.
+Check find_check(const Exercise& exercise, const std::string& name, const Variant& variant = Variant());
 
 // What `exercise replay` prints: each request (cut to a line), the program's reply and numlab's
 // expectation side by side, then the verdict; `mismatch` notes where the requests sent now differ

@@ -70,6 +70,11 @@ const CheckResult* first_failure(const std::vector<CheckResult>& results) {
   return nullptr;
 }
 
+// " (variant ID)", or "" without one.
+std::string variant_words(const Variant& variant) {
+  return variant.active() ? " (variant " + *variant.id() + ")" : "";
+}
+
 std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 
 std::string mark(const CheckResult& result) {
@@ -83,7 +88,8 @@ std::string mark(const CheckResult& result) {
 
 }  // namespace
 
-nlohmann::ordered_json results_json(const std::vector<CheckResult>& results, const std::string& error_message) {
+nlohmann::ordered_json results_json(const std::vector<CheckResult>& results, const std::string& error_message,
+                                    const Variant& variant) {
   const int errors = count(results, CheckStatus::error);
   const int passes = count(results, CheckStatus::pass);
   const bool all_errored = errors == static_cast<int>(results.size());
@@ -106,6 +112,7 @@ nlohmann::ordered_json results_json(const std::vector<CheckResult>& results, con
   const std::optional<Diagnosis> diagnosis = overall_diagnosis(results);
   json["diagnosis"] = diagnosis ? nlohmann::ordered_json(diagnosis->evidence) : nlohmann::ordered_json();
   json["diagnosis_cause"] = diagnosis ? nlohmann::ordered_json(diagnosis->cause) : nlohmann::ordered_json();
+  json["variant"] = variant.active() ? nlohmann::ordered_json(*variant.id()) : nlohmann::ordered_json();
   json["tests"] = nlohmann::ordered_json::array();
   for (const CheckResult& result : results) {
     nlohmann::ordered_json test;
@@ -133,7 +140,7 @@ std::string results_summary(const std::vector<CheckResult>& results) {
   return line;
 }
 
-std::string results_text(const Exercise& exercise, const std::vector<CheckResult>& results) {
+std::string results_text(const Exercise& exercise, const std::vector<CheckResult>& results, const Variant& variant) {
   std::string text;
   if (const std::optional<Diagnosis> diagnosis = overall_diagnosis(results)) {
     text += "Diagnosis: " + diagnosis->evidence + '\n';
@@ -143,7 +150,7 @@ std::string results_text(const Exercise& exercise, const std::vector<CheckResult
     if (!first->replay.empty()) text += "Replay it: " + first->replay + '\n';
     text += '\n';
   }
-  text += fmt::format("numlab exercise {}: {}\n\n", exercise.name, exercise.summary);
+  text += fmt::format("numlab exercise {}{}: {}\n\n", exercise.name, variant_words(variant), exercise.summary);
   for (const CheckResult& result : results) {
     text += mark(result) + '\n';
     if (const std::string timing = timing_line(result); !timing.empty()) text += "    " + timing + '\n';
@@ -161,7 +168,7 @@ std::string results_text(const Exercise& exercise, const std::vector<CheckResult
 }
 
 std::string results_html(const Exercise& exercise, const std::vector<CheckResult>& results,
-                         const std::string& command) {
+                         const std::string& command, const Variant& variant) {
   std::string body;
   if (const CheckResult* first = first_failure(results)) {
     body += "<div class=\"first\">";
@@ -173,6 +180,7 @@ std::string results_html(const Exercise& exercise, const std::vector<CheckResult
     if (!first->replay.empty()) body += "<p>Replay it: <code>" + html_escape(first->replay) + "</code></p>\n";
     body += "</div>\n";
   }
+  if (variant.active()) body += "<p>Variant: <code>" + html_escape(*variant.id()) + "</code></p>\n";
   body += "<p><em>" + html_escape(exercise.summary) + "</em></p>\n<p>Checked: <code>" +
                      html_escape(command) + "</code></p>\n<p class=\"summary\">" +
                      html_escape(results_summary(results)) + "</p>\n";
@@ -222,7 +230,7 @@ std::string results_html(const Exercise& exercise, const std::vector<CheckResult
       "td:first-child { white-space: normal; min-width: 28em; } td:nth-child(2) { text-align: center; }\n"
       "td:nth-child(3) { text-align: left; }\n"
       ".first { border-left: 4px solid #b42318; background: #fdf2f2; padding: 0.2em 0.8em; margin-bottom: 1em; }\n";
-  return cli::html_page("numlab exercise " + exercise.name, body, css);
+  return cli::html_page("numlab exercise " + exercise.name + variant_words(variant), body, css);
 }
 
 }  // namespace numlab::exercises

@@ -1,4 +1,5 @@
 #include "exercises/starters.hpp"
+#include "exercises/command_line.hpp"
 
 #include <fmt/format.h>
 
@@ -242,7 +243,9 @@ Language parse_language(const std::string& name) {
 }
 
 std::string check_command(const Exercise& exercise, Language language) {
-  const std::string check = "numlab exercise check " + exercise.name + " -- ";
+  std::string check = "numlab exercise check " + exercise.name + " ";
+  for (const std::string& argument : exercise.arguments) check += argument + " ";
+  check += "-- ";
   switch (language) {
     case Language::python: return check + "python3 solution.py";
     case Language::cpp:
@@ -254,7 +257,29 @@ std::string check_command(const Exercise& exercise, Language language) {
   return check;
 }
 
-std::vector<StarterFile> starter_files(const Exercise& exercise, Language language) {
+namespace {
+
+// The section of TASK.md that names a variant.
+std::string variant_section(const Exercise& exercise, const Variant& variant) {
+  return fmt::format("\n## Your variant\n\nYour variant is `{}`: the checks send you the random matrices, data, "
+                     "starts and crank angles of this variant (another ID gets others). Check with `--variant {}`, "
+                     "as the command below does; `numlab exercise check {}` without it checks another set of "
+                     "inputs.\n",
+                     *variant.id(), shell_word(*variant.id()), exercise.name);
+}
+
+}  // namespace
+
+std::vector<StarterFile> starter_files(const Exercise& exercise, Language language, const Variant& variant) {
+  if (variant.active()) {  // the check commands in the files say --variant ID; TASK.md names it
+    Exercise varied = exercise;
+    varied.arguments.insert(varied.arguments.end(), {"--variant", shell_word(*variant.id())});
+    std::vector<StarterFile> files = starter_files(varied, language);
+    std::string& task = files.front().contents;
+    const std::size_t how = task.rfind("\n## How to check");
+    task.insert(how == std::string::npos ? task.size() : how, variant_section(exercise, variant));
+    return files;
+  }
   std::string task = exercise.task;
   if (!task.empty() && task.back() != '\n') task += '\n';
   std::vector<StarterFile> files = {{"TASK.md", task + "\n## How to check\n\n" + how_to_check(exercise, language), false}};

@@ -27,8 +27,9 @@ struct StarterFile {
 // "numlab exercise check gepp -- python3 solution.py".
 std::string check_command(const Exercise& exercise, Language language);
 
-// TASK.md (the task and "How to check") and the program's files.
-std::vector<StarterFile> starter_files(const Exercise& exercise, Language language);
+// TASK.md (the task and "How to check") and the program's files. With a variant, TASK.md gets a
+// section "Your variant" (its ID) and every check command in the files says `--variant ID`.
+std::vector<StarterFile> starter_files(const Exercise& exercise, Language language, const Variant& variant = Variant());
 
 // Writes the files into `folder` (created if needed), executable ones with their x bits set.
 // Throws std::runtime_error naming the file that cannot be written.

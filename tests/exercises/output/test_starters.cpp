@@ -194,7 +194,7 @@ TEST_CASE("Every exercise's Python and Octave starters, as generated, fail every
   if (!octave) WARN("octave-cli is not on PATH (apt-get install octave): only the Python starters are run");
   for (const Exercise& exercise : all_exercises()) {
     INFO(exercise.name);
-    const std::size_t checks = exercise.battery().size();
+    const std::size_t checks = exercise.battery(Variant()).size();
     const std::string folder = fresh_folder(exercise.name);
     write_starter_files(folder, starter_files(exercise, Language::python));
     require_all_fail_not_implemented(check_starter(folder, {NUMLAB_PYTHON3, "solution.py"}, exercise), checks);
