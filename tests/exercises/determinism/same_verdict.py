@@ -30,7 +30,10 @@ def verdict(numlab, exercise, command):
     """results.json without the times; the raw one for the margins."""
     done = subprocess.run([numlab, "exercise", "check", exercise, "--format", "json", "--"] + command,
                           capture_output=True, text=True, timeout=600)
-    results = json.loads(done.stdout)
+    try:
+        results = json.loads(done.stdout)
+    except json.JSONDecodeError:  # shown as a difference, with what came instead
+        return done.returncode, f"not JSON: {done.stdout[:300]!r} {done.stderr[:300]!r}", {"tests": []}
     for test in results["tests"]:
         test.pop("timing", None)
     return done.returncode, json.dumps(results, sort_keys=True), results
