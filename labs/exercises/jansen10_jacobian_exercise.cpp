@@ -67,28 +67,14 @@ struct Pose {
 };
 
 // The model's start (seed 000's estimates read through their joints), four solved poses around
-// the cycle, and two poses away from any root (where f is large, so every term of every row counts).
-// With a variant, the four solved poses' crank angles are drawn from it, one in each quarter turn,
-// and so are the two poses away from any root (their crank angles and offsets).
+// the cycle, and two poses away from any root (jacobian_poses: with a variant, their crank angles
+// and offsets drawn from it).
 std::vector<Pose> poses(const Variant& variant) {
-  std::vector<Pose> list = {
-      {mechanisms::JansenClosure::seed_crank_angle, mechanisms::jansen_seed_estimates(JansenModel::ten_equations, mechanisms::JansenLeg())}};
-  Variant::Stream stream = variant.stream(1);
-  for (double deg : {0.0, 90.0, 200.0, 300.0}) {
-    if (variant.active()) deg = std::floor(deg / 90.0) * 90.0 + stream.uniform(0.0, 90.0);
-    list.push_back({deg * degrees, jansen10_closed_form_angles(deg * degrees)});
-  }
   Jansen10Closure::Vector offset;
   offset << 0.3, -0.2, 0.5, -0.4, 0.25, -0.35, 0.45, -0.15, 0.2, -0.3;
-  double first = 1.0, second = 4.0;
-  if (variant.active()) {
-    for (int k = 0; k < 10; ++k) offset(k) = stream.uniform(-0.5, 0.5);
-    first = stream.uniform(0.0, 3.0);
-    second = stream.uniform(3.2, 6.2);
-  }
-  list.push_back({first, jansen10_closed_form_angles(first) + offset});
-  list.push_back({second, jansen10_closed_form_angles(second) - 2.0 * offset});
-  return list;
+  const Pose start{mechanisms::JansenClosure::seed_crank_angle,
+                   mechanisms::jansen_seed_estimates(JansenModel::ten_equations, mechanisms::JansenLeg())};
+  return jacobian_poses(variant, start, offset, jansen10_closed_form_angles);
 }
 
 nlohmann::json request_for(const Pose& pose) {

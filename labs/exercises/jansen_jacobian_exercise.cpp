@@ -29,28 +29,13 @@ struct Pose {
   JansenAngles theta;
 };
 
-// Seed 000's start, four solved poses around the cycle, and two poses away from any root (where
-// f is large, so every term of every row counts).
-// With a variant, the four solved poses' crank angles are drawn from it, one in each quarter turn,
-// and so are the two poses away from any root (their crank angles and offsets).
+// Seed 000's start, four solved poses around the cycle, and two poses away from any root
+// (jacobian_poses: with a variant, their crank angles and offsets drawn from it).
 std::vector<Pose> poses(const Variant& variant) {
-  std::vector<Pose> list = {{JansenClosure::seed_crank_angle, JansenClosure::seed_estimates()}};
-  Variant::Stream stream = variant.stream(1);
-  for (double deg : {0.0, 90.0, 200.0, 300.0}) {
-    if (variant.active()) deg = std::floor(deg / 90.0) * 90.0 + stream.uniform(0.0, 90.0);
-    list.push_back({deg * degrees, jansen_closed_form_angles(deg * degrees)});
-  }
   JansenAngles offset;
   offset << 0.3, -0.2, 0.5, -0.4, 0.25, -0.35, 0.45, -0.15;
-  double first = 1.0, second = 4.0;
-  if (variant.active()) {
-    for (int k = 0; k < 8; ++k) offset(k) = stream.uniform(-0.5, 0.5);
-    first = stream.uniform(0.0, 3.0);
-    second = stream.uniform(3.2, 6.2);
-  }
-  list.push_back({first, jansen_closed_form_angles(first) + offset});
-  list.push_back({second, jansen_closed_form_angles(second) - 2.0 * offset});
-  return list;
+  return jacobian_poses(variant, Pose{JansenClosure::seed_crank_angle, JansenClosure::seed_estimates()}, offset,
+                        jansen_closed_form_angles);
 }
 
 nlohmann::json request_for(const Pose& pose) {

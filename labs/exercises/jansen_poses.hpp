@@ -2,8 +2,12 @@
 // The Jansen leg's exact poses for the exercises: seed 000's 8 angles from the closed form (circle
 // intersections, jansen_leg.hpp) on the seed's branch, and what checks say about them.
 
+#include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "exercises/variant.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
 
 namespace numlab::exercises {
@@ -22,5 +26,30 @@ double jansen_links_sum();
 std::string jansen_angle_name(int index);
 
 inline constexpr double degrees = 3.14159265358979323846 / 180.0;
+
+// The Jacobian exercises' poses ({crank_angle, theta}): `start`, the closed-form pose at 0, 90, 200
+// and 300 degrees, and two poses away from any root (where f is large, so every term of every row
+// counts): the closed form at 1.0 rad plus `offset` and at 4.0 rad minus twice it. With a variant,
+// one of the four crank angles is drawn in each quarter turn, and the two others and the offset
+// (entries in [-0.5, 0.5)) are drawn too.
+template <typename Pose, typename ClosedForm>
+std::vector<Pose> jacobian_poses(const Variant& variant, Pose start, decltype(Pose::theta) offset,
+                                 ClosedForm closed_form) {
+  std::vector<Pose> list = {std::move(start)};
+  Variant::Stream stream = variant.stream(1);
+  for (double deg : {0.0, 90.0, 200.0, 300.0}) {
+    if (variant.active()) deg = std::floor(deg / 90.0) * 90.0 + stream.uniform(0.0, 90.0);
+    list.push_back({deg * degrees, closed_form(deg * degrees)});
+  }
+  double first = 1.0, second = 4.0;
+  if (variant.active()) {
+    for (Eigen::Index k = 0; k < offset.size(); ++k) offset(k) = stream.uniform(-0.5, 0.5);
+    first = stream.uniform(0.0, 3.0);
+    second = stream.uniform(3.2, 6.2);
+  }
+  list.push_back({first, closed_form(first) + offset});
+  list.push_back({second, closed_form(second) - 2.0 * offset});
+  return list;
+}
 
 }  // namespace numlab::exercises
