@@ -159,8 +159,8 @@ int ExerciseGradeCommand::grade_class() const {
                        (fs::absolute(out) / student).string(), "--timeout", fmt::format("{}", timeout_seconds_),
                        "--build-timeout", fmt::format("{}", build_seconds_)});
     if (variant_from_folder_ || variant_option_->count() > 0) {
-      workers.back().push_back("--variant");
-      workers.back().push_back(variant_from_folder_ ? student : variant_);
+      // One word, so that an ID that starts with '-' is not read as an option.
+      workers.back().push_back("--variant=" + (variant_from_folder_ ? student : variant_));
     }
   }
   const int jobs = jobs_ > 0 ? jobs_ : default_jobs();

@@ -125,6 +125,14 @@ both = run("exercise", "grade", "gepp", "--submissions", subs, "--out", os.path.
            "--variant-from-folder")
 bad_input(both, "grade --variant and --variant-from-folder")
 expect(not os.path.exists(os.path.join(work, "both")), "grade with both wrote nothing")
+dash = os.path.join(work, "dash")  # an ID that starts with '-' reaches the worker as the ID, not an option
+os.makedirs(os.path.join(dash, "-s4"))
+shutil.copy(reference, os.path.join(dash, "-s4", "solution.py"))
+graded = run("exercise", "grade", "gepp", "--submissions", dash, "--out", os.path.join(work, "dash-out"),
+             "--variant-from-folder")
+dash_json = json.load(open(os.path.join(work, "dash-out", "-s4", "results.json"), encoding="utf-8"))
+expect(graded.returncode == 0 and dash_json.get("variant") == "-s4", f"folder -s4: exit {graded.returncode}, "
+       f"variant {dash_json.get('variant')!r}: {graded.stderr}")
 odd = os.path.join(work, "odd")
 os.makedirs(os.path.join(odd, "a\x01b"))
 bad_input(run("exercise", "grade", "gepp", "--submissions", odd, "--out", os.path.join(work, "odd-out"),
