@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """`--variant` end to end (docs/exercises.md, "Variants"), through the numlab executable.
 
-  variants_cli.py unchanged NUMLAB REFERENCES GOLDEN
+  variants_cli.py unchanged NUMLAB REFERENCES GOLDEN OUT
       Without --variant every exercise sends, request for request, what numlab sent before variants
-      existed: the requests the Python references (REFERENCES/NAME.py) receive, ids left out, hashed
-      per exercise (SHA-256), equal GOLDEN's (recorded with numlab f22073f, before variants).
+      existed: GOLDEN holds the digest of each request the Python references (REFERENCES/NAME.py)
+      received from numlab f22073f (SHA-256 of the request without its id, 16 hex digits), in order,
+      and they must all come again, in that order; requests of checks added since may come between.
   variants_cli.py references NUMLAB EXERCISE ID[,ID...] COMMAND...
       COMMAND passes every check of EXERCISE under each variant ID, and results.json names the variant.
   variants_cli.py mutants NUMLAB MUTANTS OUT ID[,ID...]
@@ -41,10 +42,10 @@ def tee(log, command):
     sys.exit(child.wait())
 
 
-def digest(log):
-    """SHA-256 of the requests in LOG without their ids (a request sent twice in a row, the warm-up
-    that leaves out start-up, counted once), and how many there were."""
-    lines, last = [], None
+def digests(log):
+    """The digest of each request in LOG, in order: SHA-256 of the request without its id (16 hex
+    digits); a request sent twice in a row (the warm-up that leaves out start-up) counted once."""
+    found, last = [], None
     with open(log, encoding="utf-8") as text:
         for raw in text:
             if raw == last:
@@ -52,8 +53,18 @@ def digest(log):
             last = raw
             request = json.loads(raw)
             request.pop("id", None)
-            lines.append(json.dumps(request, sort_keys=True, separators=(",", ":")))
-    return hashlib.sha256("\n".join(lines).encode()).hexdigest(), len(lines)
+            canonical = json.dumps(request, sort_keys=True, separators=(",", ":"))
+            found.append(hashlib.sha256(canonical.encode()).hexdigest()[:16])
+    return found
+
+
+def missing_from(expected, got):
+    """The first of `expected` that does not come in `got` in order (None when all do)."""
+    rest = iter(got)
+    for k, digest in enumerate(expected):
+        if not any(digest == other for other in rest):
+            return k
+    return None
 
 
 def check(numlab, exercise, command, variant=None, out=None):
@@ -72,8 +83,8 @@ def unchanged(numlab, references, golden, out_dir):
     with open(golden, encoding="utf-8") as text:
         for line in text:
             if line.strip() and not line.startswith("#"):
-                name, sha, count = line.split()
-                expected[name] = (sha, int(count))
+                name, *found = line.split()
+                expected[name] = found
     os.makedirs(out_dir, exist_ok=True)
     wrong = []
     for exercise in EXERCISES:
@@ -83,10 +94,12 @@ def unchanged(numlab, references, golden, out_dir):
         reference = os.path.join(references, exercise.replace("-", "_") + ".py")
         code, results = check(numlab, exercise, [sys.executable, os.path.abspath(__file__), "tee", log,
                                                  sys.executable, reference])
-        got = digest(log)
-        print(f"{exercise}: {got[1]} requests, sha256 {got[0]} (status {results['status']}, "
-              f"variant {results.get('variant')!r})")
-        if got != expected[exercise] or results.get("variant") is not None or code != 0:
+        got = digests(log)
+        lost = missing_from(expected[exercise], got)
+        print(f"{exercise}: {len(got)} requests, the {len(expected[exercise])} of before "
+              f"{'all sent, in order' if lost is None else f'not all sent: request {lost + 1} is missing'} "
+              f"(status {results['status']}, variant {results.get('variant')!r})")
+        if lost is not None or results.get("variant") is not None or code != 0:
             wrong.append(exercise)
     if wrong:
         sys.exit("without --variant these exercises no longer send the requests of before: " + ", ".join(wrong))
