@@ -124,7 +124,7 @@ Verdict check_f(Session& session, const std::vector<Pose>& list) {
                                        i, digits17(f(i)), digits17(expected(i)), i + 1, i + 8, pose_text(pose),
                                        difference(f(i), expected(i)), sci(tolerance), links_sum()),
                            diagnose_residual({f, expected, pose.crank_angle, pose.theta, evaluator_of<Jansen10Closure>(),
-                                              tolerance},
+                                              tolerance, angle_name},
                                              {{"wrong_link", Specificity::exact,
                                                [&] { return offset_mistake(i, f(i), expected(i)); }}}),
                            f_hint());

@@ -85,7 +85,8 @@ Verdict check_f(Session& session, const std::vector<Pose>& list) {
                                        "allowed |error| {} (1e3 eps times the links' sum {})",
                                        i, digits17(f(i)), digits17(expected(i)), i + 1, pose_text(pose),
                                        difference(f(i), expected(i)), sci(tolerance), jansen_links_sum()),
-                           diagnose_residual({f, expected, pose.crank_angle, pose.theta, evaluator_of<JansenClosure>(), tolerance},
+                           diagnose_residual({f, expected, pose.crank_angle, pose.theta, evaluator_of<JansenClosure>(), tolerance,
+                                              jansen_angle_name},
                                              {{"wrong_link", Specificity::exact,
                                                [&] { return offset_mistake(i, f(i), expected(i)); }}}),
                            f_hint());

@@ -127,6 +127,22 @@ std::optional<TraceDeparture> first_departure(const std::vector<TraceRow>& stude
   return std::nullopt;
 }
 
+std::optional<long long> decided_iterations(const std::vector<TraceRow>& reference, double start_residual,
+                                            double tolerance, long long max_iterations, bool converged,
+                                            double relative, double noise) {
+  const auto count = static_cast<long long>(reference.size());
+  if (converged ? (count > 0 && reference.back().residual_inf > tolerance) : count != max_iterations) return std::nullopt;
+  auto clear = [&](double residual) {
+    const double spread = relative * residual + noise;
+    return residual - spread > 2.0 * tolerance || residual + spread < 0.5 * tolerance;
+  };
+  if (!clear(start_residual)) return std::nullopt;
+  for (const TraceRow& row : reference) {
+    if (!clear(row.residual_inf)) return std::nullopt;
+  }
+  return count;
+}
+
 std::string sci(double value) { return fmt::format("{:.3g}", value); }
 
 }  // namespace numlab::exercises

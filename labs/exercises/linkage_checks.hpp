@@ -103,6 +103,17 @@ std::optional<TraceDeparture> first_departure(const std::vector<TraceRow>& stude
                                               double relative, double residual_floor, double step_floor,
                                               double start_residual);
 
+// The number of iterations the task's stop rule gives from a start, when it gives it beyond doubt:
+// test max |f_i| <= tolerance before each step, stop at max_iterations. `reference` is numlab's
+// trace from that start (`start_residual` = ||f(x0)||_inf, `converged` its ending). A correct
+// Newton's residuals differ from numlab's by at most `relative` of them plus `noise`; when every
+// residual, at the start and after each step, is more than a factor 2 from the tolerance beyond
+// that, each test goes the same way in both and the count is numlab's. Nothing when one is that
+// close, or numlab stopped for another reason (singular J, no progress).
+std::optional<long long> decided_iterations(const std::vector<TraceRow>& reference, double start_residual,
+                                            double tolerance, long long max_iterations, bool converged,
+                                            double relative, double noise);
+
 // A start whose residual is exactly `target` (to rounding): numlab's Newton on f(x) - target from
 // the root x_root. Used to build starts on which a wrong stop test passes (components that cancel
 // in pairs, or that are all negative).

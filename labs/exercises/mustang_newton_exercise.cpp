@@ -30,7 +30,29 @@ struct MustangNewton {
   static std::string angle_name(int k) { return std::string(mechanisms::mustang_angle_names[static_cast<std::size_t>(k)]); }
   static double links_sum() { return mustang_links_sum(); }
   static std::string where(double angle) { return fmt::format("theta {:.4g} deg", angle / degrees); }
+  static std::vector<SlippedClosure> constant_angle_slips();
 };
+
+// The 20-degree bend typed as 20 and used as radians: everywhere (the chord |2 6| = 5 cos(b) too),
+// or in the angles only (theta + b, C - b, C + b) with the chord typed as its value.
+std::vector<SlippedClosure> MustangNewton::constant_angle_slips() {
+  mechanisms::MustangLengths typed;
+  typed.bend = 20.0;
+  const double chord_error = mechanisms::MustangLengths().chord2_6() - typed.chord2_6();
+  auto in_angles = [typed](double chord_shift) {
+    return [typed, chord_shift](double theta, const Eigen::VectorXd& x) {
+      MustangClosure::Vector f;
+      MustangClosure::Matrix J;
+      MustangClosure(theta, typed).residual_and_jacobian(MustangClosure::Vector(x), f, J);
+      f(2) += chord_shift * std::cos(theta + typed.bend);  // loop 2 reaches P6 along the chord at theta + b
+      f(3) += chord_shift * std::sin(theta + typed.bend);
+      return ClosureValues{Eigen::VectorXd(f), Eigen::MatrixXd(J)};
+    };
+  };
+  return {{"the bend typed as 20 (degrees) and used as radians, in cos(theta + b) and in the chord 5 cos(b)", in_angles(0.0)},
+          {"the bend typed as 20 (degrees) and used as radians in cos(theta + b), cos(C - b), cos(C + b)",
+           in_angles(chord_error)}};
+}
 
 using Battery = NewtonBattery<MustangNewton>;
 using Request = Battery::Request;

@@ -8,10 +8,13 @@
 //   static std::string angle_name(int k);      // "theta3" / "C"
 //   static double links_sum();                 // L, the scale of f
 //   static std::string where(double angle);    // "crank 130 deg"
+// and may have
+//   static std::vector<SlippedClosure> constant_angle_slips();  // a constant angle typed in degrees
 
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,6 +85,44 @@ class NewtonBattery {
     }
   }
 
+  // numlab's Newton from the request's start: its trace, what a correct trace may differ from it
+  // by, and its iteration count where the task's stop rule decides it.
+  struct Reference {
+    std::vector<TraceRow> rows;
+    double relative = 0.0;    // two correct Newton codes agree to rounding amplified by kappa at each step
+    double step_floor = 0.0;  // ||J^-1|| times what re-evaluating f adds
+    double start_residual = 0.0;
+    std::optional<long long> decided;
+  };
+
+  static Reference reference_for(const Request& request) {
+    const Closure closure(request.angle);
+    typename Closure::Vector f;
+    typename Closure::Matrix J;
+    closure.residual_and_jacobian(request.start, f, J);
+    nonlinear::NewtonResult<n> result;
+    Reference reference;
+    reference.rows = newton_trace(closure, request.start, options_for(request), &result);
+    reference.relative = std::max(1e-6, 1e3 * kappa_inf(J) * eps);
+    reference.step_floor = inverse_inf_norm(J) * rounding();
+    reference.start_residual = f.template lpNorm<Eigen::Infinity>();
+    // Residuals of two correct codes differ by rounding in f's sum (100 eps L) beyond `relative`.
+    reference.decided = decided_iterations(reference.rows, reference.start_residual, request.tolerance,
+                                           request.max_iterations, result.status == Status::converged,
+                                           reference.relative, rounding() / 10.0);
+    return reference;
+  }
+
+  // The closure with a constant angle typed in degrees and used as radians, when the linkage has one
+  // (Linkage::constant_angle_slips()).
+  static std::vector<SlippedClosure> constant_angle_slips() {
+    if constexpr (requires { Linkage::constant_angle_slips(); }) {
+      return Linkage::constant_angle_slips();
+    } else {
+      return {};
+    }
+  }
+
   // The most specific cause the reply's numbers show (detectors/mechanism_newton.hpp), or nothing.
   static std::optional<Diagnosis> diagnosis(const Request& request, const Answer& answer,
                                             const std::optional<Vector>& exact = std::nullopt) {
@@ -104,6 +145,8 @@ class NewtonBattery {
     evidence.rounding = rounding();
     evidence.links_sum = Linkage::links_sum();
     evidence.angle_name = [](int k) { return Linkage::angle_name(k); };
+    evidence.decided_iterations = reference_for(request).decided;
+    evidence.constant_angle_slips = constant_angle_slips();
     return diagnose_newton(evidence);
   }
 
@@ -186,6 +229,32 @@ class NewtonBattery {
     return Verdict::pass(reference_times(requests.front()));
   }
 
+  // The trace's length and `iterations` against numlab's count, where the stop rule decides it.
+  static std::optional<Verdict> count_mismatch(const Request& request, const Answer& answer,
+                                               const std::vector<TraceRow>& trace, const Reference& reference) {
+    if (!reference.decided) return std::nullopt;
+    const long long count = *reference.decided, rows = static_cast<long long>(trace.size());
+    if (rows == count && answer.reply.iterations == count) return std::nullopt;
+    const std::string ending =
+        count == 0 ? fmt::format("the start already passes (||f(start)||_inf = {})", sci(reference.start_residual))
+        : count == request.max_iterations && reference.rows.back().residual_inf > request.tolerance
+            ? fmt::format("it stops at max_iterations = {} (residual_inf {} after iteration {})", count,
+                          sci(reference.rows.back().residual_inf), count)
+            : fmt::format("residual_inf {} after iteration {} passes the test{}", sci(reference.rows.back().residual_inf),
+                          count,
+                          count > 1 ? fmt::format(", {} after iteration {} did not", sci(reference.rows[reference.rows.size() - 2].residual_inf), count - 1)
+                                    : fmt::format(", {} at the start did not", sci(reference.start_residual)));
+    std::optional<Verdict> verdict = Verdict::fail(
+        fmt::format("{}: your trace has {} rows and iterations = {}; numlab's Newton from the same start takes {}: {}. "
+                    "The task's stop rule (test max |f_i| <= tolerance {} at the current x before each step, count "
+                    "each step) decides the count here: every residual is more than a factor 2 from the tolerance",
+                    Linkage::where(request.angle), rows, answer.reply.iterations, count, ending, sci(request.tolerance)),
+        diagnosis(request, answer),
+        "test the residual at the current x before each step and stop as soon as it passes; one trace row and one "
+        "count per step taken");
+    return verdict;
+  }
+
   // Task: the trace follows numlab's Newton from the same start.
   static Verdict trace_matches(Session& session, const std::vector<Request>& requests) {
     for (const Request& request : requests) {
@@ -193,20 +262,14 @@ class NewtonBattery {
       const auto trace = read_trace(answer.raw);
       const std::string where = Linkage::where(request.angle);
       if (!trace) return Verdict::fail(fmt::format("{}: the reply has no \"trace\" (this task asks for one)", where));
-      const Closure closure(request.angle);
-      typename Closure::Vector f;
-      typename Closure::Matrix J;
-      closure.residual_and_jacobian(request.start, f, J);
-      const auto reference = newton_trace(closure, request.start, options_for(request));
-      // Two correct Newton codes from one start agree to rounding amplified by kappa at each step.
-      const double relative = std::max(1e-6, 1e3 * kappa_inf(J) * eps);
-      const double step_floor = inverse_inf_norm(J) * rounding();
-      if (auto departure = first_departure(*trace, reference, relative, rounding(), step_floor,
-                                           f.template lpNorm<Eigen::Infinity>())) {
+      const Reference reference = reference_for(request);
+      if (auto departure = first_departure(*trace, reference.rows, reference.relative, rounding(), reference.step_floor,
+                                           reference.start_residual)) {
         return Verdict::fail(fmt::format("{} (your status \"{}\" after {} iterations), {}", where, answer.reply.status,
                                          answer.reply.iterations, departure->message),
                              diagnosis(request, answer), departure->hint);
       }
+      if (auto miscount = count_mismatch(request, answer, *trace, reference)) return *miscount;
     }
     return Verdict::pass(reference_times(requests.front()));
   }

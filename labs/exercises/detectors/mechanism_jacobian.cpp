@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
+#include <utility>
 
 #include "exercises/linkage_checks.hpp"
 #include "exercises/numbers.hpp"
@@ -35,11 +36,6 @@ std::string entry_text(const JacobianEvidence& e, const Entry& entry) {
                      digits17(e.reference(entry.row, entry.col)));
 }
 
-// J of a degrees mix-up carries the chain-rule factor `scale`, or not (both are tried).
-ClosureValues evaluate_in(const AngleUnits& units, const ClosureEvaluator& evaluate, double driver, const Eigen::VectorXd& theta) {
-  return evaluate(units.driver_too ? driver * units.scale : driver, theta * units.scale);
-}
-
 // A relative match of a hypothesis to the student's numbers: 1e-6 of their scale (other roundings
 // of pi and of the conversion stay far below it; a different cause stays far above it).
 bool matches(const Eigen::MatrixXd& got, const Eigen::MatrixXd& hypothesis, double& worst) {
@@ -56,17 +52,77 @@ std::optional<std::string> transposed(const JacobianEvidence& e) {
                      sci(worst), digits17(e.student(0, 1)), e.angle_name(0));
 }
 
+// J of a degrees mix-up carries the chain-rule factors (column k times angle k's scale), or not:
+// both are tried. A mix that leaves J as it is (the driver alone, where J does not depend on it)
+// explains nothing.
 std::optional<std::string> degrees(const JacobianEvidence& e) {
-  for (const AngleUnits& units : angle_units()) {
+  for (const AngleUnits& units : angle_units(static_cast<int>(e.theta.size()), e.angle_name)) {
     const ClosureValues values = evaluate_in(units, e.evaluate, e.driver, e.theta);
     for (const bool chain : {false, true}) {
+      const Eigen::MatrixXd hypothesis = chain ? Eigen::MatrixXd(values.J * units.angle_scales.asDiagonal()) : values.J;
+      if (chain && (units.angle_scales.array() == 1.0).all()) continue;
+      if ((hypothesis - e.reference).cwiseAbs().maxCoeff() <= e.tolerance) continue;
       double worst = 0.0;
-      if (!matches(e.student, chain ? Eigen::MatrixXd(values.J * units.scale) : values.J, worst)) continue;
+      if (!matches(e.student, hypothesis, worst)) continue;
+      const double scale = units.angle_scales.cwiseAbs().maxCoeff() > 1.0 ? 180.0 / pi : pi / 180.0;
       return fmt::format("your J is numlab's J with {}{} (to {}; J[0][0] = {} where numlab's is {}): the request's "
                          "angles are radians, and sin and cos take radians",
-                         units.what, chain ? fmt::format(", times {:.6g}", units.scale) : "", sci(worst),
+                         units.what, chain ? fmt::format(", times {:.6g} by the chain rule", scale) : "", sci(worst),
                          digits17(e.student(0, 0)), digits17(e.reference(0, 0)));
     }
+  }
+  return std::nullopt;
+}
+
+// got's rows in another order: (your row, numlab's row) for each row that differs, when each equals
+// exactly one other row of `expected` and those rows are the differing rows themselves (a
+// permutation of them). Columns: the transposes; f: a one-column matrix.
+std::optional<std::vector<std::pair<int, int>>> reordering(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected,
+                                                           double tolerance) {
+  const auto rows = static_cast<int>(got.rows());
+  auto same = [&](int mine, int theirs) { return (got.row(mine) - expected.row(theirs)).cwiseAbs().maxCoeff() <= tolerance; };
+  std::vector<bool> differs(static_cast<std::size_t>(rows)), taken(static_cast<std::size_t>(rows), false);
+  for (int i = 0; i < rows; ++i) differs[static_cast<std::size_t>(i)] = !same(i, i);
+  std::vector<std::pair<int, int>> moved;
+  for (int i = 0; i < rows; ++i) {
+    if (!differs[static_cast<std::size_t>(i)]) continue;
+    int match = -1, matches_found = 0;
+    for (int j = 0; j < rows; ++j) {
+      if (j != i && same(i, j)) {
+        match = j;
+        ++matches_found;
+      }
+    }
+    if (matches_found != 1 || !differs[static_cast<std::size_t>(match)] || taken[static_cast<std::size_t>(match)]) {
+      return std::nullopt;
+    }
+    taken[static_cast<std::size_t>(match)] = true;
+    moved.emplace_back(i, match);
+  }
+  if (moved.size() < 2) return std::nullopt;
+  return moved;
+}
+
+// "your row 0 is numlab's row 1, your row 1 is numlab's row 0, ..." (the first four).
+std::string reordering_text(const std::vector<std::pair<int, int>>& moved, const std::function<std::string(int)>& label) {
+  std::string text;
+  for (std::size_t m = 0; m < std::min<std::size_t>(4, moved.size()); ++m) {
+    text += fmt::format("{}your {} is numlab's {}", m == 0 ? "" : ", ", label(moved[m].first), label(moved[m].second));
+  }
+  return text + (moved.size() > 4 ? fmt::format(", ... ({} in all)", moved.size()) : "");
+}
+
+std::optional<std::string> reordered(const JacobianEvidence& e) {
+  if (const auto rows = reordering(e.student, e.reference, e.tolerance)) {
+    return fmt::format("your J's rows are numlab's in another order ({}; each row to {}): row i holds the derivatives of "
+                       "f[i], the task's equation i, in the task's order",
+                       reordering_text(*rows, [](int i) { return fmt::format("row {}", i); }), sci(e.tolerance));
+  }
+  if (const auto columns = reordering(e.student.transpose(), e.reference.transpose(), e.tolerance)) {
+    return fmt::format("your J's columns are numlab's in another order ({}; each column to {}): column k holds the "
+                       "derivatives by the request's k-th angle, {} for k = 0, {} for k = 1, ...",
+                       reordering_text(*columns, [&](int k) { return fmt::format("column {} (d/d {})", k, e.angle_name(k)); }),
+                       sci(e.tolerance), e.angle_name(0), e.angle_name(1));
   }
   return std::nullopt;
 }
@@ -287,9 +343,49 @@ std::optional<std::string> residual_sign(const ResidualEvidence& e) {
                      digits17(e.student(first)), digits17(e.reference(first)));
 }
 
+std::string unknown_name(const ResidualEvidence& e, int k) { return e.angle_name ? e.angle_name(k) : fmt::format("angle {}", k); }
+
+// One angle's terms entered with the opposite sign: f is a sum of +-l cos and +-l sin terms, so
+// angle k's part of f is (f(theta) - f(theta with theta_k + pi)) / 2, and every differing entry is
+// numlab's minus twice that part.
+std::optional<std::string> term_sign(const ResidualEvidence& e) {
+  std::vector<int> rows;
+  for (int i = 0; i < e.student.size(); ++i) {
+    if (std::abs(e.student(i) - e.reference(i)) > e.tolerance) rows.push_back(i);
+  }
+  if (rows.empty()) return std::nullopt;
+  for (int k = 0; k < e.theta.size(); ++k) {
+    Eigen::VectorXd turned = e.theta;
+    turned(k) += pi;
+    const Eigen::VectorXd part = (e.reference - e.evaluate(e.driver, turned).f) / 2.0;
+    const bool flipped = std::all_of(rows.begin(), rows.end(), [&](int i) {
+      return std::abs(part(i)) > e.tolerance && std::abs(e.student(i) - (e.reference(i) - 2.0 * part(i))) <= e.tolerance;
+    });
+    if (!flipped) continue;
+    std::string row_list;
+    for (const int row : rows) row_list += fmt::format("{}f[{}]", row_list.empty() ? "" : ", ", row);
+    const int i = rows.front();
+    return fmt::format("{0}'s term has the opposite sign in {1} (f[{2}] = {3} = numlab's {4} minus twice its {0} term "
+                       "{5}): each link's vector enters its loop's equation with the sign the task's equation gives it",
+                       unknown_name(e, k), row_list, i, digits17(e.student(i)), digits17(e.reference(i)),
+                       digits17(part(i)));
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> residual_order(const ResidualEvidence& e) {
+  const auto moved = reordering(e.student, e.reference, e.tolerance);
+  if (!moved) return std::nullopt;
+  return fmt::format("your f's entries are numlab's in another order ({}; each to {}): f[i] is the task's equation i, "
+                     "in the task's order",
+                     reordering_text(*moved, [](int i) { return fmt::format("f[{}]", i); }), sci(e.tolerance));
+}
+
 std::optional<std::string> residual_degrees(const ResidualEvidence& e) {
-  for (const AngleUnits& units : angle_units()) {
+  for (const AngleUnits& units :
+       angle_units(static_cast<int>(e.theta.size()), [&](int k) { return unknown_name(e, k); })) {
     const Eigen::VectorXd f = evaluate_in(units, e.evaluate, e.driver, e.theta).f;
+    if ((f - e.reference).cwiseAbs().maxCoeff() <= e.tolerance) continue;  // the same f: it explains nothing
     const double worst = (e.student - f).cwiseAbs().maxCoeff();
     if (worst > 1e-6 * std::max(1.0, f.cwiseAbs().maxCoeff())) continue;
     return fmt::format("your f is numlab's f with {} (to {}; f[0] = {} where numlab's is {}): the request's angles are "
@@ -301,13 +397,32 @@ std::optional<std::string> residual_degrees(const ResidualEvidence& e) {
 
 }  // namespace
 
-const std::vector<AngleUnits>& angle_units() {
-  static const std::vector<AngleUnits> units = {
-      {180.0 / pi, false, "the angles converted to degrees before sin and cos (sin(theta * 180/pi))"},
-      {180.0 / pi, true, "the angles and the driver converted to degrees before sin and cos (sin(theta * 180/pi))"},
-      {pi / 180.0, false, "the angles read as degrees (sin(theta * pi/180), Octave's sind)"},
-      {pi / 180.0, true, "the angles and the driver read as degrees (sin(theta * pi/180), Octave's sind)"}};
+std::vector<AngleUnits> angle_units(int unknowns, const std::function<std::string(int)>& angle_name) {
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(unknowns);
+  const double to_degrees = 180.0 / pi, to_radians = pi / 180.0;
+  std::vector<AngleUnits> units = {
+      {1.0, ones * to_degrees, "the angles converted to degrees before sin and cos (sin(theta * 180/pi))"},
+      {to_degrees, ones * to_degrees,
+       "the angles and the driver converted to degrees before sin and cos (sin(theta * 180/pi))"},
+      {1.0, ones * to_radians, "the angles read as degrees (sin(theta * pi/180), Octave's sind)"},
+      {to_radians, ones * to_radians, "the angles and the driver read as degrees (sin(theta * pi/180), Octave's sind)"},
+      {to_radians, ones, "the driver angle read as degrees (radians() or deg2rad of an angle already in radians)"},
+      {to_degrees, ones, "the driver angle converted to degrees before sin and cos"}};
+  for (int k = 0; k < unknowns; ++k) {
+    for (const double scale : {to_degrees, to_radians}) {
+      Eigen::VectorXd scales = ones;
+      scales(k) = scale;
+      units.push_back({1.0, scales,
+                       scale == to_degrees ? fmt::format("{} alone converted to degrees before sin and cos", angle_name(k))
+                                           : fmt::format("{} alone read as degrees (sind({}))", angle_name(k), angle_name(k))});
+    }
+  }
   return units;
+}
+
+ClosureValues evaluate_in(const AngleUnits& units, const ClosureEvaluator& evaluate, double driver,
+                          const Eigen::VectorXd& theta) {
+  return evaluate(driver * units.driver_scale, theta.cwiseProduct(units.angle_scales));
 }
 
 std::string sorted_digits(double length) {
@@ -323,6 +438,7 @@ std::vector<Detector> jacobian_detectors(const JacobianEvidence& evidence) {
       {"degrees_for_radians", Specificity::exact, [e] { return degrees(*e); }},
       {"transposed_pair", Specificity::exact, [e] { return transposed_pair(*e); }},
       {"mislabelled_entries", Specificity::exact, [e] { return mislabelled(*e); }},
+      {"mislabelled_entries", Specificity::exact, [e] { return reordered(*e); }},
       {"wrong_angle_column", Specificity::exact, [e] { return wrong_angle_column(*e); }},
       {"derivative_sign", Specificity::exact, [e] { return derivative_sign(*e); }},
       {"wrong_link", Specificity::exact, [e] { return wrong_link(*e); }},
@@ -338,7 +454,9 @@ std::optional<Diagnosis> diagnose_residual(const ResidualEvidence& evidence, std
   const ResidualEvidence* e = &evidence;
   std::vector<Detector> detectors = {
       {"f_sign", Specificity::exact, [e] { return residual_sign(*e); }},
+      {"f_sign", Specificity::exact, [e] { return term_sign(*e); }},
       {"degrees_for_radians", Specificity::exact, [e] { return residual_degrees(*e); }},
+      {"mislabelled_entries", Specificity::exact, [e] { return residual_order(*e); }},
   };
   for (Detector& detector : extra) detectors.push_back(std::move(detector));
   return diagnose(detectors);

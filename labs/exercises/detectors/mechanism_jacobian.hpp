@@ -52,8 +52,9 @@ struct JacobianEvidence {
 };
 
 // The ranked detectors of J's causes (transposed_jacobian, degrees_for_radians, transposed_pair,
-// mislabelled_entries, wrong_angle_column, derivative_sign, wrong_link,
-// finite_difference_jacobian): the most specific that fires, or nothing.
+// mislabelled_entries (two columns' entries swapped, or whole rows or columns in another order),
+// wrong_angle_column, derivative_sign, wrong_link, finite_difference_jacobian): the most specific
+// that fires, or nothing.
 std::vector<Detector> jacobian_detectors(const JacobianEvidence& evidence);
 std::optional<Diagnosis> diagnose_jacobian(const JacobianEvidence& evidence);
 
@@ -65,19 +66,28 @@ struct ResidualEvidence {
   Eigen::VectorXd theta;
   ClosureEvaluator evaluate;
   double tolerance = 0.0;
+  std::function<std::string(int)> angle_name = {};  // "theta3" for unknown 0; "angle k" when not given
 };
 
-// f_sign and degrees_for_radians, then `extra` (an exercise's own, e.g. a swapped offset).
+// f_sign (f negated, or one angle's term with the opposite sign), degrees_for_radians,
+// mislabelled_entries (f's entries in another order), then `extra` (an exercise's own, e.g. a
+// swapped offset).
 std::optional<Diagnosis> diagnose_residual(const ResidualEvidence& evidence, std::vector<Detector> extra = {});
 
-// One way of mixing degrees and radians: the angles (and the driver, when `driver_too`) are
-// multiplied by `scale` before sin and cos.
+// One way of mixing degrees and radians: the driver angle is multiplied by `driver_scale` and
+// unknown k by angle_scales(k) before sin and cos (1 where the unit is right).
 struct AngleUnits {
-  double scale;
-  bool driver_too;
-  const char* what;  // "the angles converted to degrees before sin and cos (sin(theta * 180/pi))"
+  double driver_scale = 1.0;
+  Eigen::VectorXd angle_scales;
+  std::string what;  // "the angles converted to degrees before sin and cos (sin(theta * 180/pi))"
 };
-const std::vector<AngleUnits>& angle_units();
+// Every mix the detectors test, for `unknowns` angles: all angles (with the driver or without it),
+// the driver alone (radians(crank) on a crank already in radians), and each angle alone, each both
+// ways (180/pi and pi/180). `angle_name` names unknown k.
+std::vector<AngleUnits> angle_units(int unknowns, const std::function<std::string(int)>& angle_name);
+// numlab's f and J at the driver and angles as `units` mixes them (J without the chain factor).
+ClosureValues evaluate_in(const AngleUnits& units, const ClosureEvaluator& evaluate, double driver,
+                          const Eigen::VectorXd& theta);
 
 // The digits of a length to 0.1, sorted: 67.5 and 65.7 give the same (a transposed typed constant).
 std::string sorted_digits(double length);

@@ -70,10 +70,43 @@ std::string trace_text(const std::vector<TraceRow>& rows, std::size_t count) {
 
 std::optional<std::string> one_iteration_too_many(const NewtonEvidence& e) {
   const long long rows = e.trace ? static_cast<long long>(e.trace->size()) : 0;
-  if (e.iterations != e.max_iterations + 1 && rows != e.max_iterations + 1) return std::nullopt;
-  return fmt::format("your loop made {} iterations where max_iterations was {}: it tests the limit after the step, or "
-                     "with > where >= belongs; stop when the count reaches max_iterations",
-                     std::max(e.iterations, rows), e.max_iterations);
+  if (e.iterations == e.max_iterations + 1 || rows == e.max_iterations + 1) {
+    return fmt::format("your loop made {} iterations where max_iterations was {}: it tests the limit after the step, "
+                       "or with > where >= belongs; stop when the count reaches max_iterations",
+                       std::max(e.iterations, rows), e.max_iterations);
+  }
+  // One step past a residual that already passed the test: numlab's count plus one, where the
+  // stop rule decides the count, with numlab's Newton before it.
+  if (!e.decided_iterations || e.status != "converged") return std::nullopt;
+  const long long decided = *e.decided_iterations;
+  if (decided < 1 || (e.iterations != decided + 1 && rows != decided + 1)) return std::nullopt;
+  const auto reference = simulate(e, {}, e.start);
+  if (static_cast<long long>(reference.size()) != decided || !follows(e, reference, 0, 1e-6)) return std::nullopt;
+  return fmt::format("your Newton reports {} iterations and {} trace rows where numlab's takes {} from the same start: "
+                     "your trace is numlab's for {} rows, and its residual_inf {} after iteration {} already passes "
+                     "max |f_i| <= tolerance {}; test the residual at the current x before each step and stop as soon "
+                     "as it passes (one step after the test passed is one iteration too many)",
+                     e.iterations, rows, decided, decided, sci(reference.back().residual_inf), decided, sci(e.tolerance));
+}
+
+// Every row of the trace the same, residual above the tolerance and a step above rounding: Newton
+// from the same x takes the same step, so the x it steps from never changes (the new angles kept
+// in another variable, f and J evaluated at the old one).
+std::optional<std::string> repeating_rows(const NewtonEvidence& e) {
+  if (!e.trace || e.trace->size() < 2) return std::nullopt;
+  const TraceRow first = e.trace->front();
+  const double step_floor = inverse_inf_norm(e.evaluate(e.driver, e.start).J) * e.rounding;
+  if (first.residual_inf <= e.tolerance + e.rounding || first.step_inf <= step_floor) return std::nullopt;
+  for (const TraceRow& row : *e.trace) {
+    if (std::abs(row.residual_inf - first.residual_inf) > 1e-9 * first.residual_inf ||
+        std::abs(row.step_inf - first.step_inf) > 1e-9 * first.step_inf) {
+      return std::nullopt;
+    }
+  }
+  return fmt::format("every one of your {} trace rows repeats row 1 (residual_inf = {}, step_inf = {}): Newton from the "
+                     "same x takes the same step, so the x each iteration starts from is never updated; store x <- x + "
+                     "dx in the variable f and J are evaluated at",
+                     e.trace->size(), digits17(first.residual_inf), digits17(first.step_inf));
 }
 
 std::optional<std::string> x_never_updated(const NewtonEvidence& e) {
@@ -85,7 +118,7 @@ std::optional<std::string> x_never_updated(const NewtonEvidence& e) {
   if (flat) {
     for (const TraceRow& row : *e.trace) flat = flat && std::abs(row.residual_inf - start_residual) <= 1e-9 * start_residual;
   }
-  if (!unmoved && !flat) return std::nullopt;
+  if (!unmoved && !flat) return repeating_rows(e);
   return fmt::format("the angles never move: {} after {} iterations{}, ||f(start)||_inf = {}: x <- x + dx must be stored "
                      "(in Python, x + dx makes a new array; x = x + dx or x += dx keeps it)",
                      unmoved ? "your reply's angles are the start's" : "your angles stay at the start",
@@ -153,15 +186,38 @@ std::optional<std::string> angle_from_other_axis(const NewtonEvidence& e) {
   return std::nullopt;
 }
 
+// Degrees where radians belong: the angles solve f with the units mixed (all angles, the driver,
+// one angle), or the student's Newton is Newton's on a closure whose driver or constant angle is
+// in degrees (its trace follows that Newton, or its angles solve that closure).
 std::optional<std::string> degrees(const NewtonEvidence& e) {
   if (!residual_too_large(e)) return std::nullopt;
   const double allowed = 10.0 * (e.tolerance + e.rounding) + 1e-9 * e.links_sum;
-  for (const AngleUnits& units : angle_units()) {
-    const double r = e.evaluate(units.driver_too ? e.driver * units.scale : e.driver, e.x * units.scale).f.lpNorm<Eigen::Infinity>();
+  const auto units = angle_units(static_cast<int>(e.x.size()), e.angle_name);
+  for (const AngleUnits& mix : units) {
+    const double r = evaluate_in(mix, e.evaluate, e.driver, e.x).f.lpNorm<Eigen::Infinity>();
     if (r > allowed) continue;
     return fmt::format("your angles solve f with {}: ||f||_inf = {} there, {} at your angles in radians; the request's "
                        "angles are radians, and sin and cos take radians",
-                       units.what, sci(r), sci(residual_at(e, e.x)));
+                       mix.what, sci(r), sci(residual_at(e, e.x)));
+  }
+  std::vector<SlippedClosure> worlds = e.constant_angle_slips;
+  for (const AngleUnits& mix : units) {
+    if (mix.driver_scale == 1.0 || (mix.angle_scales.array() != 1.0).any()) continue;  // the driver alone
+    worlds.push_back({mix.what, [mix, evaluate = e.evaluate](double driver, const Eigen::VectorXd& x) {
+                        return evaluate(driver * mix.driver_scale, x);
+                      }});
+  }
+  for (const SlippedClosure& world : worlds) {
+    const double r = world.evaluate(e.driver, e.x).f.lpNorm<Eigen::Infinity>();
+    const bool traced = follows(e, simulate_newton(world.evaluate, e.driver, e.start, e.tolerance, e.max_iterations, {}), 3, 1e-6);
+    if (r > allowed && !traced) continue;
+    return fmt::format("your Newton solves the closure with {}: {}; the request's angles are radians, and sin and cos "
+                       "take radians",
+                       world.what,
+                       traced ? fmt::format("your trace (residual_inf {}) is numlab's Newton on that closure from the "
+                                            "same start", trace_text(*e.trace, 3))
+                              : fmt::format("||f||_inf = {} there at your angles, {} with the task's", sci(r),
+                                            sci(residual_at(e, e.x))));
   }
   return std::nullopt;
 }

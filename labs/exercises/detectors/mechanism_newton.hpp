@@ -19,6 +19,12 @@
 
 namespace numlab::exercises {
 
+// numlab's closure with one slip in it, and what the slip is ("the bend 20 deg used as 20 rad").
+struct SlippedClosure {
+  std::string what;
+  ClosureEvaluator evaluate;
+};
+
 struct NewtonEvidence {
   // The request.
   double driver = 0.0;
@@ -37,6 +43,12 @@ struct NewtonEvidence {
   double rounding = 0.0;              // what re-evaluating f adds (1e3 eps L)
   double links_sum = 1.0;             // L, f's scale
   std::function<std::string(int)> angle_name;
+  // numlab's iteration count from this start where the task's stop rule decides it beyond
+  // rounding (decided_iterations in linkage_checks.hpp), else nothing.
+  std::optional<long long> decided_iterations;
+  // The closure with a constant angle of the mechanism typed in degrees and used as radians (the
+  // Mustang's bend pi/9 as 20): worlds a student's Newton may be solving.
+  std::vector<SlippedClosure> constant_angle_slips;
 };
 
 // One Newton iteration loop as a student may have written it: numlab's f and J, and one mistake.

@@ -155,3 +155,26 @@ TEST_CASE("jansen-jacobian: a column from the wrong angle is named with the angl
     return reply;
   }, "J is the derivative", "J[2][2]");
 }
+
+TEST_CASE("jansen-newton: one more step after the residual passed is caught by the count and diagnosed") {
+  const Solver extra_step = [](const nlohmann::json& request) {
+    nlohmann::json reply = jansen_newton_reference::solve(request);
+    if (reply["status"] != "converged") return reply;
+    const double crank = request["crank_angle"].get<double>();
+    const auto angles = reply["theta"].get<std::vector<double>>();
+    jansen_reference::Vector8 x(angles.data()), f;
+    jansen_reference::Matrix8 J;
+    jansen_reference::closure(crank, x, f, J);
+    const jansen_reference::Vector8 dx = J.partialPivLu().solve(-f);
+    x += dx;
+    jansen_reference::closure(crank, x, f, J);
+    reply["trace"].push_back({{"residual_inf", f.lpNorm<Eigen::Infinity>()}, {"step_inf", dx.lpNorm<Eigen::Infinity>()}});
+    reply["iterations"] = reply["iterations"].get<int>() + 1;
+    reply["theta"] = std::vector<double>(x.data(), x.data() + 8);
+    return reply;
+  };
+  require_caught("jansen-newton", extra_step, "The trace follows", "numlab's Newton from the same start takes");
+  const auto diagnosis = overall_diagnosis(run("jansen-newton", extra_step));
+  REQUIRE(diagnosis);
+  CHECK(diagnosis->cause == "one_iteration_too_many");
+}

@@ -190,6 +190,16 @@ TEST_CASE("f detectors: f negated, f in degrees, none on numlab's f") {
 
 namespace {
 
+// numlab's Jansen closure with other lengths: a student's f and J with a wrong constant.
+ClosureEvaluator with_lengths(const numlab::mechanisms::JansenLengths& lengths) {
+  return [lengths](double driver, const Eigen::VectorXd& theta) {
+    JansenClosure::Vector f;
+    JansenClosure::Matrix J;
+    JansenClosure(driver, lengths).residual_and_jacobian(JansenClosure::Vector(theta), f, J);
+    return ClosureValues{Eigen::VectorXd(f), Eigen::MatrixXd(J)};
+  };
+}
+
 NewtonEvidence newton_reply(const NewtonLoop& loop, const Eigen::VectorXd* start_override = nullptr,
                             ClosureEvaluator student_closure = evaluator_of<JansenClosure>()) {
   NewtonEvidence e;
@@ -267,13 +277,7 @@ TEST_CASE("Newton detectors: restart from the seed's guess, rounded constants in
   CHECK(cause_of(diagnose_newton(newton_reply({}, &seed))) == "restart_from_seed_guess");
   numlab::mechanisms::JansenLengths rounded;
   rounded.l6 = 62.0;
-  const ClosureEvaluator student = [rounded](double driver, const Eigen::VectorXd& theta) {
-    JansenClosure::Vector f;
-    JansenClosure::Matrix J;
-    JansenClosure(driver, rounded).residual_and_jacobian(JansenClosure::Vector(theta), f, J);
-    return ClosureValues{Eigen::VectorXd(f), Eigen::MatrixXd(J)};
-  };
-  CHECK(cause_of(diagnose_newton(newton_reply({}, nullptr, student))) == "rounded_constants");
+  CHECK(cause_of(diagnose_newton(newton_reply({}, nullptr, with_lengths(rounded)))) == "rounded_constants");
 }
 
 TEST_CASE("Newton detectors: stop tests (signed, pair sum), converged at the limit, one iteration too many") {
@@ -318,4 +322,163 @@ TEST_CASE("Newton detectors: angles in degrees, one angle reported as pi minus i
   const auto diagnosis = diagnose_newton(e);
   CHECK(cause_of(diagnosis) == "angle_from_other_axis");
   CHECK(diagnosis->evidence.find("theta5 is reported as pi minus the angle") != std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Degrees in one place only, entries in another order, one link's term with the opposite sign.
+
+TEST_CASE("J detectors: one angle alone in degrees, with or without its chain factor") {
+  Eigen::VectorXd theta = pose();
+  theta(6) *= pi / 180.0;  // sind(theta7) where sin(theta7) belongs
+  const Eigen::MatrixXd sind = at(theta).J;
+  auto diagnosis = diagnose_J(sind);
+  CHECK(cause_of(diagnosis) == "degrees_for_radians");
+  CHECK(shown(diagnosis).find("theta7 alone read as degrees") != std::string::npos);
+  Eigen::MatrixXd chained = sind;
+  chained.col(6) *= pi / 180.0;
+  CHECK(cause_of(diagnose_J(chained)) == "degrees_for_radians");
+}
+
+TEST_CASE("J detectors: whole rows or whole columns in another order are mislabelled entries") {
+  const Eigen::MatrixXd J = at(pose()).J;
+  Eigen::MatrixXd rows = J;
+  rows.row(2) = J.row(3);  // loop 2's y row first
+  rows.row(3) = J.row(2);
+  rows.row(6) = J.row(7);
+  rows.row(7) = J.row(6);
+  auto diagnosis = diagnose_J(rows);
+  CHECK(cause_of(diagnosis) == "mislabelled_entries");
+  CHECK(shown(diagnosis).find("your row 2 is numlab's row 3") != std::string::npos);
+  Eigen::MatrixXd columns = J;  // theta2, theta4, theta8 rotated
+  columns.col(1) = J.col(3);
+  columns.col(3) = J.col(7);
+  columns.col(7) = J.col(1);
+  diagnosis = diagnose_J(columns);
+  CHECK(cause_of(diagnosis) == "mislabelled_entries");
+  CHECK(shown(diagnosis).find("your column 3 (d/d theta4) is numlab's column 7 (d/d theta8)") != std::string::npos);
+  // Two rows that each match no other row are no reordering.
+  Eigen::MatrixXd scaled = J;
+  scaled.row(2) *= 1.5;
+  scaled.row(3) *= 1.5;
+  CHECK(cause_of(diagnose_J(scaled)) != "mislabelled_entries");
+}
+
+TEST_CASE("f detectors: the crank alone in degrees, one angle in degrees, entries in another order, one link's sign") {
+  const Eigen::VectorXd theta = pose();
+  const Eigen::VectorXd f = at(theta).f;
+  const double tolerance = 1e3 * eps * jansen_links_sum();
+  auto diagnose_f = [&](const Eigen::VectorXd& student) {
+    return diagnose_residual({student, f, crank, theta, evaluator_of<JansenClosure>(), tolerance, jansen_angle_name});
+  };
+  // radians(crank) on a crank already in radians.
+  auto diagnosis = diagnose_f(at(theta, crank * pi / 180.0).f);
+  CHECK(cause_of(diagnosis) == "degrees_for_radians");
+  CHECK(shown(diagnosis).find("the driver angle read as degrees") != std::string::npos);
+  Eigen::VectorXd one = theta;
+  one(2) *= 180.0 / pi;
+  diagnosis = diagnose_f(at(one).f);
+  CHECK(cause_of(diagnosis) == "degrees_for_radians");
+  CHECK(shown(diagnosis).find("theta3 alone converted to degrees") != std::string::npos);
+  // Each loop's equations in the order (y, x): f's entries permuted in pairs.
+  Eigen::VectorXd swapped = f;
+  for (int i = 0; i < 8; i += 2) std::swap(swapped(i), swapped(i + 1));
+  diagnosis = diagnose_f(swapped);
+  CHECK(cause_of(diagnosis) == "mislabelled_entries");
+  CHECK(shown(diagnosis).find("your f[0] is numlab's f[1]") != std::string::npos);
+  // l5's vector (theta5, rows 6 and 7 only) entered with a plus sign: numlab's closure with l5 negated.
+  numlab::mechanisms::JansenLengths flipped;
+  flipped.l5 = -flipped.l5;
+  JansenClosure::Vector plus;
+  JansenClosure(crank, flipped).residual(JansenClosure::Vector(theta), plus);
+  diagnosis = diagnose_f(Eigen::VectorXd(plus));
+  CHECK(cause_of(diagnosis) == "f_sign");
+  CHECK(shown(diagnosis).find("theta5's term has the opposite sign in f[6], f[7]") != std::string::npos);
+  // A wrong length for l5 is not a sign.
+  numlab::mechanisms::JansenLengths longer;
+  longer.l5 = 41.0;
+  JansenClosure(crank, longer).residual(JansenClosure::Vector(theta), plus);
+  CHECK(cause_of(diagnose_f(Eigen::VectorXd(plus))) == "(none)");
+}
+
+namespace {
+
+// Every request of newton_reply: numlab's count where the stop rule decides it.
+std::optional<long long> decided_count(const NewtonEvidence& e) {
+  const auto rows = simulate_newton(e.evaluate, e.driver, e.start, e.tolerance, e.max_iterations, {});
+  const double start_residual = e.evaluate(e.driver, e.start).f.lpNorm<Eigen::Infinity>();
+  return decided_iterations(rows, start_residual, e.tolerance, e.max_iterations,
+                            !rows.empty() && rows.back().residual_inf <= e.tolerance, 1e-6, e.rounding / 10.0);
+}
+
+}  // namespace
+
+TEST_CASE("decided_iterations: the count where no residual is near the tolerance, nothing where one is") {
+  const std::vector<TraceRow> rows = {{1e-2, 0.1}, {1e-5, 1e-2}, {1e-11, 1e-5}};
+  CHECK(decided_iterations(rows, 1.0, 1e-9, 20, true, 1e-6, 1e-14) == 3);
+  CHECK(decided_iterations(rows, 1.0, 1e-11, 20, true, 1e-6, 1e-14) == std::nullopt);  // 1e-11 is the tolerance
+  CHECK(decided_iterations(rows, 1.0, 1.8e-11, 20, true, 1e-6, 1e-14) == std::nullopt);  // within a factor 2 of it
+  CHECK(decided_iterations(rows, 1.0, 2.1e-11, 20, true, 1e-6, 1e-14) == 3);            // just beyond it
+  CHECK(decided_iterations(rows, 1.0, 1e-12, 3, false, 1e-6, 1e-14) == 3);             // stopped at the limit
+  CHECK(decided_iterations(rows, 1.0, 1e-12, 20, false, 1e-6, 1e-14) == std::nullopt);  // stopped for another reason
+}
+
+TEST_CASE("Newton detectors: one step after the residual passed, not at the limit, is one iteration too many") {
+  NewtonEvidence e = newton_reply({});
+  e.decided_iterations = decided_count(e);
+  REQUIRE(e.decided_iterations == static_cast<long long>(e.trace->size()));
+  CHECK(cause_of(diagnose_newton(e)) == "(none)");
+  // The extra step: Newton's rows, then one more from the converged x.
+  Eigen::VectorXd x = e.x;
+  const ClosureValues values = e.evaluate(e.driver, x);
+  const Eigen::VectorXd dx = values.J.partialPivLu().solve(-values.f);
+  x += dx;
+  e.trace->push_back({e.evaluate(e.driver, x).f.lpNorm<Eigen::Infinity>(), dx.lpNorm<Eigen::Infinity>()});
+  e.x = x;
+  e.iterations += 1;
+  const auto diagnosis = diagnose_newton(e);
+  CHECK(cause_of(diagnosis) == "one_iteration_too_many");
+  CHECK(shown(diagnosis).find("your trace is numlab's for " + std::to_string(*e.decided_iterations) + " rows") !=
+        std::string::npos);
+  // Without a decided count (a residual near the tolerance) it is not named.
+  e.decided_iterations.reset();
+  CHECK(cause_of(diagnose_newton(e)) != "one_iteration_too_many");
+}
+
+TEST_CASE("Newton detectors: x frozen while the trace records the first step again and again") {
+  NewtonEvidence e = newton_reply({});
+  const ClosureValues values = e.evaluate(e.driver, e.start);
+  const Eigen::VectorXd dx = values.J.partialPivLu().solve(-values.f);
+  const TraceRow row{e.evaluate(e.driver, e.start + dx).f.lpNorm<Eigen::Infinity>(), dx.lpNorm<Eigen::Infinity>()};
+  e.trace = std::vector<TraceRow>(static_cast<std::size_t>(e.max_iterations), row);
+  e.x = e.start + dx;  // the new angles kept aside, returned at the end
+  e.iterations = e.max_iterations;
+  e.status = "max_iterations";
+  const auto diagnosis = diagnose_newton(e);
+  CHECK(cause_of(diagnosis) == "x_never_updated");
+  CHECK(shown(diagnosis).find("repeats row 1") != std::string::npos);
+}
+
+TEST_CASE("Newton detectors: the crank in degrees, and a closure with a constant angle typed in degrees") {
+  const ClosureEvaluator radians_of_radians = [](double driver, const Eigen::VectorXd& theta) {
+    return evaluator_of<JansenClosure>()(driver * pi / 180.0, theta);
+  };
+  auto diagnosis = diagnose_newton(newton_reply({}, nullptr, radians_of_radians));
+  CHECK(cause_of(diagnosis) == "degrees_for_radians");
+  CHECK(shown(diagnosis).find("the driver angle read as degrees") != std::string::npos);
+  // A slip the exercise lists (here l6 = 61.9 read as another constant: any other closure will do):
+  // a Newton on it that does not converge is named by its trace.
+  numlab::mechanisms::JansenLengths other;
+  other.l6 = 20.0;
+  const ClosureEvaluator slipped = with_lengths(other);
+  NewtonEvidence e = newton_reply({}, nullptr, slipped);
+  REQUIRE(e.status != "converged");
+  CHECK(cause_of(diagnose_newton(e)) != "degrees_for_radians");
+  e.constant_angle_slips = {{"the test's slip", slipped}};
+  diagnosis = diagnose_newton(e);
+  CHECK(cause_of(diagnosis) == "degrees_for_radians");
+  CHECK(shown(diagnosis).find("is numlab's Newton on that closure") != std::string::npos);
+  // The slip listed, numlab's own Newton: nothing.
+  NewtonEvidence correct = newton_reply({});
+  correct.constant_angle_slips = {{"the test's slip", slipped}};
+  CHECK(cause_of(diagnose_newton(correct)) == "(none)");
 }
