@@ -15,6 +15,8 @@
 #include "exercises/replay.hpp"
 #include "exercises/results.hpp"
 #include "exercises/starters.hpp"
+#include "commands/exercise_model.hpp"
+#include "numlab/linalg/matrix_file.hpp"
 #include "numlab/printable_text.hpp"
 
 namespace numlab::cli {
@@ -164,6 +166,9 @@ ExerciseCommand::ExerciseCommand(CLI::App& app) {
       "crank angle of the checks is drawn from it; the same ID gives the same requests";
   variant_options_.push_back(init_->add_option("--variant", variant_, std::string(variant_help) +
                                                                           "; TASK.md names it and its check command"));
+  init_->add_option("--model", model_,
+                    "linkage only: the linkage description FILE.toml (copied into DIR as model.toml) or a shipped "
+                    "model's NAME (numlab models)");
   check_ = command_->add_subcommand("check", "Run COMMAND as a child process and check its replies");
   check_->add_option("NAME", name_, "The exercise")->required();
   check_->add_option_function<std::string>(
@@ -183,6 +188,8 @@ ExerciseCommand::ExerciseCommand(CLI::App& app) {
       ->check(CLI::Validator(timeout_problem, "S"));
   variant_options_.push_back(check_->add_option(
       "--variant", variant_, std::string(variant_help) + "; the reports and results.json name it"));
+  check_->add_option("--model", model_,
+                     "linkage only (and required there): the linkage description FILE.toml or a shipped model's NAME");
   check_->add_option("COMMAND", program_, "The student's program and its arguments, after --")->required();
   replay_ = command_->add_subcommand(
       "replay", "Send a failing check's requests (FILE, from check --out) to COMMAND again; show each reply beside "
@@ -191,6 +198,7 @@ ExerciseCommand::ExerciseCommand(CLI::App& app) {
       ->required();
   replay_->add_option("--timeout", timeout_seconds_, "Seconds allowed per request (default 10)")
       ->check(CLI::Validator(timeout_problem, "S"));
+  replay_->add_option("--model", model_, "linkage only (and required there): the --model the check was run with");
   replay_->add_option("COMMAND", program_, "The student's program and its arguments, after --")->required();
 }
 
@@ -229,10 +237,14 @@ int ExerciseCommand::show() const {
 }
 
 int ExerciseCommand::init() const {
-  // 1. Everything checked before anything is written.
-  const auto& exercise = exercises::find_exercise(name_);
+  // 1. Everything checked before anything is written. A linkage file is copied into DIR as model.toml.
+  std::error_code error;
+  const bool model_file = !model_.empty() && fs::is_regular_file(model_, error);
+  const NamedExercise named = exercise_named(name_, model_, "init", model_file ? "model.toml" : "");
+  const auto& exercise = named.exercise;
   const auto language = exercises::parse_language(language_);
-  const auto files = exercises::starter_files(exercise, language, variant());
+  auto files = exercises::starter_files(exercise, language, variant());
+  if (!named.model_file.empty() && !named.model_shipped) files.push_back({"model.toml", linalg::read_text_file(named.model_file), false});
   // 2. The files, whole or not at all.
   write_starter(folder_, files);
   const std::string folder = without_trailing_slashes(folder_).string();
@@ -245,7 +257,8 @@ int ExerciseCommand::init() const {
 
 int ExerciseCommand::check() const {
   // 1. Everything the user gave, checked before the program is started.
-  const auto& exercise = exercises::find_exercise(name_);
+  const NamedExercise named = exercise_named(name_, model_, "check");
+  const auto& exercise = named.exercise;
   const exercises::Variant variant = this->variant();
   std::vector<PlannedFile> outputs;
   const bool out = !out_dir_.empty();
@@ -263,6 +276,10 @@ int ExerciseCommand::check() const {
   // 4. The verdicts: on stdout, and as files with --out (with a replay file per failing check).
   const auto replays = out ? plan_replays(results, out_dir_, program_, variant)
                            : std::vector<std::pair<std::string, std::string>>{};
+  for (auto& result : results) {  // the linkage exercise's replay needs its --model too
+    const std::size_t end = result.replay.find(" -- ");
+    if (end != std::string::npos && !exercise.arguments.empty()) result.replay.insert(end, " " + shell_words(exercise.arguments));
+  }
   const auto json = exercises::results_json(results, "", variant);
   if (json_) {
     std::cout << json.dump(2) << '\n';
@@ -281,7 +298,8 @@ int ExerciseCommand::check() const {
 int ExerciseCommand::replay() const {
   // 1. The file, its exercise and its check, before the program is started.
   const exercises::ReplayFile file = exercises::read_replay_file(replay_file_);
-  const auto& exercise = exercises::find_exercise(file.exercise);
+  const NamedExercise named = exercise_named(file.exercise, model_, "replay");
+  const auto& exercise = named.exercise;
   const exercises::Check check = exercises::find_check(exercise, file.check, file.variant);
   // 2. The same check, through the same sandbox as `exercise check`.
   exercises::ChildSession session(exercise.name, program_, timeout_seconds_);

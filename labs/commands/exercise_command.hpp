@@ -39,6 +39,7 @@ class ExerciseCommand {
   double timeout_seconds_ = 10.0;
   std::vector<std::string> program_;
   std::string replay_file_;
+  std::string model_;          // init/check --model FILE.toml|NAME (the linkage exercise)
   std::string variant_;        // init/check --variant ID (variant.hpp)
   std::vector<CLI::Option*> variant_options_;  // --variant of init and check: given or not
   bool json_ = false;          // check --format json

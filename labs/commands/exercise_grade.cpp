@@ -16,6 +16,7 @@
 #include "exercises/child_process.hpp"
 #include "exercises/exercise.hpp"
 #include "exercises/grading.hpp"
+#include "commands/exercise_model.hpp"
 #include "exercises/results.hpp"
 #include "numlab/printable_text.hpp"
 #include "output/exit_codes.hpp"
@@ -57,6 +58,8 @@ ExerciseGradeCommand::ExerciseGradeCommand(CLI::App& exercise) {
                        "build.log for C++); refused when it holds a gradebook.csv or a student's folder already")
       ->required()
       ->check(CLI::Validator(folder_problem, "OUT"));
+  command_->add_option("--model", model_,
+                       "linkage only (and required there): the linkage description FILE.toml or a shipped model's NAME");
   variant_option_ = command_->add_option(
       "--variant", variant_,
       "Every student gets this variant ID (the random inputs of the checks drawn from it; gradebook.csv's variant "
@@ -81,7 +84,8 @@ int ExerciseGradeCommand::run() const { return worker_folder_.empty() ? grade_cl
 // One submission: graded, its files written into --out, its row as one JSON line on stdout. Whatever
 // goes wrong is the row's diagnosis, never a stop.
 int ExerciseGradeCommand::grade_one() const {
-  const auto& exercise = exercises::find_exercise(name_);
+  const NamedExercise named = exercise_named(name_, model_, "grade");
+  const auto& exercise = named.exercise;
   exercises::GradedSubmission graded;
   const exercises::Variant variant =
       variant_option_->count() > 0 ? exercises::Variant(variant_) : exercises::Variant();
@@ -112,7 +116,8 @@ int ExerciseGradeCommand::grade_class() const {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   // 1. Everything checked before any submission is run; nothing in OUT overwritten.
-  const auto& exercise = exercises::find_exercise(name_);
+  const NamedExercise named = exercise_named(name_, model_, "grade");
+  const auto& exercise = named.exercise;
   if (submissions_.empty()) throw std::invalid_argument("exercise grade: --submissions DIR is required");
   if (variant_from_folder_ && variant_option_->count() > 0) {
     throw std::invalid_argument("exercise grade: --variant ID and --variant-from-folder exclude each other (one "
@@ -161,6 +166,10 @@ int ExerciseGradeCommand::grade_class() const {
     if (variant_from_folder_ || variant_option_->count() > 0) {
       // One word, so that an ID that starts with '-' is not read as an option.
       workers.back().push_back("--variant=" + (variant_from_folder_ ? student : variant_));
+    }
+    if (!named.model_file.empty()) {
+      workers.back().push_back("--model");
+      workers.back().push_back(fs::absolute(named.model_file).string());
     }
   }
   const int jobs = jobs_ > 0 ? jobs_ : default_jobs();

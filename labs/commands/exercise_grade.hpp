@@ -29,6 +29,7 @@ class ExerciseGradeCommand {
   double build_seconds_ = 300.0;
   std::string worker_folder_;  // the hidden --worker mode
   std::string worker_student_;
+  std::string model_;  // --model FILE.toml|NAME (the linkage exercise)
   std::string variant_;           // --variant ID: every student gets this variant (variant.hpp)
   CLI::Option* variant_option_ = nullptr;
   bool variant_from_folder_ = false;  // --variant-from-folder: each student's folder name is the ID
