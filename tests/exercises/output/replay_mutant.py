@@ -39,7 +39,12 @@ def main(numlab, patch, out_dir):
         sys.exit(f"check exit {check.returncode}, expected 1:\n{check.stdout}\n{check.stderr}")
     results = json.load(open(os.path.join(verdict, "results.json"), encoding="utf-8"))
     failing = [(k, test) for k, test in enumerate(results["tests"], 1) if test["status"] != "pass"]
-    first_line, second_line = check.stdout.splitlines()[:2]
+    lines_out = check.stdout.splitlines()
+    if results.get("diagnosis"):  # the report leads with the run's diagnosis, then the failure to fix first
+        if lines_out[0] != "Diagnosis: " + results["diagnosis"]:
+            problems.append(f"the text does not lead with the diagnosis: {lines_out[0]!r}")
+        lines_out = lines_out[1:]
+    first_line, second_line = lines_out[:2]
     first = failing[0][1]
     if not first_line.startswith(f"Fix first: {first['name']} — "):
         problems.append(f"the text does not lead with the first failure: {first_line!r}")

@@ -12,14 +12,14 @@ using Catch::Matchers::Contains;
 namespace {
 
 CheckResult passed(const std::string& name, int task_id = 1) {
-  return {name, task_id, CheckStatus::pass, "", "", "", 0.00041, {{"numlab GEPP", 0.000012}, {"GSL LU", 0.000009}}, {}, ""};
+  return {name, task_id, CheckStatus::pass, "", "", "", 0.00041, {{"numlab GEPP", 0.000012}, {"GSL LU", 0.000009}}, {}, "", std::nullopt};
 }
 CheckResult failed(const std::string& name, const std::string& message, const std::string& hint = "",
                    const std::string& output = "") {
-  return {name, 2, CheckStatus::fail, message, hint, output, 0.0005, {{"GSL LU", 0.00001}}, {}, ""};
+  return {name, 2, CheckStatus::fail, message, hint, output, 0.0005, {{"GSL LU", 0.00001}}, {}, "", std::nullopt};
 }
 CheckResult errored(const std::string& name, const std::string& message) {
-  return {name, 3, CheckStatus::error, message, "", "", 0.0, {}, {}, ""};
+  return {name, 3, CheckStatus::error, message, "", "", 0.0, {}, {}, "", std::nullopt};
 }
 
 // 2 pass, 1 fails with a hint and stderr, 1 errors.
@@ -40,7 +40,9 @@ TEST_CASE("results.json has the Exercism v3 shape: a mix of pass, fail and error
   REQUIRE(json["tests"].size() == 4);
   std::vector<std::string> keys;
   for (const auto& [key, value] : json.items()) keys.push_back(key);
-  CHECK(keys == std::vector<std::string>{"version", "status", "message", "tests"});
+  CHECK(keys == std::vector<std::string>{"version", "status", "message", "diagnosis", "diagnosis_cause", "variant", "tests"});
+  CHECK(json["diagnosis"].is_null());  // no detector fired: the hint stays in its test
+  CHECK(json["diagnosis_cause"].is_null());
 
   const auto& pass = json["tests"][0];
   CHECK(pass["name"] == "solves a 3x3 system");
@@ -162,4 +164,54 @@ TEST_CASE("A mismatched number shows 17 significant digits and the difference", 
   CHECK(digits17(0.1) == "0.10000000000000001");
   CHECK(difference(0.5, 0.0) == "differs by 0.5");  // no relative difference from 0
   CHECK(difference(1.0, 1.0) == "differs by 0, 0 relative");
+}
+
+TEST_CASE("The most specific diagnosis leads the results and replaces its check's hint", "[results][diagnosis]") {
+  std::vector<CheckResult> results = mixed();
+  CheckResult family = failed("converges quadratically", "iteration 3: ratio 0.5", "check J");
+  family.diagnosis = Diagnosis{"wrong_jacobian", Specificity::family, "J is not the derivative of f"};
+  CheckResult exact = failed("sweeps like Gauss-Seidel", "sweep 1 differs", "a generic hint");
+  exact.diagnosis = Diagnosis{"jacobi_sweep", Specificity::exact, "your sweep 1 equals a Jacobi sweep to 1e-16"};
+  CheckResult later_exact = failed("another", "differs");
+  later_exact.diagnosis = Diagnosis{"stop_test", Specificity::exact, "a later exact cause"};
+  results.push_back(family);
+  results.push_back(exact);
+  results.push_back(later_exact);
+
+  const auto json = results_json(results);
+  CHECK(json["diagnosis_cause"] == "jacobi_sweep");  // exact beats family; the first exact wins
+  CHECK(json["diagnosis"] == "your sweep 1 equals a Jacobi sweep to 1e-16");
+  CHECK(json["tests"][5]["message"] == "sweep 1 differs\nDiagnosis: your sweep 1 equals a Jacobi sweep to 1e-16");
+  CHECK(json["tests"][2]["message"] == "column 1: you pivoted on row 1 (|a| = 0.21)\nHint: no pivoting: you keep the diagonal entry");
+
+  const Exercise exercise = numlab::test::tiny_exercise();
+  const std::string text = results_text(exercise, results);
+  CHECK(text.rfind("Diagnosis: your sweep 1 equals a Jacobi sweep to 1e-16\n", 0) == 0);
+  CHECK_THAT(text, !Contains("a generic hint"));
+  const std::string html = results_html(exercise, results, "python3 solution.py");
+  CHECK(html.find("Diagnosis:</strong> your sweep 1 equals") < html.find("Fix first"));
+
+  // A passing check's diagnosis is never reported: only failures are explained.
+  std::vector<CheckResult> passing = {passed("a")};
+  passing.front().diagnosis = exact.diagnosis;
+  CHECK(results_json(passing)["diagnosis"].is_null());
+}
+
+TEST_CASE("diagnose keeps the most specific detector that fires, the first among equals", "[diagnosis]") {
+  int calls = 0;
+  const auto fires = [&](std::string evidence) {
+    return [&calls, evidence] { ++calls; return std::optional<std::string>(evidence); };
+  };
+  const auto silent = [&] { ++calls; return std::optional<std::string>(); };
+  CHECK_FALSE(diagnose({}).has_value());
+  CHECK_FALSE(diagnose({{"a", Specificity::exact, silent}}).has_value());
+  calls = 0;
+  const auto d = diagnose({{"symptom", Specificity::symptom, fires("s")},
+                           {"exact1", Specificity::exact, fires("e1")},
+                           {"exact2", Specificity::exact, fires("e2")},
+                           {"family", Specificity::family, fires("f")}});
+  REQUIRE(d.has_value());
+  CHECK(d->cause == "exact1");
+  CHECK(d->evidence == "e1");
+  CHECK(calls == 2);  // after an exact fired, the equal and lower ones were not tested
 }

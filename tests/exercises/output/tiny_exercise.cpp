@@ -40,7 +40,7 @@ exercises::Exercise tiny_exercise() {
   exercise.stubs.python = "raise NotImplementedError(\"not implemented: reply {'sum': ...}\")\n";
   exercise.stubs.cpp = "throw std::runtime_error(\"not implemented: reply {\\\"sum\\\": ...}\");\n";
   exercise.stubs.octave = "error('not implemented: reply struct(''sum'', ...)');\n";
-  exercise.battery = [] {
+  exercise.battery = [](const exercises::Variant&) {
     return std::vector<Check>{sum_check("the sum of three numbers is exact", 1, {1, 2, 3}),
                               sum_check("the sum of one number is that number", 1, {7}),
                               sum_check("the sum of an empty list is 0", 2, {})};
