@@ -3,6 +3,7 @@
 // matrix's condition number (the tolerances).
 
 #include <Eigen/Core>
+#include <cmath>
 #include <fmt/format.h>
 #include <optional>
 
@@ -369,6 +370,20 @@ Eigen::MatrixXd singular_to_working_precision() {
       .finished();
 }
 
+// Strictly diagonally dominant by columns (GEPP swaps no row; kappa_1 5.5), times 2^-70 (max|a_ij|
+// 5.1e-21, the smallest pivot 3.4e-21): scaling by a power of two is exact, so x is the unscaled
+// system's. Every pivot is a fair share of max|a_ij| and far below any fixed threshold (1e-12, eps,
+// even 1e-20): only a test relative to A's size solves it.
+Eigen::MatrixXd tiny_entries() {
+  const Eigen::MatrixXd dominant = (Eigen::MatrixXd(5, 5) << 4, -1, 2, 0.5, -1,  //
+                                    -1, 5, -1, 1, 2,                             //
+                                    1, 2, -6, 1, 0.5,                            //
+                                    0.5, -1, 1, 4, -1,                           //
+                                    1, 0.5, 1, -1, 5)
+                                       .finished();
+  return std::ldexp(1.0, -70) * dominant;
+}
+
 // Whether numlab's GEPP stops at a pivot <= n*eps*max|a_ij| on generate_system(kind, n, seed).
 bool numlab_finds_singular(std::string_view kind, int n, unsigned seed) {
   const linalg::GeneratedSystem system = linalg::generate_system(kind, n, seed);
@@ -405,6 +420,9 @@ std::vector<Check> gepp_battery(const Variant& variant) {
        [](Session& s) { return solves_accurately(s, {generated("Wilkinson 20x20", "wilkinson", 20)}); }},
       {"GEPP solves a nearly singular system (kappa = 1e10) that is not singular to working precision", 1,
        [nearly, nearly_label](Session& s) { return solves_accurately(s, {given(nearly_label, nearly)}); }},
+      {"GEPP solves a well-conditioned system whose entries are all tiny (times 2^-70): \"singular\" is relative to "
+       "max|a_ij|",
+       2, [](Session& s) { return solves_accurately(s, {given("column-dominant 5x5 times 2^-70", tiny_entries())}); }},
       {"GEPP reports an exactly singular matrix as singular", 2,
        [](Session& s) {
          return reports_singular(s, {given("zero matrix 3x3", Eigen::MatrixXd::Zero(3, 3)),

@@ -46,8 +46,26 @@ Eigen::VectorXd sweep(const Swept& s, Eigen::VectorXd x, SweepKind kind) {
   return x;
 }
 
-bool stops(StopRule rule, const Eigen::VectorXd& x, const Eigen::VectorXd& old, double update, double tolerance) {
+// The residual a residual stop rule tests; 0 for the other rules.
+double residual(StopRule rule, const GaussSeidelProblem& p, const Swept& s, const Eigen::VectorXd& x) {
+  switch (rule) {
+    case StopRule::residual_inf: return (s.c - s.M * x).cwiseAbs().maxCoeff();
+    case StopRule::residual_two: return (s.c - s.M * x).norm();
+    case StopRule::original_residual_inf: return (p.b - p.A * x).cwiseAbs().maxCoeff();
+    case StopRule::original_residual_two: return (p.b - p.A * x).norm();
+    default: return 0.0;
+  }
+}
+
+bool residual_rule(StopRule rule) {
+  return rule == StopRule::residual_inf || rule == StopRule::residual_two || rule == StopRule::original_residual_inf ||
+         rule == StopRule::original_residual_two;
+}
+
+bool stops(StopRule rule, const Eigen::VectorXd& x, const Eigen::VectorXd& old, double update, double tolerance,
+           double residual) {
   const double size = x.cwiseAbs().maxCoeff();
+  if (residual_rule(rule)) return residual <= tolerance;
   switch (rule) {
     case StopRule::signed_change: return (x - old).maxCoeff() < tolerance;
     case StopRule::absolute: return update <= tolerance;
@@ -94,6 +112,10 @@ struct StopHypothesis {
   const char* remedy;
 };
 
+const char* const update_not_residual =
+    "the task's stop test is on the sweep's update, max_i |x_i(new) - x_i(old)| <= tolerance * max(1, max_i |x_i|), "
+    "not on the residual";
+
 const std::vector<StopHypothesis> stop_hypotheses = {
     {"limit_reported_converged", StopRule::limit_converged, "reporting the sweep limit as converged",
      "when max_iterations sweeps pass without the stop test passing, the status is max_iterations"},
@@ -105,6 +127,14 @@ const std::vector<StopHypothesis> stop_hypotheses = {
      "compare update_inf with tolerance * max(1, max_i |x_i|)"},
     {"stop_test", StopRule::relative, "the stop test update_inf <= tolerance * |x|, without max(1, ...)",
      "compare update_inf with tolerance * max(1, max_i |x_i|)"},
+    {"stop_test", StopRule::residual_inf, "the stop test on the residual, max_i |c - M x| <= tolerance",
+     update_not_residual},
+    {"stop_test", StopRule::residual_two, "the stop test on the residual, ||c - M x||_2 <= tolerance",
+     update_not_residual},
+    {"stop_test", StopRule::original_residual_inf, "the stop test on the residual of A x = b, max_i |b - A x| <= tolerance",
+     update_not_residual},
+    {"stop_test", StopRule::original_residual_two, "the stop test on the residual of A x = b, ||b - A x||_2 <= tolerance",
+     update_not_residual},
 };
 
 double row_amplification(const Eigen::MatrixXd& M) {
@@ -193,7 +223,8 @@ GaussSeidelRun replay_gauss_seidel(const GaussSeidelProblem& p, SweptSystem syst
       run.status = "diverged";
       return run;
     }
-    if (stops(stop, x, old, update, p.tolerance)) {
+    const double r = residual_rule(stop) && p.b.size() == p.A.rows() && p.A.cols() == x.size() ? residual(stop, p, *s, x) : 0.0;
+    if (stops(stop, x, old, update, p.tolerance, r)) {
       run.status = "converged";
       return run;
     }
@@ -230,32 +261,62 @@ std::optional<Diagnosis> diagnose_gauss_seidel(const GaussSeidelProblem& p, cons
                            }});
     }
   }
-  // Whole runs: the wrong systems and sweeps (without a trace), then the wrong stop rules.
+  // Whole runs: the wrong systems and sweeps (without a trace), then the wrong stop rules. Where
+  // several end as the student's run does, only those whose x is about as near the student's as the
+  // nearest one's are named (two codes of one method end within rounding of each other; another
+  // method that stops at the same sweep ends farther off).
+  std::vector<std::pair<SweepHypothesis, GaussSeidelRun>> sweep_runs;
+  std::vector<std::pair<StopHypothesis, GaussSeidelRun>> stop_runs;
   if (!answer.trace) {
     for (const SweepHypothesis& h : sweep_hypotheses(p)) {
-      detectors.push_back({h.cause, Specificity::exact, [&, h]() -> std::optional<std::string> {
-                             const GaussSeidelRun run = replay_gauss_seidel(p, h.system, h.kind, StopRule::stated);
-                             if (!run_explains(run, reference, answer)) return std::nullopt;
-                             return fmt::format("Gauss-Seidel with {} ends {} as you do (numlab's ends {}): {}", h.what,
-                                                ending(run.status, run.sweeps()),
-                                                ending(reference.status, reference.sweeps()), h.remedy);
-                           }});
+      sweep_runs.emplace_back(h, replay_gauss_seidel(p, h.system, h.kind, StopRule::stated));
     }
   }
   if (!departing) {
     for (const StopHypothesis& h : stop_hypotheses) {
-      detectors.push_back({h.cause, Specificity::exact, [&, h]() -> std::optional<std::string> {
-                             const GaussSeidelRun run = replay_gauss_seidel(p, SweptSystem::asked,
-                                                                            SweepKind::gauss_seidel, h.rule);
-                             if (!run_explains(run, reference, answer)) return std::nullopt;
-                             const double threshold = p.tolerance * std::max(1.0, run.xs.back().cwiseAbs().maxCoeff());
-                             return fmt::format("{} ends {} as you do, where update_inf is {} and tolerance*max(1,|x|) "
-                                                "= {} (numlab's ends {}): {}",
-                                                h.what, ending(run.status, run.sweeps()), measured(run.updates.back()),
-                                                measured(threshold), ending(reference.status, reference.sweeps()),
-                                                h.remedy);
-                           }});
+      stop_runs.emplace_back(h, replay_gauss_seidel(p, SweptSystem::asked, SweepKind::gauss_seidel, h.rule));
     }
+  }
+  const Eigen::VectorXd* yours = answer.x ? &*answer.x : answer.trace && !answer.trace->empty() ? &answer.trace->back().x
+                                                                                                : nullptr;
+  const auto distance_to = [yours](const GaussSeidelRun& run) {
+    return yours == nullptr || run.xs.empty() ? 0.0 : relative_distance(*yours, run.xs.back());
+  };
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& [h, run] : sweep_runs) {
+    if (run_explains(run, reference, answer)) nearest = std::min(nearest, distance_to(run));
+  }
+  for (const auto& [h, run] : stop_runs) {
+    if (run_explains(run, reference, answer)) nearest = std::min(nearest, distance_to(run));
+  }
+  const auto named = [&](const GaussSeidelRun& run) {
+    return run_explains(run, reference, answer) && distance_to(run) <= std::max(100.0 * nearest, 1e-13);
+  };
+  for (const auto& [h, run] : sweep_runs) {
+    detectors.push_back({h.cause, Specificity::exact, [&, &h = h, &run = run]() -> std::optional<std::string> {
+                           if (!named(run)) return std::nullopt;
+                           return fmt::format("Gauss-Seidel with {} ends {} as you do (numlab's ends {}): {}", h.what,
+                                              ending(run.status, run.sweeps()),
+                                              ending(reference.status, reference.sweeps()), h.remedy);
+                         }});
+  }
+  for (const auto& [h, run] : stop_runs) {
+    detectors.push_back({h.cause, Specificity::exact, [&, &h = h, &run = run]() -> std::optional<std::string> {
+                           if (!named(run)) return std::nullopt;
+                           const double threshold = p.tolerance * std::max(1.0, run.xs.back().cwiseAbs().maxCoeff());
+                           const std::optional<Swept> asked = swept(p, SweptSystem::asked);
+                           const std::string residual_note =
+                               residual_rule(h.rule) && asked
+                                   ? fmt::format("the residual is {} <= tolerance = {}, ",
+                                                 measured(residual(h.rule, p, *asked, run.xs.back())),
+                                                 measured(p.tolerance))
+                                   : std::string();
+                           return fmt::format("{} ends {} as you do, where {}update_inf is {} and tolerance*max(1,|x|) "
+                                              "= {} (numlab's ends {}): {}",
+                                              h.what, ending(run.status, run.sweeps()), residual_note,
+                                              measured(run.updates.back()), measured(threshold),
+                                              ending(reference.status, reference.sweeps()), h.remedy);
+                         }});
   }
   return diagnose(detectors);
 }

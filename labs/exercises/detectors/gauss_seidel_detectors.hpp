@@ -31,6 +31,13 @@ enum class StopRule {
   relative,          // update_inf <= tolerance * |x|_inf
   extra_sweep,       // the stated test, but max_iterations + 1 sweeps
   limit_converged,   // the stated test, but the limit reported as converged
+  // The residual of the swept system M x = c (A^T A x = A^T b with normal_equations) in place of
+  // the update: max_i |c - M x|, or its 2-norm, against tolerance.
+  residual_inf,
+  residual_two,
+  // The same with the residual of A x = b itself, whichever system is swept.
+  original_residual_inf,
+  original_residual_two,
 };
 
 struct GaussSeidelRun {

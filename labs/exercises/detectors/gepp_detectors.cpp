@@ -28,6 +28,15 @@ int pivot_row(const Eigen::MatrixXd& a, int k, GeppMistake mistake) {
 
 void swap_rows(Eigen::MatrixXd& a, Eigen::VectorXd& b, int k, int p, GeppMistake mistake) {
   if (p == k) return;
+  if (mistake == GeppMistake::swap_copies_row || mistake == GeppMistake::swap_copies_row_and_b) {
+    a.row(k) = a.row(p);  // the second assignment copies row k's new entries back: row p is kept
+    if (mistake == GeppMistake::swap_copies_row_and_b) {
+      b(k) = b(p);
+    } else {
+      std::swap(b(k), b(p));
+    }
+    return;
+  }
   const int n = static_cast<int>(a.rows());
   const int first = mistake == GeppMistake::swap_leaves_last_column || mistake == GeppMistake::swap_only_pivot_column ? k : 0;
   const int last = mistake == GeppMistake::swap_leaves_last_column ? n - 2
@@ -59,6 +68,8 @@ const char* description(GeppMistake mistake) {
     case GeppMistake::swap_without_b: return "row swaps of A that leave b as it was";
     case GeppMistake::swap_leaves_last_column: return "row swaps that leave the last column behind";
     case GeppMistake::swap_only_pivot_column: return "row swaps of column k only";
+    case GeppMistake::swap_copies_row: return "row swaps that copy row p over row k and keep row p (b swapped)";
+    case GeppMistake::swap_copies_row_and_b: return "row swaps that copy row p over row k and keep row p, in A and b";
     case GeppMistake::back_substitution_skips_next: return "back substitution whose sum starts at j = i+2";
     case GeppMistake::back_substitution_skips_last: return "back substitution whose sum stops at j = n-2";
     case GeppMistake::none: break;
@@ -75,6 +86,10 @@ const char* remedy(GeppMistake mistake) {
     case GeppMistake::swap_without_b: return "swap b_k and b_p together with the rows of A";
     case GeppMistake::swap_leaves_last_column:
     case GeppMistake::swap_only_pivot_column: return "swap whole rows (every column of A, and b)";
+    case GeppMistake::swap_copies_row:
+    case GeppMistake::swap_copies_row_and_b:
+      return "row k's entries are lost when the first assignment overwrites them: swap through a copy (numpy: "
+             "A[[k, p]] = A[[p, k]]; numpy rows A[k], A[p] are views, not copies), or a temporary row";
     case GeppMistake::back_substitution_skips_next:
     case GeppMistake::back_substitution_skips_last:
       return "x_i = (c_i - sum_{j=i+1}^{n-1} u_ij x_j) / u_ii";
@@ -201,6 +216,8 @@ std::optional<Diagnosis> diagnose_gepp(const Eigen::MatrixXd& A, const Eigen::Ve
       {"swap_without_b", GeppMistake::swap_without_b},
       {"partial_row_swap", GeppMistake::swap_leaves_last_column},
       {"partial_row_swap", GeppMistake::swap_only_pivot_column},
+      {"partial_row_swap", GeppMistake::swap_copies_row},
+      {"partial_row_swap", GeppMistake::swap_copies_row_and_b},
       {"back_substitution", GeppMistake::back_substitution_skips_next},
       {"back_substitution", GeppMistake::back_substitution_skips_last},
   };
@@ -225,6 +242,20 @@ std::optional<Diagnosis> diagnose_gepp(const Eigen::MatrixXd& A, const Eigen::Ve
                                             "|pivot| <= n*eps*max|a_ij| (max over the original A) means singular",
                                             answer.trace ? fmt::format(" at column {}", column) : std::string(),
                                             measured(pivot), measured(c.negligible));
+                       }});
+  // "singular" for a matrix that is well scaled relative to itself (every pivot a fair share of
+  // max|a_ij|) but small in absolute terms: no relative test says singular, a fixed number does.
+  detectors.push_back({"absolute_singular_threshold", Specificity::exact, [&]() -> std::optional<std::string> {
+                         if (!answer.singular || c.reference.singular || c.reference.pivots.empty()) return std::nullopt;
+                         double smallest = std::numeric_limits<double>::infinity();
+                         for (const double pivot : c.reference.pivots) smallest = std::min(smallest, std::abs(pivot));
+                         if (!(smallest >= 1e-4 * scale && smallest < 1e-6)) return std::nullopt;
+                         return fmt::format("you replied \"singular\" for a matrix whose entries are all small "
+                                            "(max|a_ij| = {}), where numlab's smallest |pivot| is {}: {} of max|a_ij|, "
+                                            "far above n*eps*max|a_ij| = {}; only a fixed threshold (1e-12, eps, ...) "
+                                            "calls it zero: test |pivot| <= n*eps*max|a_ij|, relative to A's size",
+                                            measured(scale), measured(smallest), measured(smallest / scale),
+                                            measured(c.negligible));
                        }});
   // x where numlab's GEPP stops: a division by a pivot that is rounding noise.
   detectors.push_back({"no_singular_test", Specificity::exact, [&]() -> std::optional<std::string> {

@@ -20,6 +20,8 @@ enum class GeppMistake {
   swap_without_b,            // rows of A swapped, b left as it was
   swap_leaves_last_column,   // the swap moves columns k ... n-2, the last stays behind
   swap_only_pivot_column,    // the swap moves column k only
+  swap_copies_row,           // row p copied over row k, row p kept (numpy's A[k], A[p] = A[p], A[k]); b swapped
+  swap_copies_row_and_b,     // the same for b: a swap without a temporary, A(k,:) = A(p,:); A(p,:) = A(k,:)
   back_substitution_skips_next,  // x_i's sum starts at j = i+2
   back_substitution_skips_last,  // x_i's sum stops at j = n-2
 };

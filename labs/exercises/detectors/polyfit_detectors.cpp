@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "exercises/detectors/explains.hpp"
+#include "exercises/detectors/unstable_fits.hpp"
 #include "numlab/fitting/reference_fits.hpp"
 
 namespace numlab::exercises::detectors {
@@ -91,12 +92,44 @@ const char* const wrong_sums[] = {"the power sums S_(j+k+1) in place of S_(j+k)"
                                   "the moments sum x^(j+1) y in place of sum x^j y",
                                   "S_0 = 1 in place of the number of points m"};
 
+// The scales a student divides V's columns by: each scaled fit's coefficients are the fit's times
+// the scales, and must be divided by them afterwards.
+struct ColumnScales {
+  const char* name;
+  Eigen::VectorXd d;
+};
+
+std::vector<ColumnScales> column_scales(const Eigen::VectorXd& x, int degree) {
+  const Eigen::MatrixXd V = fitting::vandermonde(x, degree);
+  std::vector<ColumnScales> scales = {{"its 2-norm", V.colwise().norm().transpose()},
+                                      {"its largest |entry|", V.cwiseAbs().colwise().maxCoeff().transpose()},
+                                      {"its 1-norm", V.cwiseAbs().colwise().sum().transpose()}};
+  std::vector<ColumnScales> usable;
+  for (ColumnScales& scale : scales) {
+    if ((scale.d.array() > 0.0).all() && scale.d.allFinite()) usable.push_back(std::move(scale));
+  }
+  return usable;
+}
+
+// The centre c and scale s of the variable t = (x - c) / s in which `got` would be the fit: q(t) =
+// p(c + s t) gives q_D = p_D s^D and q_(D-1) = s^(D-1) (p_(D-1) + D p_D c) (p the reference).
+// Nothing when they do not solve (degree < 2 leaves nothing to check them by: two numbers, two
+// unknowns).
+std::optional<Change> solved_change(const Eigen::VectorXd& got, const Eigen::VectorXd& p, int D) {
+  if (D < 2 || got.size() != D + 1 || p.size() != D + 1 || p(D) == 0.0) return std::nullopt;
+  const double ratio = got(D) / p(D);
+  if (!(D % 2 == 1 || ratio > 0.0) || ratio == 0.0) return std::nullopt;
+  const double s = std::copysign(std::pow(std::abs(ratio), 1.0 / D), ratio);
+  const double c = (got(D - 1) / std::pow(s, D - 1) - p(D - 1)) / (D * p(D));
+  if (!std::isfinite(s) || !std::isfinite(c) || !(s > 0.0)) return std::nullopt;
+  return Change{"t = (x - c) / s, c and s solved from your two highest coefficients", c, s};
+}
+
 }  // namespace
 
 std::optional<Diagnosis> diagnose_polyfit(const PolyfitProblem& p, const Eigen::VectorXd& got) {
   const int D = p.degree;
   const Eigen::VectorXd S = column_norms(p.x, D);
-  const double m = static_cast<double>(p.x.size());
   std::vector<Detector> detectors;
   // Another count: the fit of that degree.
   if (got.size() != D + 1 && got.size() >= 1) {
@@ -152,6 +185,39 @@ std::optional<Diagnosis> diagnose_polyfit(const PolyfitProblem& p, const Eigen::
                                               measured(distance), measured(separation));
                          }});
   }
+  if (const std::optional<Change> change = solved_change(got, p.expected, D)) {
+    detectors.push_back({"missing_unscale", Specificity::exact, [&, change = *change]() -> std::optional<std::string> {
+                           const Eigen::VectorXd t = (p.x.array() - change.centre) / change.scale;
+                           const Eigen::VectorXd h = fitting::gsl_multifit_fit(t, p.y, D).coefficients;
+                           const double distance = weighted(got, h, column_norms(t, D));
+                           const double separation = weighted(h, p.expected, S);
+                           if (!explains(distance, separation, std::max(p.allowed, accuracy(t, p.y, h)), p.allowed)) {
+                             return std::nullopt;
+                           }
+                           return fmt::format("your {} coefficients are those of the fit in t = (x - c) / s with c = {} "
+                                              "and s = {} (solved from your two highest) to {}; read as powers of x "
+                                              "they are off by {}: map them back to powers of x, p(x) = q((x - c) / s)",
+                                              D + 1, measured(change.centre), measured(change.scale),
+                                              measured(distance), measured(separation));
+                         }});
+  }
+  for (const ColumnScales& scale : column_scales(p.x, D)) {
+    for (const int power : {1, 2}) {
+      detectors.push_back({"missing_unscale", Specificity::exact, [&, scale, power]() -> std::optional<std::string> {
+                             const Eigen::VectorXd factor = scale.d.array().pow(power);
+                             const double distance = weighted(got.cwiseQuotient(factor), p.expected, S);
+                             const double separation = weighted(p.expected.cwiseProduct(factor), p.expected, S);
+                             if (!explains(distance, separation, p.allowed, p.allowed)) return std::nullopt;
+                             return fmt::format("your coefficients are the fit's times {} of V's columns ({}): divided "
+                                                "by {}, they match the reference to {} (as they stand they are off by "
+                                                "{}): after solving with column k divided by d_k, b_k = (your "
+                                                "solution)_k / d_k",
+                                                power == 1 ? "the scales" : "the squares of the scales",
+                                                fmt::format("d_k = {}", scale.name),
+                                                power == 1 ? "d_k" : "d_k^2", measured(distance), measured(separation));
+                           }});
+    }
+  }
   for (const bool first : {true, false}) {
     detectors.push_back({"interpolation", Specificity::exact, [&, first]() -> std::optional<std::string> {
                            if (p.x.size() <= D + 1) return std::nullopt;
@@ -184,36 +250,49 @@ std::optional<Diagnosis> diagnose_polyfit(const PolyfitProblem& p, const Eigen::
                                               wrong_sums[variant], measured(distance), measured(separation));
                          }});
   }
-  // No replay explains the numbers: how far they are, against what each unstable method loses.
+  // No replay explains the numbers exactly: how far they are, against what each unstable method
+  // the task rules out loses on these data (replayed and measured here). The method whose loss is
+  // nearest the student's (within a factor of 1000) is named: a family, since other codes of the
+  // same method lose other digits.
   const Eigen::MatrixXd V = fitting::vandermonde(p.x, D);
   const double kappa_unscaled = fitting::two_norm_condition(V);
   const double kappa = fitting::two_norm_condition(fitting::unit_columns(V));
-  const Eigen::VectorXd fitted = V * p.expected;
-  const double tan_theta = (p.y - fitted).norm() / fitted.norm();
-  const double unscaled = 10.0 * m * eps * (kappa_unscaled + kappa_unscaled * kappa_unscaled * tan_theta);
-  const double normal = 10.0 * m * eps * kappa_unscaled * kappa_unscaled;
-  detectors.push_back({"unscaled_vandermonde", Specificity::family, [=]() -> std::optional<std::string> {
-                         if (!(reference_distance > p.allowed && reference_distance <= unscaled && unscaled < 1.0)) {
-                           return std::nullopt;
-                         }
-                         return fmt::format("your coefficients are off by {}: more than the {} a stable solve of V with "
-                                            "unit columns allows (kappa = {}), within the {} an unscaled V loses (kappa "
-                                            "= {}): scale each column of V to unit length, solve by QR or SVD, divide "
-                                            "b_k by column k's norm",
-                                            measured(reference_distance), measured(p.allowed), measured(kappa),
-                                            measured(unscaled), measured(kappa_unscaled));
-                       }});
-  detectors.push_back({"normal_equations_wrong", Specificity::family, [=]() -> std::optional<std::string> {
-                         if (!(reference_distance > std::max(p.allowed, unscaled) && reference_distance <= normal &&
-                               normal < 1.0)) {
-                           return std::nullopt;
-                         }
-                         return fmt::format("your coefficients are off by {}: more than an unscaled V loses ({}), "
-                                            "within what the normal equations V^T V b = V^T y lose ({}: they square "
-                                            "kappa(V) = {}): solve min |V b - y| by QR or SVD of V with unit columns",
-                                            measured(reference_distance), measured(unscaled), measured(normal),
-                                            measured(kappa_unscaled));
-                       }});
+  const double svd_loss = weighted(unscaled_svd_fit(p.x, p.y, D), p.expected, S);
+  const double normal_loss = weighted(power_sum_normal_fit(p.x, p.y, D), p.expected, S);
+  const auto gap = [reference_distance](double loss) {  // decades between the student's loss and `loss`
+    return std::isfinite(loss) && loss > 0.0 ? std::abs(std::log10(reference_distance / loss)) : 1e300;
+  };
+  const auto nearest = [&](double loss, double other) {
+    return reference_distance > p.allowed && std::isfinite(reference_distance) && gap(loss) <= 3.0 &&
+           gap(loss) < gap(other);
+  };
+  const std::string measured_losses =
+      fmt::format("your coefficients are off by {}, allowed {} (a stable solve of V with unit columns, kappa = {}); "
+                  "replayed on these data, an SVD of V with its columns as they are (Golub-Reinsch) is off by {}, the "
+                  "normal equations from power sums of x by {}",
+                  measured(reference_distance), measured(p.allowed), measured(kappa), measured(svd_loss),
+                  measured(normal_loss));
+  struct Unstable {
+    const char* cause;
+    double loss, other;
+    std::string verdict;
+  };
+  const std::vector<Unstable> unstable = {
+      {"unscaled_vandermonde", svd_loss, normal_loss,
+       fmt::format("yours is an unscaled V's loss (kappa = {} with its columns as they are): scale each column of V to "
+                   "unit length, solve by QR or SVD, divide b_k by column k's norm",
+                   measured(kappa_unscaled))},
+      {"normal_equations_wrong", normal_loss, svd_loss,
+       fmt::format("yours is the normal equations' loss, formed from unscaled columns they square kappa(V) = {}: solve "
+                   "min |V b - y| by QR or SVD of V with unit columns",
+                   measured(kappa_unscaled))},
+  };
+  for (const Unstable& method : unstable) {
+    detectors.push_back({method.cause, Specificity::family, [=]() -> std::optional<std::string> {
+                           if (!nearest(method.loss, method.other)) return std::nullopt;
+                           return measured_losses + ": " + method.verdict;
+                         }});
+  }
   return diagnose(detectors);
 }
 

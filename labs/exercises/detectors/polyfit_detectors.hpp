@@ -1,9 +1,11 @@
 #pragma once
 // The polyfit exercise's detectors (docs/exercises.md, "Diagnosis"): the known wrong fits are
 // replayed on the request (the reversed powers, the fit of another degree, the fit in a centred or
-// scaled variable not mapped back, the interpolant of the first or last D+1 points, normal
-// equations with a wrong power sum) and named when they explain the student's coefficients; an
-// error no replay explains is measured against what an unscaled V or the normal equations lose.
+// scaled variable not mapped back, c and s also solved from the coefficients, the interpolant of
+// the first or last D+1 points, normal equations with a wrong power sum, the scaled columns' fit
+// not divided by the scales) and named
+// when they explain the student's coefficients; an error no replay explains is compared with what
+// an SVD of the unscaled V and the power-sum normal equations lose on the same data (unstable_fits).
 
 #include <Eigen/Core>
 #include <optional>

@@ -7,15 +7,18 @@
 #include <catch2/catch.hpp>
 #include <Eigen/LU>
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "exercises/detectors/gauss_seidel_detectors.hpp"
 #include "exercises/detectors/gepp_detectors.hpp"
 #include "exercises/detectors/inverse2x2_detectors.hpp"
 #include "exercises/detectors/polyfit_detectors.hpp"
+#include "exercises/nist_polynomial_sets.hpp"
 #include "numlab/fitting/reference_fits.hpp"
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
@@ -108,6 +111,78 @@ TEST_CASE("gepp detectors: the singular thresholds") {
   CHECK(gepp_cause(S, s1, gepp_answer(numlab_run)) == "(none)");
 }
 
+// GEPP written here with the swap of numpy rows, `A[k], A[p] = A[p], A[k]` (views): row p is copied
+// over row k and kept. b's entries are swapped (numpy scalars), or copied too (a swap without a
+// temporary). "singular" comes without a trace, as the corpus's student sends it.
+d::GeppAnswer gepp_copying_swap(Eigen::MatrixXd a, Eigen::VectorXd b, bool copies_b) {
+  const int n = static_cast<int>(a.rows());
+  const double small = n * std::numeric_limits<double>::epsilon() * a.cwiseAbs().maxCoeff();
+  d::GeppAnswer answer;
+  std::vector<d::GeppTraceEntry> trace;
+  for (int k = 0; k < n; ++k) {
+    Eigen::Index p = 0;
+    a.col(k).tail(n - k).cwiseAbs().maxCoeff(&p);
+    p += k;
+    a.row(k) = a.row(p);
+    if (copies_b) {
+      b(k) = b(p);
+    } else {
+      std::swap(b(k), b(p));
+    }
+    if (std::abs(a(k, k)) <= small) {
+      answer.singular = true;
+      return answer;
+    }
+    trace.push_back({p, a(k, k)});
+    for (int i = k + 1; i < n; ++i) {
+      const double l = a(i, k) / a(k, k);
+      a.row(i) -= l * a.row(k);
+      b(i) -= l * b(k);
+    }
+  }
+  Eigen::VectorXd x(n);
+  for (int i = n - 1; i >= 0; --i) x(i) = (b(i) - a.row(i).tail(n - 1 - i).dot(x.tail(n - 1 - i))) / a(i, i);
+  answer.x = x;
+  answer.trace = trace;
+  return answer;
+}
+
+TEST_CASE("gepp detectors: a row swap that copies row p over row k (numpy row views) is a partial row swap") {
+  for (const auto& [n, seed] : {std::pair{3, 7u}, std::pair{8, 11u}}) {
+    const auto system = numlab::linalg::generate_system("random", n, seed);
+    for (const bool copies_b : {false, true}) {
+      INFO("n = " << n << ", seed " << seed << ", b copied too: " << copies_b);
+      const d::GeppAnswer answer = gepp_copying_swap(system.A, system.b, copies_b);
+      REQUIRE(answer.singular);  // the copied row is eliminated to 0: a zero pivot later on
+      CHECK(gepp_cause(system.A, system.b, answer) == "partial_row_swap");
+    }
+  }
+  // Where no row is swapped, the copy changes nothing and nothing is blamed.
+  const Eigen::MatrixXd dominant = numlab::linalg::diagonally_dominant_matrix(6, 5).transpose();
+  const Eigen::VectorXd b = dominant * Eigen::VectorXd::Ones(6);
+  CHECK(gepp_cause(dominant, b, gepp_copying_swap(dominant, b, false)) == "(none)");
+}
+
+TEST_CASE("gepp detectors: \"singular\" for a well-scaled matrix whose entries are all tiny is an absolute threshold") {
+  // Diagonally dominant by columns (GEPP swaps no row), times 2^-70: max|a_ij| ~ 1e-20.
+  const Eigen::MatrixXd dominant = numlab::linalg::diagonally_dominant_matrix(6, 5).transpose();
+  const d::GeppRun unscaled = d::replay_gepp(dominant, dominant * Eigen::VectorXd::Ones(6), d::GeppMistake::none);
+  for (std::size_t k = 0; k < unscaled.rows.size(); ++k) REQUIRE(unscaled.rows[k] == static_cast<int>(k));
+  const Eigen::MatrixXd tiny = std::ldexp(1.0, -70) * dominant;
+  REQUIRE(tiny.cwiseAbs().maxCoeff() < 1e-18);
+  const Eigen::VectorXd b = tiny * Eigen::VectorXd::Ones(6);
+  d::GeppAnswer singular;
+  singular.singular = true;
+  CHECK(gepp_cause(tiny, b, singular) == "absolute_singular_threshold");
+  // The right x (x = 1, as for the unscaled system: the scaling is exact) has no diagnosis.
+  d::GeppAnswer solved;
+  solved.x = Eigen::VectorXd::Ones(6);
+  CHECK(gepp_cause(tiny, b, solved) == "(none)");
+  // Entries of order 1e-3: no plausible fixed threshold is above its pivots, and no cause is named.
+  const Eigen::MatrixXd small = 1e-3 * dominant;
+  CHECK(gepp_cause(small, small * Eigen::VectorXd::Ones(6), singular) == "(none)");
+}
+
 // --- gauss-seidel ---
 
 d::GaussSeidelProblem gs_problem(Eigen::MatrixXd A, bool normal, double tolerance, int max_iterations,
@@ -194,6 +269,69 @@ TEST_CASE("gauss-seidel detectors: wrong stop rules, the limit and the extra swe
   CHECK(gs_cause(capped, SweptSystem::asked, SweepKind::gauss_seidel, StopRule::absolute, true) == "(none)");
 }
 
+// Gauss-Seidel written here, with the stop test on a residual in place of the update: of the swept
+// system (c - M x) or of A x = b itself, in the inf-norm or the 2-norm.
+d::GaussSeidelAnswer gs_residual_stop(const d::GaussSeidelProblem& p, bool of_original, bool two_norm) {
+  const Eigen::MatrixXd M = p.normal_equations ? Eigen::MatrixXd(p.A.transpose() * p.A) : p.A;
+  const Eigen::VectorXd c = p.normal_equations ? Eigen::VectorXd(p.A.transpose() * p.b) : p.b;
+  Eigen::VectorXd x = p.x0;
+  d::GaussSeidelAnswer answer{"max_iterations", 0, x, std::vector<d::GaussSeidelSweep>{}};
+  double first = -1.0;
+  for (int count = 1; count <= p.max_iterations; ++count) {
+    const Eigen::VectorXd old = x;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      double sum = c(i);
+      for (Eigen::Index j = 0; j < x.size(); ++j) {
+        if (j != i) sum -= M(i, j) * x(j);
+      }
+      x(i) = sum / M(i, i);
+    }
+    const double update = (x - old).cwiseAbs().maxCoeff();
+    if (first < 0.0) first = update;
+    answer.trace->push_back({x, update});
+    answer.iterations = count;
+    answer.x = x;
+    const Eigen::VectorXd r = of_original ? Eigen::VectorXd(p.b - p.A * x) : Eigen::VectorXd(c - M * x);
+    if ((two_norm ? r.norm() : r.cwiseAbs().maxCoeff()) <= p.tolerance) {
+      answer.status = "converged";
+      break;
+    }
+    if (update > 1e8 * std::max(first, p.tolerance)) {
+      answer.status = "diverged";
+      break;
+    }
+  }
+  return answer;
+}
+
+TEST_CASE("gauss-seidel detectors: a stop test on the residual, of M x = c or of A x = b, in either norm") {
+  using d::StopRule;
+  using d::SweepKind;
+  using d::SweptSystem;
+  const auto from_above = gs_problem(numlab::linalg::diagonally_dominant_matrix(10, 3), false, 1e-9, 200, 10.0);
+  const auto normal_random = gs_problem(numlab::linalg::random_matrix(4, 8), true, 1e-10, 5000);
+  for (const auto* p : {&from_above, &normal_random}) {
+    const d::GaussSeidelRun numlab_run =
+        d::replay_gauss_seidel(*p, SweptSystem::asked, SweepKind::gauss_seidel, StopRule::stated);
+    for (const bool of_original : {false, true}) {
+      for (const bool two_norm : {false, true}) {
+        for (const bool with_trace : {true, false}) {
+          d::GaussSeidelAnswer answer = gs_residual_stop(*p, of_original, two_norm);
+          INFO("normal equations: " << p->normal_equations << ", residual of A x = b: " << of_original
+                                    << ", 2-norm: " << two_norm << ", trace: " << with_trace << ", sweeps "
+                                    << answer.iterations << " (numlab's " << numlab_run.sweeps() << ")");
+          if (!with_trace) answer.trace.reset();
+          // A residual test that ends where numlab's ends changes nothing and is not blamed; without
+          // a trace, one sweep more or less is not evidence enough (x agrees to the tolerance).
+          const long long apart = std::abs(answer.iterations - numlab_run.sweeps());
+          const bool changes = answer.status != numlab_run.status || apart > (with_trace ? 0 : 1);
+          CHECK(cause_of(d::diagnose_gauss_seidel(*p, answer)) == (changes ? "stop_test" : "(none)"));
+        }
+      }
+    }
+  }
+}
+
 // --- inverse2x2 ---
 
 std::string inverse_cause(const Eigen::Matrix2d& A, std::optional<Eigen::Matrix2d> inverse) {
@@ -237,12 +375,18 @@ std::string polyfit_cause(const d::PolyfitProblem& p, const Eigen::VectorXd& got
   return cause_of(d::diagnose_polyfit(p, got));
 }
 
-TEST_CASE("polyfit detectors: each wrong fit is named by its own cause") {
+// 12 points of 1.5 - 2 x + 0.5 x^3 + 0.1 sin(7 x) on [-1, 1.75].
+std::pair<Eigen::VectorXd, Eigen::VectorXd> noisy_cubic() {
   Eigen::VectorXd x(12), y(12);
   for (int i = 0; i < 12; ++i) {
     x(i) = -1.0 + 0.25 * i;
     y(i) = 1.5 - 2.0 * x(i) + 0.5 * std::pow(x(i), 3) + 0.1 * std::sin(7.0 * x(i));
   }
+  return {x, y};
+}
+
+TEST_CASE("polyfit detectors: each wrong fit is named by its own cause") {
+  const auto [x, y] = noisy_cubic();
   const int D = 3;
   const d::PolyfitProblem p{x, y, D, least_squares(x, y, D), 1e-12};
   CHECK(polyfit_cause(p, p.expected) == "(none)");
@@ -261,6 +405,77 @@ TEST_CASE("polyfit detectors: each wrong fit is named by its own cause") {
     for (int k = 0; k <= D; ++k) N(j, k) = x.array().pow(j + k).sum();
   }
   CHECK(polyfit_cause(p, N.fullPivLu().solve(r)) == "normal_equations_wrong");
+}
+
+double column_weighted(const Eigen::VectorXd& got, const Eigen::VectorXd& h, const Eigen::VectorXd& x, int degree) {
+  const Eigen::VectorXd S = numlab::fitting::vandermonde(x, degree).colwise().norm().transpose();
+  return (S.array() * (got - h).array()).abs().maxCoeff() / (S.array() * h.array()).abs().maxCoeff();
+}
+
+// The check's tolerance: 10 m eps (kappa + kappa^2 tan theta), kappa of V with unit columns.
+double check_allowance(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const Eigen::VectorXd& h) {
+  const Eigen::MatrixXd V = numlab::fitting::vandermonde(x, static_cast<int>(h.size()) - 1);
+  const double kappa = numlab::fitting::two_norm_condition(numlab::fitting::unit_columns(V));
+  const double tan_theta = (y - V * h).norm() / (V * h).norm();
+  return 10.0 * static_cast<double>(x.size()) * std::numeric_limits<double>::epsilon() *
+         (kappa + kappa * kappa * tan_theta);
+}
+
+TEST_CASE("polyfit detectors: the scales not divided out, a change of variable solved from the coefficients") {
+  const auto [x, y] = noisy_cubic();
+  const int D = 3;
+  const d::PolyfitProblem p{x, y, D, least_squares(x, y, D), 1e-12};
+  const Eigen::MatrixXd V = numlab::fitting::vandermonde(x, D);
+  // Columns scaled by their 2-norm, their largest |entry| or their 1-norm, the solution not divided
+  // by the scales (or multiplied by them once more).
+  const Eigen::VectorXd two = V.colwise().norm().transpose(), largest = V.cwiseAbs().colwise().maxCoeff().transpose(),
+                        one = V.cwiseAbs().colwise().sum().transpose();
+  CHECK(polyfit_cause(p, p.expected.cwiseProduct(two)) == "missing_unscale");
+  CHECK(polyfit_cause(p, p.expected.cwiseProduct(largest)) == "missing_unscale");
+  CHECK(polyfit_cause(p, p.expected.cwiseProduct(one)) == "missing_unscale");
+  CHECK(polyfit_cause(p, p.expected.cwiseProduct(two).cwiseProduct(two)) == "missing_unscale");
+  // A fit in t = (x - 0.3) / 1.7, a centre and scale none of the data's statistics give.
+  CHECK(polyfit_cause(p, least_squares((x.array() - 0.3) / 1.7, y, D)) == "missing_unscale");
+  // Degree 1: any two coefficients are some line's in some t = (x - c) / s; nothing is guessed.
+  const d::PolyfitProblem line{x, y, 1, least_squares(x, y, 1), 1e-12};
+  CHECK(polyfit_cause(line, least_squares((x.array() - 0.3) / 1.7, y, 1)) == "(none)");
+}
+
+TEST_CASE("polyfit detectors: the unstable methods, told apart by what they lose on the same data") {
+  // The normal equations from power sums, built and solved here (Eigen's LU): x = 0 ... 20, y the
+  // polynomial with all 8 coefficients 1 (exact in double).
+  Eigen::VectorXd x(21), y(21);
+  for (int i = 0; i < 21; ++i) {
+    x(i) = i;
+    y(i) = 0.0;
+    for (int k = 7; k >= 0; --k) y(i) = y(i) * x(i) + 1.0;
+  }
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(8);
+  Eigen::MatrixXd N(8, 8);
+  Eigen::VectorXd r(8);
+  for (int j = 0; j <= 7; ++j) {
+    r(j) = (x.array().pow(j) * y.array()).sum();
+    for (int k = 0; k <= 7; ++k) N(j, k) = x.array().pow(j + k).sum();
+  }
+  const Eigen::VectorXd normal = N.partialPivLu().solve(r);
+  const d::PolyfitProblem wampler_like{x, y, 7, ones, check_allowance(x, y, ones)};
+  REQUIRE(column_weighted(normal, ones, x, 7) > wampler_like.allowed);  // it fails the check
+  CHECK(polyfit_cause(wampler_like, normal) == "normal_equations_wrong");
+  // numpy.linalg.lstsq(V, y) on Pontius with V's columns as they are (numpy 1.24.2, OpenBLAS).
+  int found = 0;
+  for (const numlab::fitting::DataSet& set : numlab::exercises::nist_polynomial_sets()) {
+    if (set.name != "Pontius") continue;
+    ++found;
+    const Eigen::VectorXd certified = Eigen::Map<const Eigen::VectorXd>(set.certified->parameters.data(), 3);
+    const d::PolyfitProblem pontius{set.x, set.y, 2, certified, check_allowance(set.x, set.y, certified)};
+    const Eigen::VectorXd lstsq = (Eigen::VectorXd(3) << 0.0006735661810141453, 7.320591602278815e-07,
+                                   -3.1608187450393667e-15).finished();
+    REQUIRE(column_weighted(lstsq, certified, set.x, 2) > pontius.allowed);
+    CHECK(polyfit_cause(pontius, lstsq) == "unscaled_vandermonde");
+    // The stable fit (QR of V with unit columns) passes and has no diagnosis.
+    CHECK(polyfit_cause(pontius, least_squares(set.x, set.y, 2)) == "(none)");
+  }
+  CHECK(found == 1);
 }
 
 TEST_CASE("polyfit detectors: reversed powers are never blamed where reversal changes nothing") {
