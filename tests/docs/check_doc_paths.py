@@ -36,7 +36,7 @@ CODE_SPAN = re.compile(r"`([^`]+)`")
 # `mutants/EXERCISE/`), or any <word>. It matches any text, as '*' does.
 PLACEHOLDER = re.compile(r"<[^>/]+>|(?<![A-Za-z0-9])(BUG_NAME|NAME|FILE|DIR|EXERCISE|SYSTEM|OUT|PREFIX|LANG)(?![A-Za-z0-9])")
 # Names the docs give to files a student writes or numlab writes, never files of the repository.
-USER_FILES = {"solution.py", "solution.cpp", "f.toml"}
+USER_FILES = {"solution.py", "solution.cpp", "f.toml", "model.toml", "TASK.md", "sitecustomize.py"}
 
 
 def top_level_folders(root):
