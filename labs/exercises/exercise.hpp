@@ -83,6 +83,9 @@ struct Exercise {
   // What `check` and `grade` need beyond NAME, in the starter's check command: {"--model", "four-bar"}
   // for the linkage exercise (linkage_exercise.hpp); empty for the others.
   std::vector<std::string> arguments{};
+  // What TASK.md's "Your variant" says beyond the ID, e.g. a linkage variant's link lengths (""
+  // or unset: nothing more).
+  std::function<std::string(const Variant&)> variant_task{};
 };
 
 // Every exercise, in the order `exercise list` shows them.

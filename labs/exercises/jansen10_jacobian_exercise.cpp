@@ -36,9 +36,9 @@ struct Link {
   double length;
 };
 
-std::array<Link, 10> links() {
-  const mechanisms::JansenLengths L;
-  const mechanisms::JansenFootLengths foot;
+std::array<Link, 10> links(const JansenVariant& lengths) {
+  const mechanisms::JansenLengths& L = lengths.links;
+  const mechanisms::JansenFootLengths& foot = lengths.foot;
   return {{{"r3", "A->B", L.l1},
            {"r4", "B->P1", L.l2},
            {"r5", "B->C", L.l3},
@@ -54,10 +54,10 @@ std::array<Link, 10> links() {
 std::string angle_name(int k) { return mechanisms::jansen_angle_names(JansenModel::ten_equations)[static_cast<std::size_t>(k)]; }
 
 // f's scale: the crank, the ten links and the offsets of P1.
-double links_sum() {
-  const mechanisms::JansenLengths L;
+double links_sum(const JansenVariant& lengths) {
+  const mechanisms::JansenLengths& L = lengths.links;
   double sum = L.crank + L.a + L.b;
-  for (const Link& link : links()) sum += link.length;
+  for (const Link& link : links(lengths)) sum += link.length;
   return sum;
 }
 
@@ -69,16 +69,32 @@ struct Pose {
 // The model's start (seed 000's estimates read through their joints), four solved poses around
 // the cycle, and two poses away from any root (jacobian_poses: with a variant, their crank angles
 // and offsets drawn from it).
-std::vector<Pose> poses(const Variant& variant) {
+std::vector<Pose> poses(const Variant& variant, const mechanisms::JansenLeg& leg) {
   Jansen10Closure::Vector offset;
   offset << 0.3, -0.2, 0.5, -0.4, 0.25, -0.35, 0.45, -0.15, 0.2, -0.3;
-  const Pose start{mechanisms::JansenClosure::seed_crank_angle,
-                   mechanisms::jansen_seed_estimates(JansenModel::ten_equations, mechanisms::JansenLeg())};
-  return jacobian_poses(variant, start, offset, jansen10_closed_form_angles);
+  const Pose start{mechanisms::JansenClosure::seed_crank_angle, mechanisms::jansen_seed_estimates(JansenModel::ten_equations, leg)};
+  return jacobian_poses(variant, start, offset,
+                        [&leg](double crank_angle) { return jansen10_closed_form_angles(crank_angle, leg); });
 }
 
-nlohmann::json request_for(const Pose& pose) {
-  return {{"crank_angle", pose.crank_angle}, {"theta", to_json(Eigen::VectorXd(pose.theta))}};
+// The poses and the leg's lengths (a variant's, or seed 000's).
+struct Battery {
+  JansenVariant lengths;
+  std::vector<Pose> list;
+  Jansen10Closure closure(double crank_angle) const { return Jansen10Closure(crank_angle, lengths.links, lengths.foot); }
+};
+
+Battery battery_for(const Variant& variant) {
+  Battery battery;
+  battery.lengths = jansen_variant_for_poses(variant, true, poses);
+  battery.list = poses(variant, battery.lengths.leg());
+  return battery;
+}
+
+nlohmann::json request_for(const Pose& pose, const JansenVariant& lengths) {
+  nlohmann::json request = {{"crank_angle", pose.crank_angle}, {"theta", to_json(Eigen::VectorXd(pose.theta))}};
+  lengths.add_to(request);
+  return request;
 }
 
 std::string pose_text(const Pose& pose) {
@@ -86,19 +102,18 @@ std::string pose_text(const Pose& pose) {
                      fmt::join(pose.theta.data(), pose.theta.data() + 10, ", "));
 }
 
-std::vector<ReferenceTime> closure_time(const Pose& pose) {
-  return {{"numlab Jansen10Closure (f and J)", residual_and_jacobian_seconds(Jansen10Closure(pose.crank_angle), pose.theta)}};
+std::vector<ReferenceTime> closure_time(const Pose& pose, const Battery& battery) {
+  return {{"numlab Jansen10Closure (f and J)", residual_and_jacobian_seconds(battery.closure(pose.crank_angle), pose.theta)}};
 }
 
 // Rows 0, 1, 6 and 7 start from P1->A = (b + li cos theta2, a + li sin theta2): one of them off by
 // exactly b - a has the offsets swapped (a wrong_link detector).
-std::optional<std::string> offset_mistake(int row, double got, double expected) {
-  const mechanisms::JansenLengths L;
+std::optional<std::string> offset_mistake(int row, double got, double expected, const mechanisms::JansenLengths& L) {
   const bool from_crank = row == 0 || row == 1 || row == 6 || row == 7;
   if (from_crank && std::abs(std::abs(got - expected) - (L.b - L.a)) < 1e-6) {
     return fmt::format("f[{}] is off by exactly b - a = {:.4g}: the offsets of P1 are swapped: X = b + li cos(theta2) "
-                       "with b = 38, Y = a + li sin(theta2) with a = 7.8",
-                       row, L.b - L.a);
+                       "with b = {:.6g}, Y = a + li sin(theta2) with a = {:.6g}",
+                       row, L.b - L.a, L.b, L.a);
   }
   return std::nullopt;
 }
@@ -108,12 +123,22 @@ std::string f_hint() {
          "(sines), each loop's vectors with the signs of its direction";
 }
 
-Verdict check_f(Session& session, const std::vector<Pose>& list) {
-  const double tolerance = 1e3 * eps * links_sum();  // far above rounding, far below any wrong term
+// Under a variant, f from seed 000's lengths where the request's belong (a wrong_link detector).
+std::optional<std::string> seed_lengths_used(const Eigen::VectorXd& f, const Pose& pose, const JansenVariant& lengths,
+                                             double tolerance) {
+  Jansen10Closure::Vector seed;
+  Jansen10Closure(pose.crank_angle).residual(pose.theta, seed);
+  return jansen_seed_lengths_used(f, Eigen::VectorXd(seed), lengths, tolerance);
+}
+
+Verdict check_f(Session& session, const Battery& battery) {
+  const std::vector<Pose>& list = battery.list;
+  const mechanisms::JansenLengths& L = battery.lengths.links;
+  const double tolerance = 1e3 * eps * links_sum(battery.lengths);  // far above rounding, far below any wrong term
   for (const Pose& pose : list) {
-    const nlohmann::json reply = session.ask(request_for(pose));
+    const nlohmann::json reply = session.ask(request_for(pose, battery.lengths));
     Jansen10Closure::Vector expected;
-    Jansen10Closure(pose.crank_angle).residual(pose.theta, expected);
+    battery.closure(pose.crank_angle).residual(pose.theta, expected);
     session.expect({pose_text(pose), {{"f", to_json(Eigen::VectorXd(expected))}},
                     fmt::format("each f[i] within {} of numlab's Jansen10Closure above", sci(tolerance))});
     const Eigen::VectorXd f = vector_field(reply, "f", 10);
@@ -122,21 +147,23 @@ Verdict check_f(Session& session, const std::vector<Pose>& list) {
       return Verdict::fail(fmt::format("f[{}] = {}, expected {} from numlab's Jansen10Closure (seed 001's f{}, eq {}) at {}; "
                                        "{}, allowed |error| {} (1e3 eps times the links' sum {:.4g})",
                                        i, digits17(f(i)), digits17(expected(i)), i + 1, i + 8, pose_text(pose),
-                                       difference(f(i), expected(i)), sci(tolerance), links_sum()),
-                           diagnose_residual({f, expected, pose.crank_angle, pose.theta, evaluator_of<Jansen10Closure>(),
-                                              tolerance, angle_name},
+                                       difference(f(i), expected(i)), sci(tolerance), links_sum(battery.lengths)),
+                           diagnose_residual({f, expected, pose.crank_angle, pose.theta,
+                                              evaluator_of<Jansen10Closure>(L, battery.lengths.foot), tolerance, angle_name},
                                              {{"wrong_link", Specificity::exact,
-                                               [&] { return offset_mistake(i, f(i), expected(i)); }}}),
+                                               [&] { return seed_lengths_used(f, pose, battery.lengths, tolerance); }},
+                                              {"wrong_link", Specificity::exact,
+                                               [&] { return offset_mistake(i, f(i), expected(i), L); }}}),
                            f_hint());
     }
   }
-  return Verdict::pass(closure_time(list.front()));
+  return Verdict::pass(closure_time(list.front(), battery));
 }
 
 // Column k's link, named as the detectors name it: "|r8|".
-std::vector<ColumnLink> column_links() {
+std::vector<ColumnLink> column_links(const JansenVariant& lengths) {
   std::vector<ColumnLink> named;
-  for (const Link& link : links()) named.push_back({fmt::format("|{}|", link.vector), link.length});
+  for (const Link& link : links(lengths)) named.push_back({fmt::format("|{}|", link.vector), link.length});
   return named;
 }
 
@@ -148,8 +175,8 @@ std::optional<double> length_used(double entry, double angle, int row) {
   return std::abs(entry / trig);
 }
 
-std::string length_hint(double used, int col) {
-  const auto list = links();
+std::string length_hint(double used, int col, const JansenVariant& lengths) {
+  const auto list = links(lengths);
   const Link& link = list[static_cast<std::size_t>(col)];
   for (const Link& other : list) {
     if (&other != &link && std::abs(used - other.length) < 0.05) {
@@ -169,8 +196,8 @@ std::string length_hint(double used, int col) {
 }
 
 std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, const Pose& pose, int row, int col,
-                   double tolerance) {
-  if (const auto angle = column_from_angle(Jansen10Closure(pose.crank_angle), got, pose.theta, col, tolerance)) {
+                   double tolerance, const Battery& battery) {
+  if (const auto angle = column_from_angle(battery.closure(pose.crank_angle), got, pose.theta, col, tolerance)) {
     return fmt::format("column {} (d/d {}) is evaluated at {}: a column from the wrong angle", col, angle_name(col),
                        angle_name(*angle));
   }
@@ -181,15 +208,16 @@ std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, 
   if (std::abs(got(row, col) + expected(row, col)) <= tolerance) {
     return "a sign: d(l sin t)/dt = l cos t and d(l cos t)/dt = -l sin t";
   }
-  if (const auto used = length_used(got(row, col), pose.theta(col), row)) return length_hint(*used, col);
+  if (const auto used = length_used(got(row, col), pose.theta(col), row)) return length_hint(*used, col, battery.lengths);
   return "an entry from the wrong link or a mistyped constant: J[i][k] is +-l sin or +-l cos of theta_(k+3), with the "
          "length l of that angle's link";
 }
 
-Verdict check_J(Session& session, const std::vector<Pose>& list) {
+Verdict check_J(Session& session, const Battery& battery) {
+  const std::vector<Pose>& list = battery.list;
   for (const Pose& pose : list) {
-    const nlohmann::json reply = session.ask(request_for(pose));
-    const Jansen10Closure closure(pose.crank_angle);
+    const nlohmann::json reply = session.ask(request_for(pose, battery.lengths));
+    const Jansen10Closure closure = battery.closure(pose.crank_angle);
     Jansen10Closure::Matrix expected;
     closure.jacobian(pose.theta, expected);
     // J's entries are at most a link long; rounding in them is a few eps of that.
@@ -207,13 +235,14 @@ Verdict check_J(Session& session, const std::vector<Pose>& list) {
                         i, k, digits17(J(i, k)), digits17(expected(i, k)), difference(J(i, k), expected(i, k)), i,
                         angle_name(k), digits17(differences(i, k)), pose_text(pose),
                         sci(tolerance)),
-            diagnose_jacobian({J, expected, pose.crank_angle, pose.theta, evaluator_of<Jansen10Closure>(), tolerance,
-                               angle_name, column_links()}),
-            J_hint(J, expected, pose, i, k, tolerance));
+            diagnose_jacobian({J, expected, pose.crank_angle, pose.theta,
+                               evaluator_of<Jansen10Closure>(battery.lengths.links, battery.lengths.foot), tolerance,
+                               angle_name, column_links(battery.lengths)}),
+            J_hint(J, expected, pose, i, k, tolerance, battery));
       }
     }
   }
-  return Verdict::pass(closure_time(list.front()));
+  return Verdict::pass(closure_time(list.front(), battery));
 }
 
 }  // namespace
@@ -226,8 +255,9 @@ Exercise jansen10_jacobian_exercise() {
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: f and J of the 10-equation Jansen closure\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: f and J of the 10-equation Jansen closure\");\n";
   exercise.stubs.octave = "  error('not implemented: f and J of the 10-equation Jansen closure');\n";
+  exercise.variant_task = [](const Variant& variant) { return jansen_lengths_task_text(battery_for(variant).lengths); };
   exercise.battery = [](const Variant& variant) {
-    const std::vector<Pose> list = poses(variant);
+    const Battery list = battery_for(variant);
     return std::vector<Check>{
         {"f follows seed 001's closure equations f1-f10 (its eqs 8-17) at 7 poses, to rounding (1e3 eps of the "
          "links' sum)",

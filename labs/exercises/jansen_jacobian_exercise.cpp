@@ -31,15 +31,30 @@ struct Pose {
 
 // Seed 000's start, four solved poses around the cycle, and two poses away from any root
 // (jacobian_poses: with a variant, their crank angles and offsets drawn from it).
-std::vector<Pose> poses(const Variant& variant) {
+std::vector<Pose> poses(const Variant& variant, const mechanisms::JansenLeg& leg) {
   JansenAngles offset;
   offset << 0.3, -0.2, 0.5, -0.4, 0.25, -0.35, 0.45, -0.15;
   return jacobian_poses(variant, Pose{JansenClosure::seed_crank_angle, JansenClosure::seed_estimates()}, offset,
-                        jansen_closed_form_angles);
+                        [&leg](double crank_angle) { return jansen_closed_form_angles(crank_angle, leg); });
 }
 
-nlohmann::json request_for(const Pose& pose) {
-  return {{"crank_angle", pose.crank_angle}, {"theta", to_json(Eigen::VectorXd(pose.theta))}};
+// The poses and the leg's lengths (a variant's, or seed 000's).
+struct Battery {
+  JansenVariant lengths;
+  std::vector<Pose> list;
+};
+
+Battery battery_for(const Variant& variant) {
+  Battery battery;
+  battery.lengths = jansen_variant_for_poses(variant, false, poses);
+  battery.list = poses(variant, battery.lengths.leg());
+  return battery;
+}
+
+nlohmann::json request_for(const Pose& pose, const JansenVariant& lengths) {
+  nlohmann::json request = {{"crank_angle", pose.crank_angle}, {"theta", to_json(Eigen::VectorXd(pose.theta))}};
+  lengths.add_to(request);
+  return request;
 }
 
 std::string pose_text(const Pose& pose) {
@@ -49,15 +64,14 @@ std::string pose_text(const Pose& pose) {
 
 // Rounding in f: each entry sums terms no larger than the links, so 1e3 eps of their sum is far
 // above rounding and far below any wrong term.
-double f_tolerance() { return 1e3 * eps * jansen_links_sum(); }
+double f_tolerance(const mechanisms::JansenLengths& L) { return 1e3 * eps * jansen_links_sum(L); }
 
-std::vector<ReferenceTime> closure_time(const Pose& pose) {
-  return {{"numlab JansenClosure (f and J)", residual_and_jacobian_seconds(JansenClosure(pose.crank_angle), pose.theta)}};
+std::vector<ReferenceTime> closure_time(const Pose& pose, const mechanisms::JansenLengths& L) {
+  return {{"numlab JansenClosure (f and J)", residual_and_jacobian_seconds(JansenClosure(pose.crank_angle, L), pose.theta)}};
 }
 
 // An x row off by exactly b - a: the offset a where b belongs (a wrong_link detector).
-std::optional<std::string> offset_mistake(int row, double got, double expected) {
-  const mechanisms::JansenLengths L;
+std::optional<std::string> offset_mistake(int row, double got, double expected, const mechanisms::JansenLengths& L) {
   if (row % 2 == 1 && std::abs(std::abs(got - expected) - (L.b - L.a)) < 1e-6) {
     return fmt::format("f[{}] is off by exactly b - a = {:.4g}: the cosine rows use the offset a where b belongs (seed "
                        "000's printed eqs 23 and 25): X = li cos(ti) + b",
@@ -70,12 +84,22 @@ std::string f_hint() {
   return "compare the row with the task's equation: even rows are y components (sines), odd rows x components (cosines)";
 }
 
-Verdict check_f(Session& session, const std::vector<Pose>& list) {
-  const double tolerance = f_tolerance();
+// Under a variant, f from seed 000's lengths where the request's belong (a wrong_link detector).
+std::optional<std::string> seed_lengths_used(const Eigen::VectorXd& f, const Pose& pose, const JansenVariant& lengths,
+                                             double tolerance) {
+  JansenClosure::Vector seed;
+  JansenClosure(pose.crank_angle).residual(pose.theta, seed);
+  return jansen_seed_lengths_used(f, Eigen::VectorXd(seed), lengths, tolerance);
+}
+
+Verdict check_f(Session& session, const Battery& battery) {
+  const std::vector<Pose>& list = battery.list;
+  const mechanisms::JansenLengths& L = battery.lengths.links;
+  const double tolerance = f_tolerance(L);
   for (const Pose& pose : list) {
-    const nlohmann::json reply = session.ask(request_for(pose));
+    const nlohmann::json reply = session.ask(request_for(pose, battery.lengths));
     JansenClosure::Vector expected;
-    JansenClosure(pose.crank_angle).residual(pose.theta, expected);
+    JansenClosure(pose.crank_angle, L).residual(pose.theta, expected);
     session.expect({pose_text(pose), {{"f", to_json(Eigen::VectorXd(expected))}},
                     fmt::format("each f[i] within {} of numlab's JansenClosure above", sci(tolerance))});
     const Eigen::VectorXd f = vector_field(reply, "f", 8);
@@ -84,20 +108,22 @@ Verdict check_f(Session& session, const std::vector<Pose>& list) {
       return Verdict::fail(fmt::format("f[{}] = {}, expected {} from numlab's JansenClosure (seed 000 eq {}) at {}; {}, "
                                        "allowed |error| {} (1e3 eps times the links' sum {})",
                                        i, digits17(f(i)), digits17(expected(i)), i + 1, pose_text(pose),
-                                       difference(f(i), expected(i)), sci(tolerance), jansen_links_sum()),
-                           diagnose_residual({f, expected, pose.crank_angle, pose.theta, evaluator_of<JansenClosure>(), tolerance,
+                                       difference(f(i), expected(i)), sci(tolerance), jansen_links_sum(L)),
+                           diagnose_residual({f, expected, pose.crank_angle, pose.theta, evaluator_of<JansenClosure>(L), tolerance,
                                               jansen_angle_name},
                                              {{"wrong_link", Specificity::exact,
-                                               [&] { return offset_mistake(i, f(i), expected(i)); }}}),
+                                               [&] { return seed_lengths_used(f, pose, battery.lengths, tolerance); }},
+                                              {"wrong_link", Specificity::exact,
+                                               [&] { return offset_mistake(i, f(i), expected(i), L); }}}),
                            f_hint());
     }
   }
-  return Verdict::pass(closure_time(list.front()));
+  return Verdict::pass(closure_time(list.front(), L));
 }
 
 std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, const Pose& pose, int row, int col,
-                   double tolerance) {
-  if (const auto angle = column_from_angle(JansenClosure(pose.crank_angle), got, pose.theta, col, tolerance)) {
+                   double tolerance, const mechanisms::JansenLengths& L) {
+  if (const auto angle = column_from_angle(JansenClosure(pose.crank_angle, L), got, pose.theta, col, tolerance)) {
     return fmt::format("column {} (d/d {}) is evaluated at {}: a column from the wrong angle", col,
                        jansen_angle_name(col), jansen_angle_name(*angle));
   }
@@ -109,22 +135,23 @@ std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, 
 }
 
 // theta_(k+1)'s link is l(k+1): J's column k is +-l(k+1) sin or cos of theta_(k+1).
-std::vector<ColumnLink> column_links() {
-  const mechanisms::JansenLengths L;
+std::vector<ColumnLink> column_links(const mechanisms::JansenLengths& L) {
   return {{"l1", L.l1}, {"l2", L.l2}, {"l3", L.l3}, {"l4", L.l4}, {"l5", L.l5}, {"l6", L.l6}, {"l7", L.l7}, {"l8", L.l8}};
 }
 
-Verdict check_J(Session& session, const std::vector<Pose>& list) {
+Verdict check_J(Session& session, const Battery& battery) {
+  const std::vector<Pose>& list = battery.list;
+  const mechanisms::JansenLengths& L = battery.lengths.links;
   for (const Pose& pose : list) {
-    const nlohmann::json reply = session.ask(request_for(pose));
+    const nlohmann::json reply = session.ask(request_for(pose, battery.lengths));
     JansenClosure::Matrix expected;
-    JansenClosure(pose.crank_angle).jacobian(pose.theta, expected);
+    JansenClosure(pose.crank_angle, L).jacobian(pose.theta, expected);
     // J's entries are at most a link long; rounding in them is a few eps of that.
     const double tolerance = 1e3 * eps * expected.cwiseAbs().maxCoeff();
     session.expect({pose_text(pose), {{"J", to_json(Eigen::MatrixXd(expected))}},
                     fmt::format("each J[i][k] within {} of numlab's analytic JansenClosure J above", sci(tolerance))});
     const Eigen::MatrixXd J = matrix_field(reply, "J", 8, 8);
-    const Eigen::MatrixXd differences = central_differences(JansenClosure(pose.crank_angle), pose.theta);
+    const Eigen::MatrixXd differences = central_differences(JansenClosure(pose.crank_angle, L), pose.theta);
     for (int i = 0; i < 8; ++i) {
       for (int k = 0; k < 8; ++k) {
         if (std::abs(J(i, k) - expected(i, k)) <= tolerance) continue;
@@ -134,13 +161,13 @@ Verdict check_J(Session& session, const std::vector<Pose>& list) {
                         i, k, digits17(J(i, k)), digits17(expected(i, k)), difference(J(i, k), expected(i, k)), i,
                         jansen_angle_name(k), digits17(differences(i, k)), pose_text(pose),
                         sci(tolerance)),
-            diagnose_jacobian({J, expected, pose.crank_angle, pose.theta, evaluator_of<JansenClosure>(), tolerance,
-                               jansen_angle_name, column_links()}),
-            J_hint(J, expected, pose, i, k, tolerance));
+            diagnose_jacobian({J, expected, pose.crank_angle, pose.theta, evaluator_of<JansenClosure>(L), tolerance,
+                               jansen_angle_name, column_links(L)}),
+            J_hint(J, expected, pose, i, k, tolerance, L));
       }
     }
   }
-  return Verdict::pass(closure_time(list.front()));
+  return Verdict::pass(closure_time(list.front(), L));
 }
 
 }  // namespace
@@ -153,8 +180,9 @@ Exercise jansen_jacobian_exercise() {
   exercise.stubs.python = "    raise NotImplementedError(\"not implemented: f and J of the Jansen closure\")\n";
   exercise.stubs.cpp = "  throw std::runtime_error(\"not implemented: f and J of the Jansen closure\");\n";
   exercise.stubs.octave = "  error('not implemented: f and J of the Jansen closure');\n";
+  exercise.variant_task = [](const Variant& variant) { return jansen_lengths_task_text(battery_for(variant).lengths); };
   exercise.battery = [](const Variant& variant) {
-    const std::vector<Pose> list = poses(variant);
+    const Battery list = battery_for(variant);
     return std::vector<Check>{
         {"f follows seed 000's closure equations (1)-(8) at 7 poses, to rounding (1e3 eps of the links' sum)", 1, [list](Session& session) { return check_f(session, list); }},
         {"J is the derivative of f: every entry matches numlab's analytic Jacobian (checked by central differences) at "

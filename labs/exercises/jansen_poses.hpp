@@ -3,24 +3,64 @@
 // intersections, jansen_leg.hpp) on the seed's branch, and what checks say about them.
 
 #include <cmath>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "exercises/variant.hpp"
+#include "exercises/variant_lengths.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
 
 namespace numlab::exercises {
 
-// theta1 ... theta8 of the closed-form pose at `crank_angle` (radians), on seed 000's branch.
-mechanisms::JansenAngles jansen_closed_form_angles(double crank_angle);
+// theta1 ... theta8 of the closed-form pose of `leg` at `crank_angle` (radians), on seed 000's
+// branch; std::logic_error when the leg does not assemble there.
+mechanisms::JansenAngles jansen_closed_form_angles(double crank_angle, const mechanisms::JansenLeg& leg = mechanisms::JansenLeg());
 
 // theta3 ... theta12 of seed 001's 10-equation model at the same closed-form pose, each within pi
 // of the model's start (jansen_seed_estimates).
-Eigen::VectorXd jansen10_closed_form_angles(double crank_angle);
+Eigen::VectorXd jansen10_closed_form_angles(double crank_angle, const mechanisms::JansenLeg& leg = mechanisms::JansenLeg());
 
 // The sum of the links of the 8-equation closure (15 + 50 + ... + 36.7): f's scale in messages.
-double jansen_links_sum();
+double jansen_links_sum(const mechanisms::JansenLengths& L = {});
+
+// The Jansen leg a battery checks: seed 000's lengths without a variant; with one, every length
+// (crank, l1 ... l8, a, b, and with the foot l9, l10) within +-3% of seed 000's (variant_lengths),
+// drawn again until the closed form assembles on the seed's branch at every quarter degree of the
+// crank cycle (no dyad opens, the rigid triangles keep their orientation) and `valid` accepts it.
+struct JansenVariant {
+  mechanisms::JansenLengths links;
+  mechanisms::JansenFootLengths foot;
+  bool varied = false;  // the requests carry `lengths` only then
+  bool with_foot = false;
+  mechanisms::JansenLeg leg() const { return mechanisms::JansenLeg(links, foot); }
+  LinkLengths named() const;
+  // Adds `lengths` to a request when varied.
+  void add_to(nlohmann::json& request) const;
+};
+JansenVariant jansen_variant(const Variant& variant, bool with_foot,
+                             const std::function<bool(const mechanisms::JansenLeg&)>& valid = {});
+// jansen_variant whose leg assembles at every pose `poses(variant, leg)` builds (the closed form
+// throws std::logic_error where it does not).
+template <typename Poses>
+JansenVariant jansen_variant_for_poses(const Variant& variant, bool with_foot, Poses poses) {
+  return jansen_variant(variant, with_foot, [&](const mechanisms::JansenLeg& leg) {
+    try {
+      poses(variant, leg);
+      return true;
+    } catch (const std::logic_error&) {
+      return false;
+    }
+  });
+}
+// A wrong_link detector's evidence: under a varied leg, the student's f equals `seed_f` (numlab's f
+// with seed 000's lengths) to `tolerance`. Nothing otherwise.
+std::optional<std::string> jansen_seed_lengths_used(const Eigen::VectorXd& f, const Eigen::VectorXd& seed_f,
+                                                    const JansenVariant& lengths, double tolerance);
+// TASK.md's words on a variant's lengths ("" when not varied).
+std::string jansen_lengths_task_text(const JansenVariant& lengths);
 
 // "theta3" for index 2.
 std::string jansen_angle_name(int index);

@@ -24,6 +24,7 @@ double mustang_links_sum() { return 34.8; }  // docs/mechanisms.md: L for the Mu
 
 struct MustangNewton {
   using Closure = MustangClosure;
+  using Lengths = mechanisms::MustangLengths;
   static constexpr const char* input = "crank_angle";
   static constexpr const char* start = "guess";
   static constexpr const char* answer = "angles";

@@ -8,6 +8,7 @@
 //   static std::string angle_name(int k);      // "theta3" / "C"
 //   static double links_sum();                 // L, the scale of f
 //   static std::string where(double angle);    // "crank 130 deg"
+//   using Lengths = ...;                       // the closure's lengths: Closure(angle, Lengths)
 // and may have
 //   static std::vector<SlippedClosure> constant_angle_slips();  // a constant angle typed in degrees
 
@@ -24,17 +25,20 @@
 #include "exercises/newton_replies.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
+#include "exercises/variant_lengths.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
 
 namespace numlab::exercises {
 
-template <typename Closure>
+template <typename Closure, typename Lengths>
 struct NewtonRequest {
   double angle;  // the input angle, radians
   typename Closure::Vector start;
   double tolerance = 1e-10;
   int max_iterations = 20;
+  Lengths lengths{};  // the closure's link lengths: the seed's, or a variant's
+  LinkLengths named{};  // a variant's, as the request's "lengths" field; empty without a variant (no field)
 };
 
 template <typename Linkage>
@@ -42,7 +46,7 @@ class NewtonBattery {
  public:
   using Closure = typename Linkage::Closure;
   using Vector = typename Closure::Vector;
-  using Request = NewtonRequest<Closure>;
+  using Request = NewtonRequest<Closure, typename Linkage::Lengths>;
   static constexpr int n = Closure::size;
   static constexpr double eps = std::numeric_limits<double>::epsilon();
 
@@ -50,11 +54,16 @@ class NewtonBattery {
   static double rounding() { return 1e3 * eps * Linkage::links_sum(); }
 
   static nlohmann::json to_request(const Request& request) {
-    return {{Linkage::input, request.angle},
-            {Linkage::start, to_json(Eigen::VectorXd(request.start))},
-            {"tolerance", request.tolerance},
-            {"max_iterations", request.max_iterations}};
+    nlohmann::json json = {{Linkage::input, request.angle},
+                           {Linkage::start, to_json(Eigen::VectorXd(request.start))},
+                           {"tolerance", request.tolerance},
+                           {"max_iterations", request.max_iterations}};
+    if (!request.named.empty()) json["lengths"] = lengths_json(request.named);
+    return json;
   }
+
+  // numlab's closure of the request: its angle and its lengths.
+  static Closure closure_for(const Request& request) { return Closure(request.angle, request.lengths); }
 
   struct Answer {
     Vector x;
@@ -69,7 +78,7 @@ class NewtonBattery {
     answer.reply.status = string_field(answer.raw, "status");
     answer.reply.iterations = integer_field(answer.raw, "iterations");
     typename Closure::Vector f;
-    Closure(request.angle).residual(answer.x, f);
+    closure_for(request).residual(answer.x, f);
     answer.reply.residual_inf = f.template lpNorm<Eigen::Infinity>();
     return answer;
   }
@@ -96,7 +105,7 @@ class NewtonBattery {
   };
 
   static Reference reference_for(const Request& request) {
-    const Closure closure(request.angle);
+    const Closure closure = closure_for(request);
     typename Closure::Vector f;
     typename Closure::Matrix J;
     closure.residual_and_jacobian(request.start, f, J);
@@ -139,7 +148,7 @@ class NewtonBattery {
     } catch (const ReplyError&) {
       // a malformed trace is evidence of nothing: the detectors that need one stay silent
     }
-    evidence.evaluate = evaluator_of<Closure>();
+    evidence.evaluate = evaluator_of<Closure>(request.lengths);
     evidence.seed_start = seed_start();
     if (exact) evidence.exact = Eigen::VectorXd(*exact);
     evidence.rounding = rounding();
@@ -147,7 +156,35 @@ class NewtonBattery {
     evidence.angle_name = [](int k) { return Linkage::angle_name(k); };
     evidence.decided_iterations = reference_for(request).decided;
     evidence.constant_angle_slips = constant_angle_slips();
-    return diagnose_newton(evidence);
+    return more_specific(diagnose({{"wrong_link", Specificity::exact, [&] { return seed_lengths_used(request, evidence); }}}),
+                         diagnose_newton(evidence));
+  }
+
+  // Under a variant: the reply is Newton's on the closure with the seed's lengths (the task's
+  // constants) where the request's belong: its angles solve that closure, or its trace's first row
+  // is that Newton's.
+  static std::optional<std::string> seed_lengths_used(const Request& request, const NewtonEvidence& evidence) {
+    if (request.named.empty()) return std::nullopt;
+    const ClosureEvaluator seed = evaluator_of<Closure>();
+    const double near_root = 10.0 * request.tolerance + rounding();
+    const double seed_residual = seed(request.angle, evidence.x).f.template lpNorm<Eigen::Infinity>();
+    const double own_residual = evidence.evaluate(request.angle, evidence.x).f.template lpNorm<Eigen::Infinity>();
+    bool fits = seed_residual <= near_root && own_residual > 100.0 * near_root;
+    if (!fits && evidence.trace && !evidence.trace->empty()) {
+      const NewtonLoop plain;
+      const auto seed_rows = simulate_newton(seed, request.angle, request.start, request.tolerance, 1, plain);
+      const auto own_rows = simulate_newton(evidence.evaluate, request.angle, request.start, request.tolerance, 1, plain);
+      auto close = [](double a, double b) { return std::abs(a - b) <= 1e-6 * std::max(std::abs(a), std::abs(b)); };
+      const TraceRow& first = evidence.trace->front();
+      fits = !seed_rows.empty() && !own_rows.empty() && close(first.residual_inf, seed_rows[0].residual_inf) &&
+             close(first.step_inf, seed_rows[0].step_inf) && !close(first.residual_inf, own_rows[0].residual_inf);
+    }
+    if (!fits) return std::nullopt;
+    return fmt::format("your Newton solves the closure with the seed's lengths (TASK.md's constants), not your "
+                       "variant's: {} (||f(your angles)||_inf is {} with the seed's lengths, {} with the request's); read "
+                       "them from the request's \"lengths\" ({})",
+                       seed_residual <= near_root ? "your angles are its root" : "your first trace row is its Newton's",
+                       sci(seed_residual), sci(own_residual), lengths_text(request.named));
   }
 
   static nonlinear::NewtonOptions options_for(const Request& request) {
@@ -160,7 +197,7 @@ class NewtonBattery {
 
   // numlab's Newton and GSL's hybridsj on the first request, per request.
   static std::vector<ReferenceTime> reference_times(const Request& request) {
-    const Closure closure(request.angle);
+    const Closure closure = closure_for(request);
     const auto options = options_for(request);
     const double numlab_seconds = median_seconds([&] { nonlinear::Newton<Closure>(closure, options).solve(request.start); });
     const nonlinear::AsDynamicSystem<Closure> dynamic(closure);
@@ -179,7 +216,7 @@ class NewtonBattery {
                       "status \"converged\" and the angles of the closed form above, to what the tolerance and "
                       "kappa(J) allow (angles modulo 2 pi)"});
       const std::string where = Linkage::where(request.angle);
-      const Closure closure(request.angle);
+      const Closure closure = closure_for(request);
       typename Closure::Vector f;
       typename Closure::Matrix J;
       closure.residual_and_jacobian(exact[r], f, J);

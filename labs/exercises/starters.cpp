@@ -261,11 +261,12 @@ namespace {
 
 // The section of TASK.md that names a variant.
 std::string variant_section(const Exercise& exercise, const Variant& variant) {
+  const std::string more = exercise.variant_task ? exercise.variant_task(variant) : "";
   return fmt::format("\n## Your variant\n\nYour variant is `{}`: the checks send you the random matrices, data, "
                      "starts and crank angles of this variant (another ID gets others). Check with `--variant {}`, "
                      "as the command below does; `numlab exercise check {}` without it checks another set of "
-                     "inputs.\n",
-                     *variant.id(), shell_word(*variant.id()), exercise.name);
+                     "inputs.\n{}",
+                     *variant.id(), shell_word(*variant.id()), exercise.name, more.empty() ? "" : "\n" + more);
 }
 
 }  // namespace

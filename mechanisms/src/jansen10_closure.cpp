@@ -4,25 +4,21 @@
 
 namespace numlab::mechanisms {
 
-namespace {
-// Each closure term is L cos(x_j) in a cosine row and L sin(x_j) in the sine row below it.
-struct Term {
-  int row;  // the cosine row
-  int column;
-  double length;
-};
-constexpr Term terms[] = {{0, 0, 50.0},  {0, 1, 41.5},  {2, 1, -41.5}, {2, 2, 55.8},  {2, 3, 40.1},
-                          {4, 3, 40.1},  {4, 4, -39.4}, {4, 5, 39.3},  {4, 6, -36.7}, {6, 5, -39.3},
-                          {6, 7, -61.9}, {8, 6, 36.7},  {8, 8, 49.0},  {8, 9, 65.7}};
-}  // namespace
+template <typename Sines>
+Jansen10ClosureOf<Sines>::Jansen10ClosureOf(double crank_angle, JansenLengths lengths, JansenFootLengths foot)
+    : lengths_(lengths),
+      terms_{{{0, 0, lengths.l1},  {0, 1, lengths.l2},   {2, 1, -lengths.l2}, {2, 2, lengths.l3},  {2, 3, lengths.l4},
+              {4, 3, lengths.l4},  {4, 4, -lengths.l5},  {4, 5, lengths.l7},  {4, 6, -lengths.l8}, {6, 5, -lengths.l7},
+              {6, 7, -lengths.l6}, {8, 6, lengths.l8},   {8, 8, foot.l9},     {8, 9, foot.l10}}} {
+  set_crank_angle(crank_angle);
+}
 
 template <typename Sines>
 void Jansen10ClosureOf<Sines>::set_crank_angle(double crank_angle) {
-  const JansenLengths lengths;
   double c, s;
   Sines::one(crank_angle, c, s);
-  crank_x_ = lengths.b + lengths.crank * c;
-  crank_y_ = lengths.a + lengths.crank * s;
+  crank_x_ = lengths_.b + lengths_.crank * c;
+  crank_y_ = lengths_.a + lengths_.crank * s;
 }
 
 template <typename Sines>
@@ -33,7 +29,7 @@ void Jansen10ClosureOf<Sines>::residual_and_jacobian(const Vector& theta, Vector
   f(0) = f(6) = crank_x_;
   f(1) = f(7) = crank_y_;
   J.setZero();
-  for (const Term& term : terms) {
+  for (const Term& term : terms_) {
     f(term.row) += term.length * c(term.column);
     f(term.row + 1) += term.length * s(term.column);
     J(term.row, term.column) = -term.length * s(term.column);  // d(L cos t)/dt

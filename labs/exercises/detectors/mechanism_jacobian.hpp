@@ -22,13 +22,14 @@ struct ClosureValues {
 };
 using ClosureEvaluator = std::function<ClosureValues(double driver, const Eigen::VectorXd& theta)>;
 
-// The evaluator of a numlab closure built from its driver angle (JansenClosure(crank), ...).
-template <typename Closure>
-ClosureEvaluator evaluator_of() {
-  return [](double driver, const Eigen::VectorXd& theta) {
+// The evaluator of a numlab closure built from its driver angle and `arguments` (JansenClosure(crank),
+// JansenClosure(crank, a variant's lengths), ...).
+template <typename Closure, typename... Arguments>
+ClosureEvaluator evaluator_of(Arguments... arguments) {
+  return [arguments...](double driver, const Eigen::VectorXd& theta) {
     typename Closure::Vector f;
     typename Closure::Matrix J;
-    Closure(driver).residual_and_jacobian(typename Closure::Vector(theta), f, J);
+    Closure(driver, arguments...).residual_and_jacobian(typename Closure::Vector(theta), f, J);
     return ClosureValues{Eigen::VectorXd(f), Eigen::MatrixXd(J)};
   };
 }

@@ -4,6 +4,7 @@
 // ID, other requests in each randomised check for another ID, and passes under variants.
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <stdexcept>
@@ -12,6 +13,9 @@
 #include "exercises/exercise.hpp"
 #include "exercises/function_session.hpp"
 #include "exercises/variant.hpp"
+#include "numlab/mechanisms/jansen_closure.hpp"
+#include "numlab/mechanisms/jansen_leg.hpp"
+#include "numlab/nonlinear/newton.hpp"
 #include "gauss_seidel_solution.hpp"
 #include "gepp_solution.hpp"
 #include "inverse2x2_solution.hpp"
@@ -152,5 +156,106 @@ TEST_CASE("every battery: the C++ reference passes every check under two variant
       INFO(name << " under " << id);
       require_all_pass(run(name, Variant(id)), id);
     }
+  }
+}
+
+// Link lengths (issue 29 §4): the Jansen exercises' requests carry a variant's lengths.
+namespace {
+
+const char* const jansen_exercises[] = {"jansen-jacobian", "jansen10-jacobian", "jansen-newton"};
+
+// Seed 000's lengths by the protocol's names (docs/exercises.md), typed here from the seed.
+const std::map<std::string, double>& seed_lengths() {
+  static const std::map<std::string, double> lengths = {
+      {"crank", 15.0}, {"l1", 50.0}, {"l2", 41.5}, {"l3", 55.8}, {"l4", 40.1}, {"l5", 39.4}, {"l6", 61.9},
+      {"l7", 39.3},    {"l8", 36.7}, {"a", 7.8},   {"b", 38.0},  {"l9", 49.0}, {"l10", 65.7}};
+  return lengths;
+}
+
+numlab::mechanisms::JansenLengths jansen_lengths_of(const nlohmann::json& given) {
+  numlab::mechanisms::JansenLengths L;
+  L.crank = given["crank"];
+  L.l1 = given["l1"], L.l2 = given["l2"], L.l3 = given["l3"], L.l4 = given["l4"];
+  L.l5 = given["l5"], L.l6 = given["l6"], L.l7 = given["l7"], L.l8 = given["l8"];
+  L.a = given["a"], L.b = given["b"];
+  return L;
+}
+
+}  // namespace
+
+TEST_CASE("without a variant no Jansen request carries lengths") {
+  for (const char* name : jansen_exercises) {
+    for (const auto& check : requests_of(run(name, Variant()))) {
+      for (const auto& request : check) CHECK_FALSE(request.contains("lengths"));
+    }
+  }
+}
+
+TEST_CASE("under a variant every Jansen request carries the variant's lengths: each within 3% of seed 000's, "
+          "other for another ID, and the leg assembles at every crank angle a request names") {
+  std::map<std::string, nlohmann::json> by_id;
+  for (const char* id : {"s1234567", "alice", "42"}) {
+    for (const char* name : jansen_exercises) {
+      INFO(name << " under " << id);
+      const auto results = run(name, Variant(id));
+      require_all_pass(results, id);
+      for (const auto& check : requests_of(results)) {
+        for (const auto& request : check) {
+          REQUIRE(request.contains("lengths"));
+          const nlohmann::json& lengths = request["lengths"];
+          CHECK(lengths.size() == (std::string(name) == "jansen10-jacobian" ? 13u : 11u));
+          for (const auto& [key, value] : lengths.items()) {
+            const double seed = seed_lengths().at(key), drawn = value.get<double>();
+            CHECK(std::abs(drawn / seed - 1.0) <= 0.03);
+            CHECK(drawn != seed);
+          }
+          // The same leg in every request, and in every Jansen exercise of one ID.
+          nlohmann::json eight = lengths;
+          eight.erase("l9");
+          eight.erase("l10");
+          if (!by_id.contains(id)) by_id[id] = eight;
+          CHECK(by_id[id] == eight);
+          // numlab's closed form assembles the leg at the request's crank angle, independently of
+          // the battery's re-draw; and numlab's Newton converges from a Newton request's start.
+          const numlab::mechanisms::JansenLengths L = jansen_lengths_of(lengths);
+          const double crank = request["crank_angle"];
+          CHECK(numlab::mechanisms::JansenLeg(L).closed_form_joints(crank).has_value());
+          if (request.contains("theta0") && request["max_iterations"].get<int>() >= 10) {
+            numlab::nonlinear::NewtonOptions options;
+            options.residual_tolerance = request["tolerance"];
+            options.max_iterations = request["max_iterations"];
+            const numlab::mechanisms::JansenClosure closure(crank, L);
+            const auto solved = numlab::nonlinear::Newton<numlab::mechanisms::JansenClosure>(closure, options)
+                                    .solve(numlab::mechanisms::JansenClosure::Vector(
+                                        numlab::exercise::vector(request["theta0"]).data()));
+            CHECK(solved.status == numlab::Status::converged);
+          }
+        }
+      }
+    }
+  }
+  CHECK(by_id["s1234567"] != by_id["alice"]);
+  CHECK(by_id["alice"] != by_id["42"]);
+  CHECK(by_id["s1234567"] != by_id["42"]);
+}
+
+TEST_CASE("under a variant a solution that ignores the request's lengths (seed 000's constants) fails with "
+          "diagnosis wrong_link") {
+  for (const char* name : jansen_exercises) {
+    INFO(name);
+    const Solve solve = references().at(name).solve;
+    FunctionSession session(name, [solve](const nlohmann::json& request) {
+      nlohmann::json without = request;
+      without.erase("lengths");
+      nlohmann::json reply = solve(without);
+      reply["id"] = request["id"];
+      return reply;
+    });
+    const auto results = run_checks(find_exercise(name), session, Variant("s1234567"));
+    CHECK(results.front().status == CheckStatus::fail);
+    const auto diagnosis = overall_diagnosis(results);
+    REQUIRE(diagnosis.has_value());
+    CHECK(diagnosis->cause == "wrong_link");
+    CHECK_THAT(diagnosis->evidence, Catch::Matchers::Contains("lengths"));
   }
 }

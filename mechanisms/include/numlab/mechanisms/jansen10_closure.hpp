@@ -11,6 +11,7 @@
 // like with like.
 
 #include <Eigen/Core>
+#include <array>
 
 #include "numlab/linalg/linear_result.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
@@ -44,7 +45,9 @@ class Jansen10ClosureOf : public nonlinear::EvaluatesTogether<Jansen10ClosureOf<
   using Vector = linalg::Vector<10>;
   using Matrix = linalg::Matrix<10>;
 
-  explicit Jansen10ClosureOf(double crank_angle) { set_crank_angle(crank_angle); }
+  // The leg of seed 000's lengths by default; other lengths (an exercise variant's) give the same
+  // ten equations with those lengths in place of the printed ones.
+  explicit Jansen10ClosureOf(double crank_angle, JansenLengths lengths = {}, JansenFootLengths foot = {});
   void set_crank_angle(double crank_angle);
   int dimension() const { return size; }
   void residual_and_jacobian(const Vector& theta, Vector& f, Matrix& J) const;
@@ -52,6 +55,14 @@ class Jansen10ClosureOf : public nonlinear::EvaluatesTogether<Jansen10ClosureOf<
   double crank_y() const { return crank_y_; }
 
  private:
+  // Each closure term is length cos(x_column) in a cosine row and length sin(x_column) below it.
+  struct Term {
+    int row;  // the cosine row
+    int column;
+    double length;
+  };
+  JansenLengths lengths_;
+  std::array<Term, 14> terms_;
   double crank_x_ = 0.0, crank_y_ = 0.0;
 };
 

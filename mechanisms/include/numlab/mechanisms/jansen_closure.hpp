@@ -27,6 +27,12 @@ struct JansenLengths {
   double b = 38.0;  // and b to its left
 };
 
+// The foot triangle D-E-F's other two sides (l8 = D-E is the third), seed 000's l9 and l10.
+struct JansenFootLengths {
+  double l9 = 49.0;   // D-F
+  double l10 = 65.7;  // E-F
+};
+
 template <typename Sines>
 class JansenClosureOf : public nonlinear::EvaluatesTogether<JansenClosureOf<Sines>, 8> {
  public:

@@ -23,11 +23,6 @@ using JansenJoints = std::array<Eigen::Vector2d, 8>;  // indexed by JansenJoint:
 inline constexpr std::size_t at(JansenJoint joint) { return static_cast<std::size_t>(joint); }
 using JansenAngles = JansenClosure::Vector;           // theta1 ... theta8
 
-struct JansenFootLengths {
-  double l9 = 49.0;   // D-F
-  double l10 = 65.7;  // E-F
-};
-
 // A link (or a rigid body's edge): two joints and the distance between them.
 struct JansenLink {
   JansenJoint from, to;

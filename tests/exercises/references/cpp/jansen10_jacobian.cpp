@@ -7,15 +7,27 @@
 namespace jansen10_jacobian_reference {
 
 // The crank li, the offsets a (down) and b (left) of P1, and |r3| ... |r12|.
-constexpr double li = 15, a = 7.8, b = 38;
-constexpr double r3 = 50, r4 = 41.5, r5 = 55.8, r6 = 40.1, r7 = 39.4, r8 = 39.3, r9 = 36.7, r10 = 61.9, r11 = 49,
-                 r12 = 65.7;
+struct Lengths {
+  double li = 15, a = 7.8, b = 38;
+  double r3 = 50, r4 = 41.5, r5 = 55.8, r6 = 40.1, r7 = 39.4, r8 = 39.3, r9 = 36.7, r10 = 61.9, r11 = 49, r12 = 65.7;
+};
+
+// The request's "lengths" (a variant's: crank, a, b, l1 ... l10, where |r3| ... |r12| are l1, l2, l3,
+// l4, l5, l7, l8, l6, l9, l10) when it has them, else seed 000's.
+inline Lengths lengths_of(const nlohmann::json& request) {
+  Lengths L;
+  if (!request.contains("lengths")) return L;
+  const nlohmann::json& g = request["lengths"];
+  L = {g["crank"], g["a"], g["b"], g["l1"], g["l2"], g["l3"], g["l4"], g["l5"], g["l7"], g["l8"], g["l6"], g["l9"], g["l10"]};
+  return L;
+}
 
 using Vector10 = Eigen::Matrix<double, 10, 1>;
 using Matrix10 = Eigen::Matrix<double, 10, 10>;
 
 // t(k) is theta_(k+3). Rows 2p and 2p + 1 are loop p's x and y components.
-inline void closure(double crank, const Vector10& t, Vector10& f, Matrix10& J) {
+inline void closure(double crank, const Vector10& t, Vector10& f, Matrix10& J, const Lengths& lengths = {}) {
+  const auto& [li, a, b, r3, r4, r5, r6, r7, r8, r9, r10, r11, r12] = lengths;
   const double X = b + li * std::cos(crank), Y = a + li * std::sin(crank);
   const Vector10 s = t.array().sin(), c = t.array().cos();
   f << X + r3 * c[0] + r4 * c[1], Y + r3 * s[0] + r4 * s[1],
@@ -41,7 +53,7 @@ inline nlohmann::json solve(const nlohmann::json& request) {
   const auto theta = numlab::exercise::vector(request["theta"]);
   Vector10 f;
   Matrix10 J;
-  closure(request["crank_angle"].get<double>(), Vector10(theta.data()), f, J);
+  closure(request["crank_angle"].get<double>(), Vector10(theta.data()), f, J, lengths_of(request));
   numlab::exercise::Matrix rows(10, numlab::exercise::Vector(10));
   for (int i = 0; i < 10; ++i)
     for (int k = 0; k < 10; ++k) rows[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = J(i, k);

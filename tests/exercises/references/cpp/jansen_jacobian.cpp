@@ -16,7 +16,7 @@ inline nlohmann::json solve(const nlohmann::json& request) {
   const auto theta = numlab::exercise::vector(request["theta"]);
   Vector8 f;
   Matrix8 J;
-  closure(request["crank_angle"].get<double>(), Vector8(theta.data()), f, J);
+  closure(request["crank_angle"].get<double>(), Vector8(theta.data()), f, J, jansen_reference::lengths_of(request));
   numlab::exercise::Matrix rows(8, numlab::exercise::Vector(8));
   for (int i = 0; i < 8; ++i)
     for (int k = 0; k < 8; ++k) rows[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = J(i, k);

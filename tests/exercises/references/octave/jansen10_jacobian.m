@@ -11,7 +11,7 @@ end
 function [f, J] = closure(crank, theta)
   LI = 15; A_OFFSET = 7.8; B_OFFSET = 38;
   % |r3| ... |r12|: the lengths of the links whose directions are theta3 ... theta12.
-  LENGTHS = [50, 41.5, 55.8, 40.1, 39.4, 39.3, 36.7, 61.9, 49, 65.7];
+  [LI, A_OFFSET, B_OFFSET, LENGTHS] = variant_lengths(LI, A_OFFSET, B_OFFSET, [50, 41.5, 55.8, 40.1, 39.4, 39.3, 36.7, 61.9, 49, 65.7]);
   % Each loop: whether it starts with P1->A, and its [angle index, sign] terms (index 1 is theta3).
   % Row 2 loop - 1 is the loop's x component (cosines), row 2 loop its y component (sines).
   FROM_CRANK = [true, false, false, true, false];
@@ -83,6 +83,19 @@ function text = json_number(v)
   end
 end
 
+% Seed 000's lengths, or the variant's when the request carries them (TASK.md, "Your variant"):
+% lengths are |r3| ... |r12| (l1 ... l5, l7, l8, l6, l9, l10).
+function [li, a, b, lengths] = variant_lengths(li, a, b, lengths)
+  global REQUEST_LENGTHS
+  if ~isempty(REQUEST_LENGTHS)
+    g = REQUEST_LENGTHS;
+    li = g.crank;
+    a = g.a;
+    b = g.b;
+    lengths = [g.l1, g.l2, g.l3, g.l4, g.l5, g.l7, g.l8, g.l6, g.l9, g.l10];
+  end
+end
+
 % One request per line on stdin, one reply per line on stdout. input('', 's') reads a line as soon
 % as it arrives (fgetl(stdin) on a pipe waits for it to fill or close); at the end of stdin it raises.
 while true
@@ -95,6 +108,11 @@ while true
     continue;
   end
   request = jsondecode(line);
+  global REQUEST_LENGTHS
+  REQUEST_LENGTHS = [];
+  if isfield(request, 'lengths')
+    REQUEST_LENGTHS = request.lengths;
+  end
   try
     reply = solve(request);
   catch err  % the checker reports it as this check's failure

@@ -40,11 +40,22 @@ def solve(request):
     return {"f": f.tolist(), "J": J.tolist()}
 
 
+def use_lengths(lengths):
+    """The variant's link lengths (TASK.md, "Your variant") in place of seed 000's: |r3| ... |r12| are
+    l1, l2, l3, l4, l5, l7, l8, l6, l9, l10."""
+    global LI, A_OFFSET, B_OFFSET, R3, R4, R5, R6, R7, R8, R9, R10, R11, R12
+    LI, A_OFFSET, B_OFFSET = lengths["crank"], lengths["a"], lengths["b"]
+    R3, R4, R5, R6, R7, R8, R9, R10, R11, R12 = LENGTHS[:] = [lengths[name] for name in (
+        "l1", "l2", "l3", "l4", "l5", "l7", "l8", "l6", "l9", "l10")]
+
+
 def main():
     for line in sys.stdin:
         if not line.strip():
             continue
         request = json.loads(line)
+        if "lengths" in request:
+            use_lengths(request["lengths"])
         try:
             reply = solve(request)
         except Exception as error:

@@ -64,11 +64,20 @@ def solve(request):
     return {"theta": theta.tolist(), "status": status, "iterations": iterations, "trace": trace}
 
 
+def use_lengths(lengths):
+    """The variant's link lengths (TASK.md, "Your variant") in place of seed 000's."""
+    global LI, L1, L2, L3, L4, L5, L6, L7, L8, A_OFFSET, B_OFFSET
+    LI, A_OFFSET, B_OFFSET = lengths["crank"], lengths["a"], lengths["b"]
+    L1, L2, L3, L4, L5, L6, L7, L8 = LENGTHS[:] = [lengths["l%d" % k] for k in range(1, 9)]
+
+
 def main():
     for line in sys.stdin:
         if not line.strip():
             continue
         request = json.loads(line)
+        if "lengths" in request:
+            use_lengths(request["lengths"])
         try:
             reply = solve(request)
         except Exception as error:
