@@ -14,7 +14,10 @@
 #include "parsing/argument_parsing.hpp"
 #include "methods/data_dir.hpp"
 #include "output/linkage_report.hpp"
+#include "numlab/mechanisms/linkage/crank_analysis.hpp"
+#include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_authoring_checks.hpp"
+#include "numlab/printable_text.hpp"
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
 #include "numlab/nonlinear/jacobian_check.hpp"
 #include "output/table.hpp"
@@ -148,6 +151,18 @@ std::vector<std::string> authoring_check_lines(const LinkageSolver& solver, bool
   return lines;
 }
 
+// --output NAME, else the file's `output = "NAME"`, else none. An unknown --output is bad input.
+std::optional<LinkageOutput> chosen_output(const LinkageDescription& d, const std::string& flag) {
+  const std::string& name = flag.empty() ? d.output : flag;
+  if (name.empty()) return std::nullopt;
+  auto output = find_output(d, name);
+  if (!output) {
+    throw std::invalid_argument("--output '" + printable(std::string_view(name).substr(0, 40)) + "': not a link, body or slider joint of " +
+                                d.name + "; name one of the " + output_choices(d));
+  }
+  return output;
+}
+
 }  // namespace
 
 int run_linkage(const LinkageRun& run) {
@@ -159,6 +174,10 @@ int run_linkage(const LinkageRun& run) {
     print_explanation(std::cout, model, run.common.format);
     return exit_success;
   }
+  const std::optional<LinkageOutput> output = chosen_output(model.description(), run.output);
+  if (run.speed_rad_s && !model.crank_driven()) {
+    throw std::invalid_argument("--speed gives a crank's speed; " + model.description().name + " is driven by a slider");
+  }
   LinkageSolverOptions options;
   options.solver = run.solver;
   options.linear = run.linear;
@@ -166,6 +185,11 @@ int run_linkage(const LinkageRun& run) {
   if (run.common.max_iterations) options.newton.max_iterations = *run.common.max_iterations;
   const LinkageSolver solver(model, options);
   std::vector<std::string> warnings = authoring_check_lines(solver, run.strict);
+  if (run.analyse) {
+    print_crank_analysis(std::cout, model, analyse_crank_mechanism(solver, output ? output->name : ""), run.file,
+                         run.common.format);
+    return exit_success;
+  }
   const DegreeRange range = run.driver ? DegreeRange{*run.driver, *run.driver, 1.0}
                                        : parse_degree_range(run.sweep, "--sweep");
 
@@ -186,8 +210,8 @@ int run_linkage(const LinkageRun& run) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() - pause.seconds_waited();
 
   // 3. The checks that read the sweep, the files, then the report.
-  LinkageReport report{model, solver, sweep, time_s, {}, std::nullopt, Status::converged, std::move(warnings)};
-  report.derivatives = check_poses(solver, sweep);
+  LinkageReport report{model, solver, sweep, time_s, check_poses(solver, sweep), std::nullopt, Status::converged,
+                       std::move(warnings), output, run.speed_rad_s};
   if (run.check_jacobian) report.jacobian = check_jacobians(model, sweep);
   report.status = overall_status(sweep, report.derivatives);
   const bool drawable = std::any_of(sweep.poses.begin(), sweep.poses.end(),

@@ -23,6 +23,9 @@ struct LinkageRun {
   bool arrows = false;             // --svg draws velocity arrows
   bool strict = false;             // --strict: an authoring warning is bad input (exit 2)
   bool switch_at_crossing = false; // --at-crossing switch: take the other branch where two cross
+  bool analyse = false;            // --analyse: the four-bar or slider-crank analysis, and stop
+  std::string output;              // --output: a link, body or slider joint (else the file's `output`)
+  std::optional<double> speed_rad_s;  // --speed: the crank's speed, rad/s
   CommonOptions common;
   std::string svg, animate;        // already placed inside --out
 };

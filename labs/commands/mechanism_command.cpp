@@ -22,6 +22,7 @@
 #include "commands/mustang_command.hpp"
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
 #include "numlab/printable_text.hpp"
+#include "parsing/speed_argument.hpp"
 #include "commands/crank_sweep_csv.hpp"
 #include "commands/crank_sweep_tracer.hpp"
 #include "output/table.hpp"
@@ -165,6 +166,12 @@ MechanismCommand::MechanismCommand(CLI::App& app) {
   command_->add_option("--at-crossing", at_crossing_, "A description file: where two assembly branches cross, "
                                                       "follow the smooth one (default) or switch to the other")
       ->check(CLI::IsMember({"smooth", "switch"}));
+  command_->add_flag("--analyse", analyse_, "A description file: a four-bar's Grashof class, toggles and time ratio "
+                                            "(a slider-crank's dead centres and time ratio), and stop");
+  command_->add_option("--output", output_, "A description file: the output link, body or slider joint whose velocity "
+                                            "ratio and mechanical advantage the CSV and JSON give (default: the file's output)");
+  command_->add_option("--speed", speed_, "A description file: the crank's constant speed, e.g. 120rpm or 12.5rad/s: "
+                                          "link rates per second too");
   add_common_options(*command_, common_);
 }
 
@@ -198,6 +205,7 @@ int MechanismCommand::run() const {
   const bool from_file = !file.empty();
   check_flags(common, from_file);
   if (explain_) return explain(common, file);
+  if (analyse_) return analyse(common, file);
   if (!crank_ && sweep_.empty()) throw std::invalid_argument("give --crank DEG or --sweep START:STOP:STEP");
   if (crank_ && !std::isfinite(*crank_)) throw std::invalid_argument("--crank must be a finite number of degrees");
   const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : parse_sweep(sweep_);
@@ -222,7 +230,7 @@ std::string MechanismCommand::linkage_file() const {
 
 // Each flag given only where it applies, each file flag with a name.
 void MechanismCommand::check_flags(const CommonOptions& common, bool from_file) const {
-  for (const auto* flag : {"--explain", "--check-jacobian", "--arrows", "--strict", "--at-crossing"}) {
+  for (const auto* flag : {"--explain", "--check-jacobian", "--arrows", "--strict", "--at-crossing", "--analyse", "--output", "--speed"}) {
     require_applies(given(*command_, flag), from_file, flag, "a linkage description file or shipped model");
   }
   require_applies(given(*command_, "--arrows"), svg_.empty() == false, "--arrows", "--svg FILE");
@@ -236,6 +244,8 @@ void MechanismCommand::check_flags(const CommonOptions& common, bool from_file) 
   for (const auto& [flag, value] : {std::pair{"--svg", &svg_}, std::pair{"--animate", &animate_}, std::pair{"--beest", &beest_}}) {
     if (given(*command_, flag) && value->empty()) throw std::invalid_argument(std::string(flag) + " needs a file name");
   }
+  if (explain_ && analyse_) throw std::invalid_argument("--explain and --analyse each print a report and stop: give one");
+  if (given(*command_, "--speed")) (void)parse_speed(speed_);  // checked before any work
   if (given(*command_, "--beest-animated") && !(beest_seconds_ > 0.0 && std::isfinite(beest_seconds_))) {
     throw std::invalid_argument("--beest-animated: the stride time must be a positive number of seconds");
   }
@@ -244,7 +254,7 @@ void MechanismCommand::check_flags(const CommonOptions& common, bool from_file) 
 // --explain: the derived model of a description file, no solve.
 int MechanismCommand::explain(const CommonOptions& common, const std::string& file) const {
   for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--strict",
-                           "--at-crossing"}) {
+                           "--at-crossing", "--output", "--speed"}) {
     require_applies(given(*command_, flag), false, flag, "a solve, not --explain");
   }
   for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
@@ -254,6 +264,25 @@ int MechanismCommand::explain(const CommonOptions& common, const std::string& fi
   LinkageRun run;
   run.file = file;
   run.explain = true;
+  run.common = common;
+  return run_linkage(run);
+}
+
+// --analyse: a four-bar's or slider-crank's analysis from the model, no sweep asked for.
+int MechanismCommand::analyse(const CommonOptions& common, const std::string& file) const {
+  for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--at-crossing",
+                           "--speed"}) {
+    require_applies(given(*command_, flag), false, flag, "a sweep, not --analyse");
+  }
+  for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
+    require_applies(given(common, flag), false, flag, "a sweep, not --analyse");
+  }
+  if (common.format == Format::csv) throw std::invalid_argument("--analyse prints text or JSON, not CSV");
+  LinkageRun run;
+  run.file = file;
+  run.analyse = true;
+  run.output = output_;
+  run.strict = strict_;
   run.common = common;
   return run_linkage(run);
 }
@@ -283,6 +312,8 @@ int MechanismCommand::sweep_file(const CommonOptions& common, const SweepRange&,
   run.arrows = arrows_;
   run.strict = strict_;
   run.switch_at_crossing = at_crossing_ == "switch";
+  run.output = output_;
+  if (given(*command_, "--speed")) run.speed_rad_s = parse_speed(speed_);
   run.common = common;
   run.svg = paths.svg;
   run.animate = paths.animate;

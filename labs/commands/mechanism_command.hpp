@@ -27,6 +27,7 @@ class MechanismCommand {
   std::string linkage_file() const;
   void check_flags(const CommonOptions& common, bool from_file) const;
   int explain(const CommonOptions& common, const std::string& file) const;
+  int analyse(const CommonOptions& common, const std::string& file) const;
   OutputPaths checked_outputs(const CommonOptions& common, const std::string& file) const;
   // The one sweep interface: a description file or shipped model, the Mustang, the Jansen leg
   // (`file` is the description file, empty for the built-in linkages).
@@ -55,6 +56,9 @@ class MechanismCommand {
   bool arrows_ = false;
   bool strict_ = false;
   std::string at_crossing_ = "smooth";
+  bool analyse_ = false;
+  std::string output_;
+  std::string speed_;
 };
 
 // "START:STOP:STEP" in degrees; throws std::invalid_argument naming the problem.

@@ -131,6 +131,52 @@ ClosedFormWorst worst_closed_form(const LinkageSweep& sweep) {
   return worst;
 }
 
+constexpr double degrees = 180.0 / 3.141592653589793238462643383279502884;
+
+// Every link's angle (radians here; degrees in the output), omega and alpha, and the output's
+// velocity ratio, at a pose (NaN where the pose has no kinematics).
+struct LinkRates {
+  std::vector<AngularMotion> links;
+  double ratio = nan;
+};
+LinkRates link_rates(const LinkageReport& r, const std::vector<LinkLine>& lines, const LinkagePose& pose) {
+  const auto joints = joint_motions(r.model, pose.q, pose.velocity, pose.acceleration);
+  LinkRates rates;
+  for (const LinkLine& line : lines) {
+    rates.links.push_back(angular_motion(joints[static_cast<std::size_t>(line.from)], joints[static_cast<std::size_t>(line.to)]));
+  }
+  if (r.output) rates.ratio = output_rate(*r.output, lines, joints);
+  return rates;
+}
+
+// The columns after branch_kept: angle_L, omega_L, alpha_L per link and body; the output's
+// velocity_ratio_O and mechanical_advantage_O; with --speed omega_L_rad_s and alpha_L_rad_s2.
+void print_link_header(std::ostream& out, const LinkageReport& r, const std::vector<LinkLine>& lines) {
+  for (const LinkLine& line : lines) out << ",angle_" << line.name << ",omega_" << line.name << ",alpha_" << line.name;
+  if (r.output) out << ",velocity_ratio_" << r.output->name << ",mechanical_advantage_" << r.output->name;
+  if (r.speed_rad_s) {
+    for (const LinkLine& line : lines) out << ",omega_" << line.name << "_rad_s,alpha_" << line.name << "_rad_s2";
+  }
+}
+
+// "Q-B: velocity ratio -0.52 .. 0.61 per radian of crank; mechanical advantage at least 1.64 in size (infinite at 1 pose)".
+std::string output_summary(const LinkageReport& r) {
+  const auto lines = link_lines(r.model.description());
+  double low = std::numeric_limits<double>::infinity(), high = -low, least = low;
+  int infinite = 0;
+  for (const auto& pose : r.sweep.poses) {
+    if (!converged(pose)) continue;
+    const double ratio = link_rates(r, lines, pose).ratio, advantage = mechanical_advantage(ratio);
+    if (std::isnan(ratio)) continue;
+    low = std::min(low, ratio), high = std::max(high, ratio), least = std::min(least, std::abs(advantage));
+    infinite += std::isinf(advantage) ? 1 : 0;
+  }
+  if (!std::isfinite(low)) return r.output->name + ": no assembled pose";
+  return fmt::format("{}: velocity ratio {:.4g} .. {:.4g} per {}; mechanical advantage at least {:.4g} in size{}",
+                     r.output->name, low, high, r.model.crank_driven() ? "radian of crank" : "unit of travel", least,
+                     infinite > 0 ? fmt::format(" (infinite at {} pose{}: a toggle)", infinite, infinite == 1 ? "" : "s") : "");
+}
+
 }  // namespace
 
 void print_explanation(std::ostream& out, const LinkageModel& model, Format format) {
@@ -202,7 +248,10 @@ void print_linkage_csv(std::ostream& out, const LinkageReport& r) {
   for (const auto& j : joints) out << ",x_" << j.name << ",y_" << j.name;
   for (const auto& j : joints) out << ",vx_" << j.name << ",vy_" << j.name << ",ax_" << j.name << ",ay_" << j.name;
   for (std::size_t b : dyad_blocks) out << ",mu_" << block_joint_names(r.model, r.solver.blocks()[b]);
-  out << ",condition,iterations,residual_inf,status,branch_kept\n";
+  out << ",condition,iterations,residual_inf,status,branch_kept";
+  const auto lines = link_lines(r.model.description());
+  print_link_header(out, r, lines);
+  out << '\n';
   for (const auto& pose : r.sweep.poses) {
     out << fmt::format("{:.10g}", pose.driver);
     std::vector<JointMotion> m;
@@ -210,8 +259,16 @@ void print_linkage_csv(std::ostream& out, const LinkageReport& r) {
     for (const auto& jm : m) out << fmt::format(",{:.17g},{:.17g}", jm.p.x(), jm.p.y());
     for (const auto& jm : m) out << fmt::format(",{:.17g},{:.17g},{:.17g},{:.17g}", jm.v.x(), jm.v.y(), jm.a.x(), jm.a.y());
     for (std::size_t b : dyad_blocks) out << fmt::format(",{:.10g}", converged(pose) ? pose.transmission_deg[b] : nan);
-    out << fmt::format(",{:.6g},{},{:.6g},{},{}\n", pose.condition, pose.outcome.iterations, pose.outcome.residual_norm,
+    out << fmt::format(",{:.6g},{},{:.6g},{},{}", pose.condition, pose.outcome.iterations, pose.outcome.residual_norm,
                        to_string(pose.outcome.status), kept(r.solver, pose) ? "yes" : "no");
+    const LinkRates rates = link_rates(r, lines, pose);
+    for (const AngularMotion& m : rates.links) out << fmt::format(",{:.12g},{:.17g},{:.17g}", m.angle * degrees, m.omega, m.alpha);
+    if (r.output) out << fmt::format(",{:.17g},{:.17g}", rates.ratio, mechanical_advantage(rates.ratio));
+    if (r.speed_rad_s) {
+      const double w = *r.speed_rad_s;
+      for (const AngularMotion& m : rates.links) out << fmt::format(",{:.17g},{:.17g}", m.omega * w, m.alpha * w * w);
+    }
+    out << '\n';
   }
 }
 
@@ -243,6 +300,7 @@ void add_branch_events(nlohmann::ordered_json& out, const LinkageReport& r) {
 nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::ordered_json* trace) {
   const auto& joints = r.model.description().joints;
   const auto dyad_blocks = dyads(r.solver);
+  const auto lines = link_lines(r.model.description());
   nlohmann::ordered_json out = {{"mechanism", r.model.description().name},
                                 {"title", r.model.description().title},
                                 {"solver", r.solver.options().solver},
@@ -273,8 +331,28 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
                             {"residual_inf", number(pose.outcome.residual_norm)},
                             {"status", std::string(to_string(pose.outcome.status))}});
     if (!std::isnan(pose.not_tried_past)) out["poses"].back()["not_tried_past"] = pose.not_tried_past;
+    const LinkRates rates = link_rates(r, lines, pose);
+    nlohmann::ordered_json links = nlohmann::ordered_json::object();
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      const AngularMotion& m = rates.links[k];
+      links[lines[k].name] = {{"angle_deg", number(m.angle * degrees)}, {"omega", number(m.omega)}, {"alpha", number(m.alpha)}};
+      if (r.speed_rad_s) {
+        links[lines[k].name]["omega_rad_s"] = number(m.omega * *r.speed_rad_s);
+        links[lines[k].name]["alpha_rad_s2"] = number(m.alpha * *r.speed_rad_s * *r.speed_rad_s);
+      }
+    }
+    out["poses"].back()["links"] = links;
+    if (r.output) {
+      const double advantage = mechanical_advantage(rates.ratio);
+      out["poses"].back()["velocity_ratio"] = number(rates.ratio);
+      out["poses"].back()["mechanical_advantage"] = number(advantage);  // null at a toggle (infinite) or no pose
+      out["poses"].back()["mechanical_advantage_infinite"] = std::isinf(advantage);
+    }
   }
   out["status"] = std::string(to_string(r.status));
+  out["links_per"] = r.model.crank_driven() ? "radian of crank" : "unit of slider travel";
+  out["output"] = r.output ? nlohmann::ordered_json(r.output->name) : nlohmann::ordered_json();
+  out["speed_rad_s"] = r.speed_rad_s ? nlohmann::ordered_json(*r.speed_rad_s) : nlohmann::ordered_json();
   out["branch_kept"] = r.sweep.branch_kept;
   out["closed_form_verified"] = r.sweep.closed_form_verified;
   out["worst_closed_form_distance"] = number(worst_closed_form(r.sweep).distance);
@@ -375,6 +453,7 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
   }
   if (std::isfinite(low)) out << fmt::format("kappa(J)           {:.3g} .. {:.3g} (largest at {:g})\n", low, high, at);
   for (std::size_t b : dyads(r.solver)) out << "transmission       " << transmission_summary(r, b) << '\n';
+  if (r.output) out << "output             " << output_summary(r) << '\n';
   print_derivative_check(out, r.derivatives);
   if (r.jacobian) {
     out << fmt::format("jacobian           exact J against finite differences at {} solved poses: worst relative error "

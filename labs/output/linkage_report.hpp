@@ -10,6 +10,8 @@
 
 #include "output/exit_codes.hpp"
 #include "output/format.hpp"
+#include "numlab/mechanisms/linkage/crank_analysis.hpp"
+#include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 #include "numlab/nonlinear/jacobian_check.hpp"
 
@@ -41,6 +43,8 @@ struct LinkageReport {
   std::optional<JacobianReport> jacobian;
   Status status = Status::converged;  // the sweep's, or no_progress when the branch flipped
   std::vector<std::string> warnings{};  // the authoring checks' "FILE:LINE: text" lines
+  std::optional<mechanisms::LinkageOutput> output{};  // --output or the file's `output`: its velocity ratio
+  std::optional<double> speed_rad_s{};                // --speed: link rates per second too
 };
 
 // The transmission-angle window: a dyad outside it transmits force poorly.
@@ -51,5 +55,8 @@ void print_linkage_text(std::ostream& out, const LinkageReport& report, const st
 void print_linkage_csv(std::ostream& out, const LinkageReport& report);
 nlohmann::ordered_json linkage_json(const LinkageReport& report, const nlohmann::ordered_json* trace);
 nlohmann::ordered_json pose_trace_json(const mechanisms::LinkagePose& pose);
+// --analyse: the four-bar or slider-crank analysis (crank_analysis.hpp), as text or JSON.
+void print_crank_analysis(std::ostream& out, const mechanisms::LinkageModel& model, const mechanisms::CrankAnalysis& analysis,
+                          const std::string& file, Format format);
 
 }  // namespace numlab::cli

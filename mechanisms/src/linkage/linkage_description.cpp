@@ -3,6 +3,7 @@
 // strictly, top to bottom, the first problem thrown as "FILE:LINE:COLUMN: problem".
 
 #include "numlab/mechanisms/linkage/linkage_description.hpp"
+#include "numlab/mechanisms/linkage/link_motion.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -325,6 +326,8 @@ class Reader {
     const toml::node* driver = root_.get("driver");
     if (driver == nullptr) fail({}, "no [driver] table: a linkage needs exactly one driver");
     read_driver(table_of(*driver, "[driver]"));
+    check_link_names();
+    check_output();
     return std::move(description_);
   }
 
@@ -427,7 +430,7 @@ class Reader {
   }
 
   void read_linkage(const toml::table& linkage) {
-    check_keys(linkage, {"name", "title"}, "[linkage]");
+    check_keys(linkage, {"name", "title", "output"}, "[linkage]");
     const toml::node& name_node = required(linkage, "name", "[linkage]");
     const std::string_view name = string_of(name_node, "the linkage's name");
     if (!valid_name(name, max_linkage_name, true)) {
@@ -443,6 +446,30 @@ class Reader {
         fail(place_of(*title_node), "title has a control character: " + quoted(title));
       }
       description_.title = title;
+    }
+    if (const toml::node* output_node = linkage.get("output")) {
+      description_.output = string_of(*output_node, "the linkage's output");
+      description_.output_place = place_of(*output_node);
+    }
+  }
+
+  // Link and body names become CSV columns (angle_NAME): no two alike, defaults included.
+  void check_link_names() const {
+    std::map<std::string, int, std::less<>> lines;  // name -> line of its item
+    for (const LinkLine& line : link_lines(description_)) {
+      if (const auto [it, added] = lines.emplace(line.name, line.place.line); !added) {
+        fail(line.place, std::string(line.body ? "body" : "link") + " name " + quoted(line.name) +
+                             " is already the name of the link or body at line " + std::to_string(it->second));
+      }
+    }
+  }
+
+  // `output` names a link, a body or a slider's joint.
+  void check_output() const {
+    if (description_.output.empty() && description_.output_place.line == 0) return;
+    if (!find_output(description_, description_.output)) {
+      fail(description_.output_place, "unknown output " + quoted(description_.output) + ": name one of the " +
+                                          output_choices(description_));
     }
   }
 
@@ -480,7 +507,7 @@ class Reader {
 
   // The two joints of a link, or of a link-like pair: two names of existing, different joints.
   void read_link(const toml::table& link) {
-    check_keys(link, {"joints", "length"}, "[[link]]");
+    check_keys(link, {"name", "joints", "length"}, "[[link]]");
     const toml::node& joints_node = required(link, "joints", "[[link]]");
     const toml::array* joints = joints_node.as_array();
     if (joints == nullptr || joints->size() != 2) fail(place_of(joints_node), "a link's joints must be two joint names");
@@ -495,6 +522,15 @@ class Reader {
     if (const auto [it, added] = link_lines_.emplace(pair, spec.place.line); !added) {
       fail(place_of(joints_node), "a second link between " + quoted(first_name) + " and " + quoted(second_name) +
                                       " (the first is at line " + std::to_string(it->second) + ")");
+    }
+    if (const toml::node* name_node = link.get("name")) {
+      const std::string_view name = string_of(*name_node, "a link's name");
+      if (!valid_name(name, max_joint_name, true)) {
+        fail(place_of(*name_node), "invalid link name " + quoted(name) + ": use 1 to " +
+                                       std::to_string(max_joint_name) + " letters, digits, '-' or '_'");
+      }
+      spec.name = name;
+      spec.name_place = place_of(*name_node);
     }
     const toml::node& length_node = required(link, "length", "[[link]]");
     spec.length = number_of(length_node, "a link's length");

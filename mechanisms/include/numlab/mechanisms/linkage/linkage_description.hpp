@@ -32,6 +32,8 @@ struct LinkSpec {
   int first = -1, second = -1;  // indices into LinkageDescription::joints
   double length = 0.0;
   SourcePlace place;
+  std::string name{};           // `name`; empty: the default, its joints joined by '-' (link_name())
+  SourcePlace name_place{};
 };
 
 // A rigid body with three or more joints, given in the body's own (local) coordinates.
@@ -70,6 +72,8 @@ struct LinkageDescription {
   std::string file;    // as given, for messages
   std::string name;    // [linkage] name
   std::string title;   // [linkage] title (may be empty)
+  std::string output;  // [linkage] output: a link's or body's name, or a slider's joint (may be empty)
+  SourcePlace output_place{};
   std::vector<JointSpec> joints;  // in the order the file lists them: ground first, then moving
   std::vector<LinkSpec> links;
   std::vector<BodySpec> bodies;
