@@ -2,12 +2,14 @@
 """Measures `numlab exercise check` on the corpus of buggy student solutions (issue 29 §1).
 
   measure.py NUMLAB [--prefix PREFIX] [--jobs N] [--min-catch-rate R] [--min-diagnosis-rate R]
-             [--json FILE] [--keep DIR]
+             [--json FILE] [--keep DIR] [--include-pending]
 
 Each corpus file, EXERCISE/NAME.py|.m|.cpp beside this script, is what a student wrote in place of
 the starter's solve() stub (a line "# include: NAME" stands for shared/NAME, a correct part that
 several files use unchanged), under a header naming the bug and its true cause:
   BUG: one sentence            CAUSE: a cause id, no_effect (a harmless slip) or none (correct)
+  SET: a name (optional)       the set the file belongs to: "heldout" for files written after the
+                               detectors, without looking at them; a file without SET is "tuning"
 It becomes a whole program in the starter `NUMLAB exercise init EXERCISE DIR --lang LANG` writes now
 (its stub replaced by the file), is run by `NUMLAB exercise check EXERCISE --format json`, two at a
 time: Python by this Python, Octave by `octave-cli --no-gui --quiet`, C++ built once, in one CMake
@@ -15,9 +17,12 @@ project against numlab installed in PREFIX (without --prefix the C++ files are s
 
 Prints, per exercise and overall: caught (status not pass) and diagnosed (diagnosis_cause is the
 CAUSE) out of the files whose CAUSE is a bug (not no_effect or none), the false failures (a
-no_effect or none file that does not pass), and each miss with its expected and diagnosed cause.
-Exit 1 below --min-catch-rate or --min-diagnosis-rate or on any false failure; 77 (a skip) when
-all else holds but files were skipped (no octave-cli, no --prefix); 2 on bad input.
+no_effect or none file that does not pass), and each miss with its expected and diagnosed cause;
+then the same table for each SET. --include-pending also reads ../corpus-pending/EXERCISE/NAME
+(files that would break the thresholds until the detectors are fixed; they count in every table).
+Exit 1 when the whole corpus (every set) is below --min-catch-rate or --min-diagnosis-rate or on any
+false failure; 77 (a skip) when all else holds but files were skipped (no octave-cli, no --prefix);
+2 on bad input.
 """
 import argparse
 import concurrent.futures
@@ -31,6 +36,7 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+PENDING = os.path.join(os.path.dirname(HERE), "corpus-pending")
 LANGUAGES = {".py": "python", ".m": "octave", ".cpp": "cpp"}
 HARMLESS = ("no_effect", "none")
 # The stub each starter ships, replaced by the corpus file.
@@ -63,36 +69,43 @@ def bad_input(message):
 
 
 def header(path, exercise):
-    """BUG and CAUSE from the file's comment header (#, % or //)."""
+    """BUG, CAUSE and SET ("tuning" when absent) from the file's comment header (#, % or //)."""
     fields = {}
     with open(path, encoding="utf-8") as source:
         for line in source:
-            match = re.match(r"\s*(?:#|%|//)\s*(BUG|CAUSE):\s*(.+?)\s*$", line)
+            match = re.match(r"\s*(?:#|%|//)\s*(BUG|CAUSE|SET):\s*(.+?)\s*$", line)
             if match:
                 fields.setdefault(match.group(1), []).append(match.group(2))
     if len(fields.get("BUG", [])) != 1 or len(fields.get("CAUSE", [])) != 1:
         bad_input(f"{path}: the header needs one 'BUG:' line and one 'CAUSE:' line")
+    sets = fields.get("SET", ["tuning"])
+    if len(sets) != 1 or not re.fullmatch(r"[a-z0-9_-]+", sets[0]):
+        bad_input(f"{path}: at most one 'SET:' line, a name of a-z, 0-9, _ and -")
     cause = fields["CAUSE"][0]
     if cause not in CAUSES[exercise] | {"library_call", *HARMLESS}:
         bad_input(f"{path}: CAUSE {cause!r} is not a cause id of {exercise} (nor library_call, no_effect, none)")
-    return fields["BUG"][0], cause
+    return fields["BUG"][0], cause, sets[0]
 
 
-def corpus_files():
+def corpus_files(include_pending):
+    """Every file of the corpus (and of corpus-pending with include_pending), named EXERCISE/NAME
+    (corpus-pending/EXERCISE/NAME for a pending one)."""
     files = []
-    for exercise in sorted(os.listdir(HERE)):
-        folder = os.path.join(HERE, exercise)
-        if not os.path.isdir(folder) or exercise.startswith(".") or exercise == "shared":
-            continue
-        if exercise not in CAUSES:
-            bad_input(f"{folder}: not an exercise of the corpus ({', '.join(CAUSES)})")
-        for name in sorted(os.listdir(folder)):
-            language = LANGUAGES.get(os.path.splitext(name)[1])
-            if language:
-                path = os.path.join(folder, name)
-                bug, cause = header(path, exercise)
-                files.append({"exercise": exercise, "file": f"{exercise}/{name}", "path": path,
-                              "language": language, "bug": bug, "cause": cause})
+    roots = [(HERE, "")] + ([(PENDING, "corpus-pending/")] if include_pending and os.path.isdir(PENDING) else [])
+    for root, label in roots:
+        for exercise in sorted(os.listdir(root)):
+            folder = os.path.join(root, exercise)
+            if not os.path.isdir(folder) or exercise.startswith(".") or exercise == "shared":
+                continue
+            if exercise not in CAUSES:
+                bad_input(f"{folder}: not an exercise of the corpus ({', '.join(CAUSES)})")
+            for name in sorted(os.listdir(folder)):
+                language = LANGUAGES.get(os.path.splitext(name)[1])
+                if language:
+                    path = os.path.join(folder, name)
+                    bug, cause, part = header(path, exercise)
+                    files.append({"exercise": exercise, "file": f"{label}{exercise}/{name}", "path": path,
+                                  "language": language, "bug": bug, "cause": cause, "set": part})
     if not files:
         bad_input(f"no corpus files under {HERE}")
     return files
@@ -194,6 +207,17 @@ def table(entries):
     return rows
 
 
+def print_table(title, rows):
+    """One table of table(): a row per exercise, then "all"."""
+    print(f"\n{title + ':':<20}{'caught':>10}{'diagnosed':>12}{'false failures':>17}")
+    for name, row in sorted(rows.items(), key=lambda item: (item[0] == "all", item[0])):
+        print(f"{name:<20}{row['caught']:>5}/{row['bugs']:<4}{row['diagnosed']:>7}/{row['bugs']:<4}"
+              f"{row['false_failures']:>11}/{row['harmless']}")
+    whole = rows.get("all")
+    if whole:
+        print(f"{'':<20}catch rate {whole['catch_rate']:.3f}, diagnosis rate {whole['diagnosis_rate']:.3f}")
+
+
 def counts(entries, field):
     found = {}
     for entry in entries:
@@ -210,6 +234,8 @@ def main():
     parser.add_argument("--min-diagnosis-rate", type=float, default=0.0)
     parser.add_argument("--json", help="write the table and every file's verdict here")
     parser.add_argument("--keep", help="write the whole programs here (to run one by hand) and keep them")
+    parser.add_argument("--include-pending", action="store_true",
+                        help="also measure ../corpus-pending (files left out until the detectors catch them)")
     options = parser.parse_args()
     options.numlab = os.path.abspath(options.numlab)
     options.prefix = options.prefix and os.path.abspath(options.prefix)
@@ -218,7 +244,7 @@ def main():
     if options.jobs < 1:
         bad_input("--jobs must be at least 1")
     started = time.monotonic()
-    entries = corpus_files()
+    entries = corpus_files(options.include_pending)
     octave = shutil.which("octave-cli")
     work = options.keep or tempfile.mkdtemp(prefix="numlab-corpus-")
     skipped = []
@@ -247,27 +273,27 @@ def main():
             shutil.rmtree(work, ignore_errors=True)
     seconds = time.monotonic() - started
 
-    print(f"corpus: {len(entries)} files; by language: {counts(entries, 'language')}")
+    print(f"corpus: {len(entries)} files; by language: {counts(entries, 'language')}; by set: {counts(entries, 'set')}")
     print(f"by cause: {counts(entries, 'cause')}")
     for entry, why in skipped:
         print(f"SKIPPED {entry['file']}: {why}")
     rows = table(runnable)
-    print(f"\n{'exercise':<20}{'caught':>10}{'diagnosed':>12}{'false failures':>17}")
-    for name, row in sorted(rows.items(), key=lambda item: (item[0] == "all", item[0])):
-        print(f"{name:<20}{row['caught']:>5}/{row['bugs']:<4}{row['diagnosed']:>7}/{row['bugs']:<4}"
-              f"{row['false_failures']:>11}/{row['harmless']}")
+    print_table("whole corpus", rows)
+    sets = {name: table([e for e in runnable if e["set"] == name]) for name in sorted({e["set"] for e in runnable})}
+    for name, set_rows in sets.items():
+        print_table(f"set {name}", set_rows)
     overall = rows.get("all", {"catch_rate": 1.0, "diagnosis_rate": 1.0, "false_failures": 0})
     print(f"\ncatch rate {overall['catch_rate']:.3f}, diagnosis rate {overall['diagnosis_rate']:.3f}, "
           f"false failures {overall['false_failures']}; {len(runnable)} checked in {seconds:.1f} s")
     misses = [e for e in runnable if (e["status"] != "pass" if e["cause"] in HARMLESS else e["got"] != e["cause"])]
     for entry in misses:
         what = "FALSE FAILURE" if entry["cause"] in HARMLESS else ("NOT CAUGHT" if entry["status"] == "pass" else "misdiagnosed")
-        print(f"{what}: {entry['file']} ({entry['language']}): expected {entry['cause']}, got {entry['got']} "
+        print(f"{what}: {entry['file']} ({entry['language']}, set {entry['set']}): expected {entry['cause']}, got {entry['got']} "
               f"[{entry['status']}]: {entry['diagnosis']}")
     if options.json:
         with open(options.json, "w", encoding="utf-8") as out:
-            json.dump({"seconds": seconds, "table": rows, "skipped": [e["file"] for e, _ in skipped],
-                       "files": [{key: e.get(key) for key in ("file", "language", "bug", "cause", "status", "got",
+            json.dump({"seconds": seconds, "table": rows, "sets": sets, "skipped": [e["file"] for e, _ in skipped],
+                       "files": [{key: e.get(key) for key in ("file", "language", "set", "bug", "cause", "status", "got",
                                                               "diagnosis")} for e in runnable]}, out, indent=1)
     failed = []
     if overall["catch_rate"] < options.min_catch_rate:
