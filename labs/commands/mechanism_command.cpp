@@ -272,10 +272,10 @@ int MechanismCommand::explain(const CommonOptions& common, const std::string& fi
 int MechanismCommand::analyse(const CommonOptions& common, const std::string& file) const {
   for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--at-crossing",
                            "--speed"}) {
-    require_applies(given(*command_, flag), false, flag, "a sweep, not --analyse");
+    require_applies(given(*command_, flag), false, flag, "a solve, not --analyse");
   }
   for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
-    require_applies(given(common, flag), false, flag, "a sweep, not --analyse");
+    require_applies(given(common, flag), false, flag, "a solve, not --analyse");
   }
   if (common.format == Format::csv) throw std::invalid_argument("--analyse prints text or JSON, not CSV");
   LinkageRun run;

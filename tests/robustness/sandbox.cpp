@@ -111,6 +111,14 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
       {"lk-non-grashof.toml", four_bar({{"A = [0.87, 0.5]", "A = [1.732, 1.0]"}, {"B = [3.4, 2.9]", "B = [4.34, 2.48]"},
                                         {"length = 1.0", "length = 2.0"}, {"length = 3.0", "length = 2.5"},
                                         {"length = 3.5", "length = 3.0"}})},
+      // Issue 30 §2: a link's name and the linkage's output (an unknown one, a name taken twice, a good one).
+      {"lk-output-unknown.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\noutput = \"B\""}})},
+      {"lk-link-name-twice.toml", four_bar({{"[[link]]\njoints = [\"A\", \"B\"]", "[[link]]\nname = \"O-A\"\njoints = [\"A\", \"B\"]"}})},
+      {"lk-output.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\noutput = \"rocker\""},
+                                   {"[[link]]\njoints = [\"Q\", \"B\"]", "[[link]]\nname = \"rocker\"\njoints = [\"Q\", \"B\"]"}})},
+      {"lk-slider-driven.toml", "[linkage]\nname = \"s\"\n[ground]\nO = [0.0, 0.0]\n[joints]\nA = [0.9, 0.5]\nS = [2.9, 0.25]\n"
+                                "[[link]]\njoints = [\"O\", \"A\"]\nlength = 1.0\n[[link]]\njoints = [\"A\", \"S\"]\nlength = 2.0\n"
+                                "[[slider]]\njoint = \"S\"\nthrough = [0.0, 0.25]\n[driver]\ntype = \"slider\"\njoint = \"S\"\ntravel = 2.9\n"},
       {"lk-deep-key.toml", deeply_nested("a", " = 1\n")},
       {"lk-deep-header.toml", deeply_nested("[a", "]\n")},
       // Titles with a C1 control (U+009B, a CSI), a direction override (U+202E), an isolate (U+2066).
