@@ -94,15 +94,6 @@ std::vector<Request> trace_requests(const Variant& variant, const JansenVariant&
   return requests;
 }
 
-// numlab's Newton converges from the request's start (to `exact` when given, modulo whole turns).
-bool newton_converges(const Request& request, const Battery::Vector* exact) {
-  nonlinear::NewtonResult<8> result;
-  newton_trace(Battery::closure_for(request), request.start, Battery::options_for(request), &result);
-  if (result.status != Status::converged) return false;
-  int worst = 0;
-  return exact == nullptr || worst_angle_error(Eigen::VectorXd(result.x), Eigen::VectorXd(*exact), worst) < 1e-6;
-}
-
 // The leg's lengths: seed 000's, or a variant's on which numlab's Newton converges from the start
 // of every request of the cycle and of the trace (to the closed form, for the cycle's).
 JansenVariant leg_for(const Variant& variant) {
@@ -110,13 +101,7 @@ JansenVariant leg_for(const Variant& variant) {
     const JansenVariant leg{candidate.lengths(), {}, true, false};
     try {
       const auto [cycle, exact] = cycle_requests(variant, leg);
-      for (std::size_t r = 0; r < cycle.size(); ++r) {
-        if (!newton_converges(cycle[r], &exact[r])) return false;
-      }
-      for (const Request& request : trace_requests(variant, leg)) {
-        if (!newton_converges(request, nullptr)) return false;
-      }
-      return true;
+      return Battery::newton_converges(cycle, exact, trace_requests(variant, leg));
     } catch (const std::logic_error&) {
       return false;  // the closed form fails at an angle of a request
     }

@@ -10,7 +10,7 @@
 //   static std::string where(double angle);    // "crank 130 deg"
 //   using Lengths = ...;                       // the closure's lengths: Closure(angle, Lengths)
 // and may have
-//   static std::vector<SlippedClosure> constant_angle_slips();  // a constant angle typed in degrees
+//   static std::vector<SlippedClosure> constant_angle_slips(const Lengths&);  // a constant angle typed in degrees
 
 #include <cmath>
 #include <fmt/format.h>
@@ -122,14 +122,35 @@ class NewtonBattery {
     return reference;
   }
 
-  // The closure with a constant angle typed in degrees and used as radians, when the linkage has one
-  // (Linkage::constant_angle_slips()).
-  static std::vector<SlippedClosure> constant_angle_slips() {
-    if constexpr (requires { Linkage::constant_angle_slips(); }) {
-      return Linkage::constant_angle_slips();
+  // The closure of the request's lengths with a constant angle typed in degrees and used as radians,
+  // when the linkage has one (Linkage::constant_angle_slips(lengths)).
+  static std::vector<SlippedClosure> constant_angle_slips(const Request& request) {
+    if constexpr (requires { Linkage::constant_angle_slips(request.lengths); }) {
+      return Linkage::constant_angle_slips(request.lengths);
     } else {
       return {};
     }
+  }
+
+  // numlab's Newton converges from the request's start (to `exact` when given, modulo whole turns).
+  static bool newton_converges(const Request& request, const Vector* exact) {
+    nonlinear::NewtonResult<n> result;
+    newton_trace(closure_for(request), request.start, options_for(request), &result);
+    if (result.status != Status::converged) return false;
+    int worst = 0;
+    return exact == nullptr || worst_angle_error(Eigen::VectorXd(result.x), Eigen::VectorXd(*exact), worst) < 1e-6;
+  }
+  // What a variant's lengths must allow: numlab's Newton converges from the start of each of
+  // `to_exact` to its pose in `exact`, and from each start of `anywhere`.
+  static bool newton_converges(const std::vector<Request>& to_exact, const std::vector<Vector>& exact,
+                               const std::vector<Request>& anywhere) {
+    for (std::size_t r = 0; r < to_exact.size(); ++r) {
+      if (!newton_converges(to_exact[r], &exact[r])) return false;
+    }
+    for (const Request& request : anywhere) {
+      if (!newton_converges(request, nullptr)) return false;
+    }
+    return true;
   }
 
   // The most specific cause the reply's numbers show (detectors/mechanism_newton.hpp), or nothing.
@@ -155,7 +176,7 @@ class NewtonBattery {
     evidence.links_sum = Linkage::links_sum();
     evidence.angle_name = [](int k) { return Linkage::angle_name(k); };
     evidence.decided_iterations = reference_for(request).decided;
-    evidence.constant_angle_slips = constant_angle_slips();
+    evidence.constant_angle_slips = constant_angle_slips(request);
     return more_specific(diagnose({{"wrong_link", Specificity::exact, [&] { return seed_lengths_used(request, evidence); }}}),
                          diagnose_newton(evidence));
   }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <numbers>
 #include <stdexcept>
 
 #include "exercises/checker.hpp"
@@ -15,6 +16,7 @@
 #include "exercises/variant.hpp"
 #include "numlab/mechanisms/jansen_closure.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
+#include "numlab/mechanisms/mustang_linkage.hpp"
 #include "numlab/nonlinear/newton.hpp"
 #include "gauss_seidel_solution.hpp"
 #include "gepp_solution.hpp"
@@ -239,9 +241,9 @@ TEST_CASE("under a variant every Jansen request carries the variant's lengths: e
   CHECK(by_id["s1234567"] != by_id["42"]);
 }
 
-TEST_CASE("under a variant a solution that ignores the request's lengths (seed 000's constants) fails with "
+TEST_CASE("under a variant a solution that ignores the request's lengths (the seed's constants) fails with "
           "diagnosis wrong_link") {
-  for (const char* name : jansen_exercises) {
+  for (const char* name : {"jansen-jacobian", "jansen10-jacobian", "jansen-newton", "mustang-newton"}) {
     INFO(name);
     const Solve solve = references().at(name).solve;
     FunctionSession session(name, [solve](const nlohmann::json& request) {
@@ -258,4 +260,114 @@ TEST_CASE("under a variant a solution that ignores the request's lengths (seed 0
     CHECK(diagnosis->cause == "wrong_link");
     CHECK_THAT(diagnosis->evidence, Catch::Matchers::Contains("lengths"));
   }
+}
+
+// Link lengths of mustang-newton (issue 29 §4): a variant's linkage, its limits and its crossing.
+namespace {
+
+// Seed 003's lengths by the protocol's names (docs/exercises.md), typed here from the seed.
+const std::map<std::string, double>& mustang_seed_lengths() {
+  static const std::map<std::string, double> lengths = {
+      {"l1_3", 2.0},      {"l3_4", 2.0},       {"l2_4", 2.5},  {"l4_6", 2.5},        {"l0_5", 5.0},
+      {"l5_6", 4.0 / 3.0}, {"l6_7", 4.0 / 3.0}, {"l6_8", 4.0},  {"l8_9", 1.0},        {"l7_10", 4.5},
+      {"l10_8", 4.0 / 3.0}, {"l10_11", 4.0 / 3.0}, {"l9_11", 1.0}};
+  return lengths;
+}
+
+numlab::mechanisms::MustangLengths mustang_lengths_of(const nlohmann::json& given) {
+  numlab::mechanisms::MustangLengths L;
+  L.l1_3 = given["l1_3"], L.l3_4 = given["l3_4"], L.l2_4 = given["l2_4"], L.l4_6 = given["l4_6"];
+  L.l0_5 = given["l0_5"], L.l5_6 = given["l5_6"], L.l6_7 = given["l6_7"], L.l6_8 = given["l6_8"];
+  L.l8_9 = given["l8_9"], L.l7_10 = given["l7_10"], L.l10_8 = given["l10_8"], L.l10_11 = given["l10_11"];
+  L.l9_11 = given["l9_11"];
+  return L;
+}
+
+bool mustang_assembles(const numlab::mechanisms::MustangLengths& L, double deg) {
+  return numlab::mechanisms::MustangLinkage(L).closed_form(deg * std::numbers::pi / 180.0).status ==
+         numlab::Status::converged;
+}
+
+// The limit between an angle that assembles and one that does not, by bisection to 1e-6 deg.
+double mustang_limit(const numlab::mechanisms::MustangLengths& L, double yes, double no) {
+  while (std::abs(no - yes) > 1e-6) {
+    const double middle = 0.5 * (yes + no);
+    (mustang_assembles(L, middle) ? yes : no) = middle;
+  }
+  return yes;
+}
+
+double degrees_of(const nlohmann::json& request) { return request["crank_angle"].get<double>() * 180.0 / std::numbers::pi; }
+
+}  // namespace
+
+TEST_CASE("without a variant no mustang-newton request carries lengths, and its limits are seed 003's") {
+  for (const auto& check : requests_of(run("mustang-newton", Variant()))) {
+    for (const auto& request : check) CHECK_FALSE(request.contains("lengths"));
+  }
+  const numlab::mechanisms::MustangLengths seed;
+  CHECK(std::abs(mustang_limit(seed, 0.0, -90.0) - -41.4257) < 1e-4);  // TASK.md's -41.4257 ... 56.4540
+  CHECK(std::abs(mustang_limit(seed, 45.0, 90.0) - 56.4540) < 1e-4);
+}
+
+TEST_CASE("under a variant every mustang-newton request carries the variant's lengths: each within 3% of seed "
+          "003's, the bend and the kite kept, other for another ID; the linkage assembles over the checked range "
+          "and near both of its own limits, and not beyond them") {
+  std::map<std::string, nlohmann::json> by_id;
+  for (const char* id : {"s1234567", "alice", "42"}) {
+    INFO("mustang-newton under " << id);
+    const auto results = run("mustang-newton", Variant(id));
+    require_all_pass(results, id);
+    const auto requests = requests_of(results);
+    REQUIRE(requests.size() == 4);
+    const nlohmann::json lengths = requests[0].front()["lengths"];
+    by_id[id] = lengths;
+    REQUIRE(lengths.size() == 13u);
+    for (const auto& [key, value] : lengths.items()) {
+      const double seed = mustang_seed_lengths().at(key), drawn = value.get<double>();
+      CHECK(std::abs(drawn / seed - 1.0) <= 0.03);
+      CHECK(drawn != seed);
+    }
+    CHECK(lengths["l4_6"] == lengths["l2_4"]);
+    CHECK(lengths["l10_11"] == lengths["l10_8"]);
+    CHECK(lengths["l9_11"] == lengths["l8_9"]);
+    const auto L = mustang_lengths_of(lengths);
+    const double lower = mustang_limit(L, 0.0, -90.0), upper = mustang_limit(L, 45.0, 90.0);
+    INFO("the variant's linkage assembles on [" << lower << ", " << upper << "] deg");
+    CHECK(std::abs(lower - -41.4257) > 0.01);  // its own limits, not the seed's
+    CHECK(std::abs(upper - 56.4540) > 0.01);
+    double low = 360.0, high = -360.0;
+    for (std::size_t k = 0; k < requests.size(); ++k) {
+      for (const auto& request : requests[k]) {
+        CHECK(request["lengths"] == lengths);  // the same linkage in every request
+        const double deg = degrees_of(request);
+        if (k == 1) {  // beyond the limits: no pose
+          CHECK_FALSE(mustang_assembles(L, deg));
+          CHECK((deg < lower || deg > upper));
+          continue;
+        }
+        CHECK(mustang_assembles(L, deg));
+        low = std::min(low, deg);
+        high = std::max(high, deg);
+      }
+    }
+    // Check 1 goes to within 0.2 deg of each limit; the linkage assembles at every quarter degree between.
+    CHECK(low - lower < 0.2);
+    CHECK(upper - high < 0.2);
+    for (double deg = low; deg <= high; deg += 0.25) CHECK(mustang_assembles(L, deg));
+    // numlab's Newton converges from every start of check 1 (the closed form's branch is its business).
+    for (const auto& request : requests[0]) {
+      numlab::nonlinear::NewtonOptions options;
+      options.residual_tolerance = request["tolerance"];
+      options.max_iterations = request["max_iterations"];
+      const numlab::mechanisms::MustangClosure closure(request["crank_angle"].get<double>(), L);
+      const auto solved = numlab::nonlinear::Newton<numlab::mechanisms::MustangClosure>(closure, options)
+                              .solve(numlab::mechanisms::MustangClosure::Vector(
+                                  numlab::exercise::vector(request["guess"]).data()));
+      CHECK(solved.status == numlab::Status::converged);
+    }
+  }
+  CHECK(by_id["s1234567"] != by_id["alice"]);
+  CHECK(by_id["alice"] != by_id["42"]);
+  CHECK(by_id["s1234567"] != by_id["42"]);
 }

@@ -5,37 +5,46 @@
 
 function reply = solve(request)
   theta = request.crank_angle;
-  [angles, status, iterations, trace] = newton(@(v) closure(theta, v), request.guess(:), request.tolerance, ...
+  L = seed_lengths();
+  if isfield(request, 'lengths')  % a variant's lengths, by the same names
+    L = request.lengths;
+  end
+  [angles, status, iterations, trace] = newton(@(v) closure(theta, v, L), request.guess(:), request.tolerance, ...
                                                request.max_iterations);
   reply = struct('status', status, 'iterations', iterations);
   reply.angles = num2cell(angles');
   reply.trace = num2cell(trace);  % a cell: a list even with one entry
 end
 
-% f and J at crank angle theta and angles v = [A; B; C; D; E; F; G; H].
-function [f, J] = closure(theta, v)
+% Seed 003's lengths |a b| as l_a_b.
+function L = seed_lengths()
+  L = struct('l1_3', 2, 'l3_4', 2, 'l2_4', 2.5, 'l0_5', 5, 'l5_6', 4 / 3, 'l6_7', 4 / 3, 'l6_8', 4, ...
+             'l8_9', 1, 'l7_10', 4.5, 'l10_8', 4 / 3, 'l10_11', 4 / 3, 'l9_11', 1);
+end
+
+% f and J at crank angle theta and angles v = [A; B; C; D; E; F; G; H], with the lengths L.
+function [f, J] = closure(theta, v, L)
   BEND = pi / 9;
   R = sqrt(0.5);
-  T = 4 / 3;
-  CHORD = 2 * 2.5 * cos(BEND);  % |2 6|, the seed's 4.698
+  CHORD = 2 * L.l2_4 * cos(BEND);  % |2 6|, the seed's 4.698
   A = v(1); B = v(2); C = v(3); D = v(4); E = v(5); F = v(6); G = v(7); H = v(8);
-  f = [-2.5 * cos(theta) + 2 * cos(A) + 2 * cos(B);
-       -1 - 2.5 * sin(theta) + 2 * sin(A) + 2 * sin(B);
-       -R + CHORD * cos(theta + BEND) + T * cos(C) - 5 * cos(D);
-       1 + R + CHORD * sin(theta + BEND) - T * sin(C) - 5 * sin(D);
-       T * cos(theta + BEND) + 4 * cos(C - BEND) - 4.5 * cos(E) - T * cos(F);
-       T * sin(theta + BEND) - 4 * sin(C - BEND) + 4.5 * sin(E) - T * sin(F);
-       cos(C + BEND) + T * cos(F) - T * cos(G) + cos(H);
-       -sin(C + BEND) + T * sin(F) + T * sin(G) - sin(H)];
+  f = [-L.l2_4 * cos(theta) + L.l1_3 * cos(A) + L.l3_4 * cos(B);
+       -1 - L.l2_4 * sin(theta) + L.l1_3 * sin(A) + L.l3_4 * sin(B);
+       -R + CHORD * cos(theta + BEND) + L.l5_6 * cos(C) - L.l0_5 * cos(D);
+       1 + R + CHORD * sin(theta + BEND) - L.l5_6 * sin(C) - L.l0_5 * sin(D);
+       L.l6_7 * cos(theta + BEND) + L.l6_8 * cos(C - BEND) - L.l7_10 * cos(E) - L.l10_8 * cos(F);
+       L.l6_7 * sin(theta + BEND) - L.l6_8 * sin(C - BEND) + L.l7_10 * sin(E) - L.l10_8 * sin(F);
+       L.l8_9 * cos(C + BEND) + L.l10_8 * cos(F) - L.l10_11 * cos(G) + L.l9_11 * cos(H);
+       -L.l8_9 * sin(C + BEND) + L.l10_8 * sin(F) + L.l10_11 * sin(G) - L.l9_11 * sin(H)];
   J = zeros(8, 8);
-  J(1, 1) = -2 * sin(A);             J(1, 2) = -2 * sin(B);
-  J(2, 1) = 2 * cos(A);              J(2, 2) = 2 * cos(B);
-  J(3, 3) = -T * sin(C);             J(3, 4) = 5 * sin(D);
-  J(4, 3) = -T * cos(C);             J(4, 4) = -5 * cos(D);
-  J(5, 3) = -4 * sin(C - BEND);      J(5, 5) = 4.5 * sin(E);   J(5, 6) = T * sin(F);
-  J(6, 3) = -4 * cos(C - BEND);      J(6, 5) = 4.5 * cos(E);   J(6, 6) = -T * cos(F);
-  J(7, 3) = -sin(C + BEND);          J(7, 6) = -T * sin(F);    J(7, 7) = T * sin(G);   J(7, 8) = -sin(H);
-  J(8, 3) = -cos(C + BEND);          J(8, 6) = T * cos(F);     J(8, 7) = T * cos(G);   J(8, 8) = -cos(H);
+  J(1, 1) = -L.l1_3 * sin(A);               J(1, 2) = -L.l3_4 * sin(B);
+  J(2, 1) = L.l1_3 * cos(A);                J(2, 2) = L.l3_4 * cos(B);
+  J(3, 3) = -L.l5_6 * sin(C);               J(3, 4) = L.l0_5 * sin(D);
+  J(4, 3) = -L.l5_6 * cos(C);               J(4, 4) = -L.l0_5 * cos(D);
+  J(5, 3) = -L.l6_8 * sin(C - BEND);        J(5, 5) = L.l7_10 * sin(E);   J(5, 6) = L.l10_8 * sin(F);
+  J(6, 3) = -L.l6_8 * cos(C - BEND);        J(6, 5) = L.l7_10 * cos(E);   J(6, 6) = -L.l10_8 * cos(F);
+  J(7, 3) = -L.l8_9 * sin(C + BEND);        J(7, 6) = -L.l10_8 * sin(F);  J(7, 7) = L.l10_11 * sin(G);  J(7, 8) = -L.l9_11 * sin(H);
+  J(8, 3) = -L.l8_9 * cos(C + BEND);        J(8, 6) = L.l10_8 * cos(F);   J(8, 7) = L.l10_11 * cos(G);  J(8, 8) = -L.l9_11 * cos(H);
 end
 
 % Full Newton-Raphson: stop when max |f_i| <= tolerance; else J dx = -f (LU with partial

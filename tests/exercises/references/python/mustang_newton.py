@@ -8,31 +8,34 @@ import numpy as np
 
 BEND = np.pi / 9.0
 R = np.sqrt(0.5)
-T = 4.0 / 3.0
-CHORD = 2.0 * 2.5 * np.cos(BEND)  # |2 6|, the seed's 4.698
+# Seed 003's lengths |a b| as l_a_b; a request with a variant carries its own as "lengths".
+SEED = {"l1_3": 2.0, "l3_4": 2.0, "l2_4": 2.5, "l0_5": 5.0, "l5_6": 4 / 3, "l6_7": 4 / 3, "l6_8": 4.0,
+        "l8_9": 1.0, "l7_10": 4.5, "l10_8": 4 / 3, "l10_11": 4 / 3, "l9_11": 1.0}
 
 
-def closure(theta, v):
+def closure(theta, v, lengths=SEED):
     A, B, C, D, E, F, G, H = v
     sin, cos = np.sin, np.cos
+    l13, l34, l24, l05, l56, l67, l68, l89, l710, l108, l1011, l911 = (lengths[name] for name in SEED)
+    CHORD = 2.0 * l24 * np.cos(BEND)  # |2 6|, the seed's 4.698
     f = np.array([
-        -2.5 * cos(theta) + 2 * cos(A) + 2 * cos(B),
-        -1 - 2.5 * sin(theta) + 2 * sin(A) + 2 * sin(B),
-        -R + CHORD * cos(theta + BEND) + T * cos(C) - 5 * cos(D),
-        1 + R + CHORD * sin(theta + BEND) - T * sin(C) - 5 * sin(D),
-        T * cos(theta + BEND) + 4 * cos(C - BEND) - 4.5 * cos(E) - T * cos(F),
-        T * sin(theta + BEND) - 4 * sin(C - BEND) + 4.5 * sin(E) - T * sin(F),
-        cos(C + BEND) + T * cos(F) - T * cos(G) + cos(H),
-        -sin(C + BEND) + T * sin(F) + T * sin(G) - sin(H)])
+        -l24 * cos(theta) + l13 * cos(A) + l34 * cos(B),
+        -1 - l24 * sin(theta) + l13 * sin(A) + l34 * sin(B),
+        -R + CHORD * cos(theta + BEND) + l56 * cos(C) - l05 * cos(D),
+        1 + R + CHORD * sin(theta + BEND) - l56 * sin(C) - l05 * sin(D),
+        l67 * cos(theta + BEND) + l68 * cos(C - BEND) - l710 * cos(E) - l108 * cos(F),
+        l67 * sin(theta + BEND) - l68 * sin(C - BEND) + l710 * sin(E) - l108 * sin(F),
+        l89 * cos(C + BEND) + l108 * cos(F) - l1011 * cos(G) + l911 * cos(H),
+        -l89 * sin(C + BEND) + l108 * sin(F) + l1011 * sin(G) - l911 * sin(H)])
     J = np.zeros((8, 8))
-    J[0, 0], J[0, 1] = -2 * sin(A), -2 * sin(B)
-    J[1, 0], J[1, 1] = 2 * cos(A), 2 * cos(B)
-    J[2, 2], J[2, 3] = -T * sin(C), 5 * sin(D)
-    J[3, 2], J[3, 3] = -T * cos(C), -5 * cos(D)
-    J[4, 2], J[4, 4], J[4, 5] = -4 * sin(C - BEND), 4.5 * sin(E), T * sin(F)
-    J[5, 2], J[5, 4], J[5, 5] = -4 * cos(C - BEND), 4.5 * cos(E), -T * cos(F)
-    J[6, 2], J[6, 5], J[6, 6], J[6, 7] = -sin(C + BEND), -T * sin(F), T * sin(G), -sin(H)
-    J[7, 2], J[7, 5], J[7, 6], J[7, 7] = -cos(C + BEND), T * cos(F), T * cos(G), -cos(H)
+    J[0, 0], J[0, 1] = -l13 * sin(A), -l34 * sin(B)
+    J[1, 0], J[1, 1] = l13 * cos(A), l34 * cos(B)
+    J[2, 2], J[2, 3] = -l56 * sin(C), l05 * sin(D)
+    J[3, 2], J[3, 3] = -l56 * cos(C), -l05 * cos(D)
+    J[4, 2], J[4, 4], J[4, 5] = -l68 * sin(C - BEND), l710 * sin(E), l108 * sin(F)
+    J[5, 2], J[5, 4], J[5, 5] = -l68 * cos(C - BEND), l710 * cos(E), -l108 * cos(F)
+    J[6, 2], J[6, 5], J[6, 6], J[6, 7] = -l89 * sin(C + BEND), -l108 * sin(F), l1011 * sin(G), -l911 * sin(H)
+    J[7, 2], J[7, 5], J[7, 6], J[7, 7] = -l89 * cos(C + BEND), l108 * cos(F), l1011 * cos(G), -l911 * cos(H)
     return f, J
 
 
@@ -63,8 +66,8 @@ def newton(evaluate, x, tolerance, max_iterations):
 
 
 def solve(request):
-    theta = float(request["crank_angle"])
-    angles, status, iterations, trace = newton(lambda v: closure(theta, v), np.array(request["guess"], dtype=float),
+    theta, lengths = float(request["crank_angle"]), request.get("lengths", SEED)
+    angles, status, iterations, trace = newton(lambda v: closure(theta, v, lengths), np.array(request["guess"], dtype=float),
                                                float(request["tolerance"]), int(request["max_iterations"]))
     return {"angles": angles.tolist(), "status": status, "iterations": iterations, "trace": trace}
 
