@@ -86,6 +86,9 @@ struct Exercise {
   // What TASK.md's "Your variant" says beyond the ID, e.g. a linkage variant's link lengths (""
   // or unset: nothing more).
   std::function<std::string(const Variant&)> variant_task{};
+  // The whole task of a variant, where the variant changes numbers the task itself states (the
+  // linkage exercise's equations, written with the variant's lengths); unset: `task`.
+  std::function<std::string(const Variant&)> varied_task{};
 };
 
 // Every exercise, in the order `exercise list` shows them.

@@ -11,6 +11,7 @@
 
 #include "exercises/linkage_checks.hpp"
 #include "exercises/linkage_detectors.hpp"
+#include "exercises/linkage_variant.hpp"
 #include "exercises/numbers.hpp"
 #include "exercises/reply_fields.hpp"
 #include "exercises/session.hpp"
@@ -24,12 +25,14 @@ namespace {
 
 using mechanisms::LinkageModel;
 using mechanisms::LinkageSolver;
+using Evidence = std::optional<std::string>;
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
 // What the battery works from: the model, numlab's solver on it, the poses swept and the poses
 // where f and J are checked. Made once per battery.
 struct LinkageCase {
   std::shared_ptr<const LinkageModel> model;
+  std::shared_ptr<const LinkageModel> file_model;  // under a variant, the file's own (model is the variant's)
   std::unique_ptr<LinkageSolver> solver;
   nlohmann::json model_json;
   double size = 1.0;     // the longest link
@@ -44,6 +47,7 @@ struct LinkageCase {
     std::string text;
   };
   std::vector<ClosurePose> closure_poses;
+  double step = 0.0, span = 0.0, direction = 0.0;  // the sweep: driver steps one way round from the reference
 };
 
 std::string vector_text(const Eigen::VectorXd& v) {
@@ -58,12 +62,16 @@ std::string driver_text(const LinkageModel& model, double driver) {
 
 // numlab's sweep from the reference pose: 5-degree steps (a slider: size / 20) one way round, the
 // poses that converged on the reference branch before any crossing, the longer way of the two.
-void sweep(LinkageCase& c) {
+// Under a variant (`file` given), the file's step, span and direction.
+void sweep(LinkageCase& c, const LinkageCase* file = nullptr) {
   const LinkageModel& model = *c.model;
   const double reference = model.driver_to_user(c.solver->reference_driver());
-  const double step = model.crank_driven() ? 5.0 : c.size / 20.0;
-  const double span = model.crank_driven() ? 355.0 : 2.0 * c.size;
+  const double step = file ? file->step : model.crank_driven() ? 5.0 : c.size / 20.0;
+  const double span = file ? file->span : model.crank_driven() ? 355.0 : 2.0 * c.size;
+  c.step = step;
+  c.span = span;
   for (double direction : {1.0, -1.0}) {
+    if (file && direction != file->direction) continue;
     const auto result = mechanisms::linkage_sweep(*c.solver, reference, reference + direction * span, direction * step);
     double crossing = std::numeric_limits<double>::infinity();
     for (const auto& at : result.crossings) crossing = std::min(crossing, std::abs(at.driver - reference));
@@ -77,6 +85,7 @@ void sweep(LinkageCase& c) {
       velocities.push_back(pose.velocity);
     }
     if (drivers.size() > c.drivers.size()) {
+      c.direction = direction;
       c.drivers = drivers;
       c.poses = poses;
       c.velocities = velocities;
@@ -106,7 +115,9 @@ void closure_poses(LinkageCase& c) {
   }
 }
 
-std::shared_ptr<const LinkageCase> make_case(std::shared_ptr<const LinkageModel> model) {
+// The case of `model`; under a variant, `file` is the file's case, whose sweep the variant's must
+// cover pose for pose (std::invalid_argument when it does not): its drivers are then the file's.
+std::shared_ptr<const LinkageCase> make_case(std::shared_ptr<const LinkageModel> model, const LinkageCase* file = nullptr) {
   auto c = std::make_shared<LinkageCase>();
   c->model = std::move(model);
   mechanisms::LinkageSolverOptions options;
@@ -118,10 +129,47 @@ std::shared_ptr<const LinkageCase> make_case(std::shared_ptr<const LinkageModel>
   c->reach = c->size;
   for (const auto& joint : c->model->description().joints) c->reach = std::max(c->reach, joint.position.cwiseAbs().maxCoeff());
   c->tolerance = 1e-10 * c->size;
-  sweep(*c);
+  sweep(*c, file);
+  if (file) {
+    const std::size_t n = file->drivers.size();
+    if (c->drivers.size() < n || !std::equal(file->drivers.begin(), file->drivers.end(), c->drivers.begin()) ||
+        (c->poses[0] - file->poses[0]).cwiseAbs().maxCoeff() > 0.1 * file->size) {
+      throw std::invalid_argument("the variant's sweep does not cover the file's on its branch");
+    }
+    c->drivers.resize(n);
+    c->poses.resize(n);
+    c->velocities.resize(n);
+    c->file_model = file->model;
+  }
   for (const auto& q : c->poses) c->reach = std::max(c->reach, q.cwiseAbs().maxCoeff());
   closure_poses(*c);
   return c;
+}
+
+// The file's case without a variant; with one, the case of the variant's linkage (linkage_variant.hpp),
+// drawn again until numlab's sweep covers the file's, pose for pose, from the same reference branch.
+std::shared_ptr<const LinkageCase> case_for(std::shared_ptr<const LinkageModel> model, const Variant& variant) {
+  const auto file = make_case(model);
+  if (!variant.active()) return file;
+  const auto varied = linkage_variant(model, variant, [&file](std::shared_ptr<const LinkageModel> candidate) {
+    try {
+      make_case(candidate, file.get());
+      return true;
+    } catch (const std::invalid_argument&) {
+      return false;
+    }
+  });
+  return make_case(varied, file.get());
+}
+
+// Under a variant, the student's numbers are the file's model's where the variant's belong: the
+// mark of TASK.md's numbers typed in without a variant, or a model read from the file.
+Evidence file_numbers_used(const LinkageCase& c, bool all_match, const std::string& what) {
+  if (!c.file_model || !all_match) return std::nullopt;
+  return fmt::format("your {} is the linkage of the file's own numbers, not your variant's: every link length, body "
+                     "and ground joint of your variant differs from the file's by up to 3%; read them from the "
+                     "request's \"model\" (TASK.md's equations are written with them)",
+                     what);
 }
 
 // Rounding in f: the coordinates' differences carry eps times the largest coordinate.
@@ -172,6 +220,23 @@ std::vector<ReferenceTime> closure_time(const LinkageCase& c) {
   return {{"numlab LinkageModel (f and J)", seconds / 100.0}};
 }
 
+// Every sample's f (or J) is the file's model's at the same pose, to `tolerance`.
+bool matches_file(const LinkageCase& c, const std::vector<LinkageClosureSample>& samples, double tolerance, bool J) {
+  if (!c.file_model) return false;
+  for (const auto& s : samples) {
+    Eigen::VectorXd f;
+    Eigen::MatrixXd jacobian;
+    if (J) {
+      c.file_model->jacobian(s.q, s.t, jacobian);
+      if (s.J.rows() != jacobian.rows() || (s.J - jacobian).cwiseAbs().maxCoeff() > tolerance) return false;
+    } else {
+      c.file_model->residual(s.q, s.t, f);
+      if (s.f.size() != f.size() || (s.f - f).cwiseAbs().maxCoeff() > tolerance) return false;
+    }
+  }
+  return true;
+}
+
 Verdict check_f(Session& session, const LinkageCase& c) {
   const double tolerance = f_tolerance(c);
   const auto samples = ask_closures(session, c, false);
@@ -184,7 +249,11 @@ Verdict check_f(Session& session, const LinkageCase& c) {
                       "largest coordinate or length, {:g})",
                       i, c.model->row_name(i), compared(sample.f(i), sample.f_expected(i)), c.closure_poses[s].text,
                       sci(tolerance), c.reach),
-          diagnose(linkage_f_detectors(*c.model, samples, tolerance)),
+          more_specific(diagnose({{"wrong_link", Specificity::exact,
+                                   [&] {
+                                     return file_numbers_used(c, matches_file(c, samples, tolerance, false), "f");
+                                   }}}),
+                        diagnose(linkage_f_detectors(*c.model, samples, tolerance))),
           "compare the row with TASK.md's equation of the same number: same terms, same signs, the lengths of the file");
     }
   }
@@ -205,7 +274,11 @@ Verdict check_J(Session& session, const LinkageCase& c) {
                         "allowed |error| {} (1e3 eps times max |J|)",
                         i, k, i, c.model->column_name(k), c.model->row_name(i),
                         compared(sample.J(i, k), sample.J_expected(i, k)), c.closure_poses[s].text, sci(tolerances[s])),
-            diagnose(linkage_J_detectors(*c.model, samples, tolerances)),
+            more_specific(diagnose({{"wrong_link", Specificity::exact,
+                                     [&] {
+                                       return file_numbers_used(c, matches_file(c, samples, tolerances[s], true), "J");
+                                     }}}),
+                          diagnose(linkage_J_detectors(*c.model, samples, tolerances))),
             "J[i][k] is the derivative of TASK.md's row i by unknown k: a distance row gives (p_i - p_j) / L, a "
             "body row 1, -(1 - a), -a and +-b, a crank or slider row 1 or the line's direction");
       }
@@ -268,6 +341,12 @@ Verdict check_positions(Session& session, const LinkageCase& c) {
                              if ((q - c.poses[0]).cwiseAbs().maxCoeff() > allowed) return std::nullopt;
                            }
                            return std::string("every pose you sent is q0: the Newton step never changed q");
+                         }});
+    detectors.push_back({"wrong_link", Specificity::exact, [&]() -> std::optional<std::string> {
+                           if (!c.file_model) return std::nullopt;
+                           Eigen::VectorXd g;
+                           c.file_model->residual(positions[k], model.driver_from_user(c.drivers[k]), g);
+                           return file_numbers_used(c, g.cwiseAbs().maxCoeff() <= 100.0 * c.tolerance, "pose");
                          }});
     if (model.crank_driven()) {
       detectors.push_back({"degrees_for_radians", Specificity::exact, [&]() -> std::optional<std::string> {
@@ -364,12 +443,26 @@ Exercise linkage_exercise(std::shared_ptr<const LinkageModel> model, const std::
   Exercise exercise = linkage_exercise_without_model();
   const std::string name = model->description().name;
   exercise.summary = "f, J, poses and velocities of the linkage '" + name + "'";
-  // The linkage's own unknowns and equations, before the tasks that refer to them.
-  const std::size_t tasks = exercise.task.find("## Task 1");
-  exercise.task.insert(tasks == std::string::npos ? exercise.task.size() : tasks, linkage_model_task(*model) + "\n");
+  // The linkage's own unknowns and equations, before the tasks that refer to them; under a variant,
+  // written with the variant's numbers.
+  const std::string generic = exercise.task;
+  const auto task_of = [generic](const LinkageModel& linkage) {
+    std::string task = generic;
+    const std::size_t tasks = task.find("## Task 1");
+    task.insert(tasks == std::string::npos ? task.size() : tasks, linkage_model_task(linkage) + "\n");
+    return task;
+  };
+  exercise.task = task_of(*model);
+  exercise.varied_task = [model, task_of](const Variant& variant) { return task_of(*case_for(model, variant)->model); };
+  exercise.variant_task = [](const Variant&) {
+    return std::string("Your linkage's numbers are not the file's: every link length, every body's local coordinates "
+                       "and every ground joint's offset from the first ground joint is the file's times 1 + u, u within "
+                       "3% (slider lines and the driver's reference stay). \"Your linkage\" above is written with "
+                       "them, and every request's `model` carries them.\n");
+  };
   exercise.arguments = {"--model", model_argument};
-  exercise.battery = [model](const Variant&) {
-    const auto c = make_case(model);
+  exercise.battery = [model](const Variant& variant) {
+    const auto c = case_for(model, variant);
     const std::size_t poses = c->closure_poses.size();
     return std::vector<Check>{
         {fmt::format("f follows TASK.md's {} equations of '{}' at {} poses, to rounding (1e3 eps of the largest "

@@ -275,6 +275,7 @@ std::vector<StarterFile> starter_files(const Exercise& exercise, Language langua
   if (variant.active()) {  // the check commands in the files say --variant ID; TASK.md names it
     Exercise varied = exercise;
     varied.arguments.insert(varied.arguments.end(), {"--variant", shell_word(*variant.id())});
+    if (exercise.varied_task) varied.task = exercise.varied_task(variant);
     std::vector<StarterFile> files = starter_files(varied, language);
     std::string& task = files.front().contents;
     const std::size_t how = task.rfind("\n## How to check");
