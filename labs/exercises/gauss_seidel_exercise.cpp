@@ -391,6 +391,9 @@ std::vector<Check> gauss_seidel_battery(const Variant& variant) {
   const Problem normal_tall = problem(seeded(variant, "random 8x3 least squares, normal equations",
                                              "first 3 columns of random_matrix(8)", tall_seed),
                                       overdetermined(tall_seed), true, 1e-10, 500);
+  // The same system with the solution 1000 (1, ..., 1): the stop test's max(1, |x|) now matters.
+  Problem large = problem(dominant_label + ", plain, solution 1000 (1, ..., 1)", dominant, false, 1e-10, 200);
+  large.b *= 1000.0;
   const Problem plain_diverging = problem("[[1,2,4],[2,1,2],[4,2,1]], plain", diverging, false, 1e-9, 100);
   const Problem capped = problem("Hilbert 6x6, normal equations, max_iterations = 25", linalg::hilbert_matrix(6), true,
                                  1e-12, 25);
@@ -402,6 +405,8 @@ std::vector<Check> gauss_seidel_battery(const Variant& variant) {
        [=](Session& s) { return converges_accurately(s, {from_above}); }},
       {"A converged claim passes the stop test on its last sweep's update (trace)", 1,
        [=](Session& s) { return converged_claims_hold(s, {from_above, plain, normal_tall}); }},
+      {"The stop test is relative to |x|: a solution of size 1000 converges in numlab's sweep count", 1,
+       [=](Session& s) { return converges_accurately(s, {large}); }},
       {"plain Gauss-Seidel on [[1,2,4],[2,1,2],[4,2,1]] (not diagonally dominant) ends diverged or max_iterations, "
        "never converged",
        2, [=](Session& s) { return ends_without_converging(s, plain_diverging); }},

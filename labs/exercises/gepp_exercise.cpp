@@ -205,7 +205,7 @@ std::optional<Departure> first_departure(const nlohmann::json& trace, const Refe
       } else if (yours == candidates.maxCoeff()) {
         hint = "pivoting on the signed value: compare |a_ik|, not a_ik (a large negative entry is a good pivot)";
       }
-      return Departure{fmt::format("column {}: you pivoted on row {} (|a| = {}); the largest below the diagonal is row "
+      return Departure{fmt::format("column {}: you pivoted on row {} (|a| = {}); the largest on or below the diagonal is row "
                                    "{} (|a| = {})",
                                    k, row, sci(std::abs(yours)), expected.row,
                                    sci(std::abs(candidates(expected.row - static_cast<int>(k))))),

@@ -311,9 +311,22 @@ std::optional<Diagnosis> diagnose_gauss_seidel(const GaussSeidelProblem& p, cons
                                                  measured(residual(h.rule, p, *asked, run.xs.back())),
                                                  measured(p.tolerance))
                                    : std::string();
+                           // Other wrong rules that end alike on this request are named too: the
+                           // request cannot tell them apart (x0 below the solution: every change > 0).
+                           std::string what = h.what;
+                           int alike = 1;
+                           for (const auto& [other, other_run] : stop_runs) {
+                             if (&other == &h || !named(other_run) || other_run.status != run.status ||
+                                 other_run.sweeps() != run.sweeps()) {
+                               continue;
+                             }
+                             what += std::string(", or ") + other.what;
+                             ++alike;
+                           }
+                           if (alike > 1) what = fmt::format("{} ({} rules that end alike on this request)", what, alike);
                            return fmt::format("{} ends {} as you do, where {}update_inf is {} and tolerance*max(1,|x|) "
                                               "= {} (numlab's ends {}): {}",
-                                              h.what, ending(run.status, run.sweeps()), residual_note,
+                                              what, ending(run.status, run.sweeps()), residual_note,
                                               measured(run.updates.back()), measured(threshold),
                                               ending(reference.status, reference.sweeps()), h.remedy);
                          }});

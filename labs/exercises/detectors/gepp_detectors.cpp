@@ -17,8 +17,10 @@ constexpr double eps = std::numeric_limits<double>::epsilon();
 int pivot_row(const Eigen::MatrixXd& a, int k, GeppMistake mistake) {
   const int n = static_cast<int>(a.rows());
   if (mistake == GeppMistake::no_pivoting) return k;
-  int best = k;
-  for (int i = k + 1; i < n; ++i) {
+  // The search starts at row k, or at row k+1 when the student's loop skips the diagonal.
+  const int first = mistake == GeppMistake::search_skips_diagonal && k + 1 < n ? k + 1 : k;
+  int best = first;
+  for (int i = first + 1; i < n; ++i) {
     const bool larger = mistake == GeppMistake::signed_pivot ? a(i, k) > a(best, k)
                                                              : std::abs(a(i, k)) > std::abs(a(best, k));
     if (larger) best = i;
@@ -64,6 +66,7 @@ const char* description(GeppMistake mistake) {
   switch (mistake) {
     case GeppMistake::no_pivoting: return "elimination without row swaps (row k is always the pivot row)";
     case GeppMistake::signed_pivot: return "pivoting on the largest signed a_ik";
+    case GeppMistake::search_skips_diagonal: return "a pivot search over the rows below the diagonal only (i > k)";
     case GeppMistake::inverted_multiplier: return "elimination with the multiplier a_kk / a_ik";
     case GeppMistake::swap_without_b: return "row swaps of A that leave b as it was";
     case GeppMistake::swap_leaves_last_column: return "row swaps that leave the last column behind";
@@ -82,6 +85,8 @@ const char* remedy(GeppMistake mistake) {
     case GeppMistake::no_pivoting:
       return "at each column swap in the row with the largest |a_ik| on or below the diagonal";
     case GeppMistake::signed_pivot: return "compare |a_ik|, not a_ik: a large negative entry is a good pivot";
+    case GeppMistake::search_skips_diagonal:
+      return "the search starts at row k: keep the diagonal entry when no |a_ik| below it is larger";
     case GeppMistake::inverted_multiplier: return "the multiplier is l_ik = a_ik / a_kk (the pivot divides)";
     case GeppMistake::swap_without_b: return "swap b_k and b_p together with the rows of A";
     case GeppMistake::swap_leaves_last_column:
@@ -212,6 +217,7 @@ std::optional<Diagnosis> diagnose_gepp(const Eigen::MatrixXd& A, const Eigen::Ve
   const std::vector<std::pair<const char*, GeppMistake>> replayed = {
       {"no_pivoting", GeppMistake::no_pivoting},
       {"signed_pivot", GeppMistake::signed_pivot},
+      {"pivot_search_skips_diagonal", GeppMistake::search_skips_diagonal},
       {"inverted_multiplier", GeppMistake::inverted_multiplier},
       {"swap_without_b", GeppMistake::swap_without_b},
       {"partial_row_swap", GeppMistake::swap_leaves_last_column},

@@ -16,6 +16,7 @@ enum class GeppMistake {
   none,                      // numlab's GEPP, as the task asks
   no_pivoting,               // row k is always the pivot row
   signed_pivot,              // the largest a_ik instead of the largest |a_ik|
+  search_skips_diagonal,     // the largest |a_ik| for i > k only: row k itself is never kept
   inverted_multiplier,       // l = a_kk / a_ik instead of a_ik / a_kk
   swap_without_b,            // rows of A swapped, b left as it was
   swap_leaves_last_column,   // the swap moves columns k ... n-2, the last stays behind

@@ -14,6 +14,7 @@
 #include <string>
 #include <utility>
 
+#include "exercises/detectors/explains.hpp"
 #include "exercises/detectors/gauss_seidel_detectors.hpp"
 #include "exercises/detectors/gepp_detectors.hpp"
 #include "exercises/detectors/inverse2x2_detectors.hpp"
@@ -161,6 +162,58 @@ TEST_CASE("gepp detectors: a row swap that copies row p over row k (numpy row vi
   const Eigen::MatrixXd dominant = numlab::linalg::diagonally_dominant_matrix(6, 5).transpose();
   const Eigen::VectorXd b = dominant * Eigen::VectorXd::Ones(6);
   CHECK(gepp_cause(dominant, b, gepp_copying_swap(dominant, b, false)) == "(none)");
+}
+
+TEST_CASE("explains: agreement to less than three digits is no evidence, however far numlab's answer lies") {
+  // A replay on Hilbert(10) (tolerance 100 n kappa eps ~ 7.7) that lies 4.9e11 from numlab's x.
+  CHECK_FALSE(d::explains(1.0, 4.9e11, 7.7, 1e-2));
+  CHECK_FALSE(d::explains(2e-3, 4.9e11, 7.7, 1e-2));
+  CHECK(d::explains(5e-4, 4.9e11, 7.7, 1e-2));
+  CHECK_FALSE(d::explains(1e-10, 1e-3, 1e-8, 1e-2));  // the mistake does not change the answer
+  CHECK_FALSE(d::explains(5e-4, 1e-2, 1e-2, 1e-3));   // not a hundred times closer to the replay
+}
+
+// A student's GEPP whose pivot search looks at rows k+1 ... n-1 only, written here on its own.
+d::GeppAnswer gepp_search_below_diagonal(Eigen::MatrixXd a, Eigen::VectorXd b) {
+  const int n = static_cast<int>(a.rows());
+  std::vector<d::GeppTraceEntry> trace;
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    if (k + 1 < n) a.col(k).tail(n - k - 1).cwiseAbs().maxCoeff(&p), p += k + 1;
+    a.row(k).swap(a.row(p));
+    std::swap(b(k), b(p));
+    trace.push_back({p, a(k, k)});
+    for (int i = k + 1; i < n; ++i) {
+      const double l = a(i, k) / a(k, k);
+      a.row(i) -= l * a.row(k);
+      b(i) -= l * b(k);
+    }
+  }
+  d::GeppAnswer answer;
+  answer.x = a.triangularView<Eigen::Upper>().solve(b);
+  answer.trace = trace;
+  return answer;
+}
+
+TEST_CASE("gepp detectors: a pivot search that skips the diagonal row is named") {
+  int differed = 0;
+  for (const auto& [n, seed] : {std::pair{3, 7u}, std::pair{8, 11u}, std::pair{50, 3u}}) {
+    INFO("n = " << n << ", seed " << seed);
+    const auto system = numlab::linalg::generate_system("random", n, seed);
+    const d::GeppAnswer answer = gepp_search_below_diagonal(system.A, system.b);
+    const d::GeppRun right = d::replay_gepp(system.A, system.b, d::GeppMistake::none);
+    bool same_rows = true;  // where the diagonal never held the largest |a_ik|, the mistake changes nothing
+    for (std::size_t k = 0; k < right.rows.size(); ++k) same_rows = same_rows && (*answer.trace)[k].row == right.rows[k];
+    const auto diagnosis = d::diagnose_gepp(system.A, system.b, numlab::linalg::condition_estimate(system.A), answer);
+    if (same_rows) {
+      CHECK(cause_of(diagnosis) == "(none)");
+    } else {
+      CHECK(cause_of(diagnosis) == "pivot_search_skips_diagonal");
+      if (diagnosis) CHECK_THAT(diagnosis->evidence, Catch::Matchers::Contains("the search starts at row k"));
+    }
+    differed += same_rows ? 0 : 1;
+  }
+  CHECK(differed >= 2);  // the mistake shows on the 8x8 and the 50x50
 }
 
 TEST_CASE("gepp detectors: \"singular\" for a well-scaled matrix whose entries are all tiny is an absolute threshold") {
