@@ -133,9 +133,10 @@ TEST_CASE("mustang-newton: seed 003's flipped loop-3 Jacobian row is caught") {
   const Solver mutant = [](const nlohmann::json& request) {
     const double theta = request["crank_angle"].get<double>();
     const auto guess = numlab::exercise::vector(request["guess"]);
-    auto flipped = [theta](const mustang_newton_reference::Vector8& x, mustang_newton_reference::Vector8& f,
-                           mustang_newton_reference::Matrix8& J) {
-      mustang_newton_reference::closure(theta, x, f, J);
+    const auto lengths = mustang_newton_reference::lengths_of(request);
+    auto flipped = [theta, lengths](const mustang_newton_reference::Vector8& x, mustang_newton_reference::Vector8& f,
+                                    mustang_newton_reference::Matrix8& J) {
+      mustang_newton_reference::closure(theta, x, lengths, f, J);
       J(5, 4) = -J(5, 4);
       J(5, 5) = -J(5, 5);
     };
