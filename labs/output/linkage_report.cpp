@@ -1,5 +1,7 @@
 #include "output/linkage_report.hpp"
 
+#include "numlab/mechanisms/linkage/linkage_statics.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -177,6 +179,52 @@ std::string output_summary(const LinkageReport& r) {
                      infinite > 0 ? fmt::format(" (infinite at {} pose{}: a toggle)", infinite, infinite == 1 ? "" : "s") : "");
 }
 
+// The statics columns after the link columns, when the file has [[load]]s: driver_torque (crank) or
+// driver_force (slider), statics (equilibrium, singular, no_pose), reaction_<S>_x, reaction_<S>_y per
+// support (ground joints, then slider joints).
+bool has_loads(const LinkageReport& r) { return !r.model.description().loads.empty(); }
+const char* driver_load_name(const LinkageModel& model) { return model.crank_driven() ? "driver_torque" : "driver_force"; }
+
+void print_statics_header(std::ostream& out, const LinkageReport& r) {
+  if (!has_loads(r)) return;
+  out << ',' << driver_load_name(r.model) << ",statics";
+  for (const StaticsSupport& s : statics_supports(r.model.description())) out << ",reaction_" << s.name << "_x,reaction_" << s.name << "_y";
+}
+
+void print_statics_row(std::ostream& out, const LinkageStatics& statics) {
+  out << fmt::format(",{:.17g},{}", statics.driver, to_string(statics.status));
+  for (const Eigen::Vector2d& reaction : statics.reactions) out << fmt::format(",{:.17g},{:.17g}", reaction.x(), reaction.y());
+}
+
+nlohmann::ordered_json statics_json(const LinkageReport& r, const std::vector<StaticsSupport>& supports, const LinkageStatics& statics) {
+  nlohmann::ordered_json reactions = nlohmann::ordered_json::object();
+  for (std::size_t s = 0; s < supports.size(); ++s) {
+    reactions[supports[s].name] = {number_or_null(statics.reactions[s].x()), number_or_null(statics.reactions[s].y())};
+  }
+  return {{"status", std::string(to_string(statics.status))},
+          {driver_load_name(r.model), number_or_null(statics.driver)},  // null when singular (unbounded) or no pose
+          {"reactions", reactions}};
+}
+
+// "driver torque -3.2 .. 5.1 (largest in size 5.1 at 120 deg); singular at 2 poses".
+std::string statics_summary(const LinkageReport& r) {
+  LinkageStaticsSolver solver(r.model);
+  double low = std::numeric_limits<double>::infinity(), high = -low, largest = -1.0, at = nan;
+  int singular = 0;
+  for (const auto& pose : r.sweep.poses) {
+    const LinkageStatics& statics = solver.solve(pose);
+    if (statics.status == StaticsStatus::singular) ++singular;
+    if (statics.status != StaticsStatus::equilibrium) continue;
+    low = std::min(low, statics.driver), high = std::max(high, statics.driver);
+    if (std::abs(statics.driver) > largest) largest = std::abs(statics.driver), at = pose.driver;
+  }
+  const std::string what = r.model.crank_driven() ? "driver torque" : "driver force";
+  const std::string tail = singular > 0 ? fmt::format("; singular (unbounded) at {} pose{}", singular, singular == 1 ? "" : "s") : "";
+  if (largest < 0.0) return what + ": no pose in equilibrium" + tail;
+  return fmt::format("{} {:.6g} .. {:.6g} (largest in size {:.6g} at {:.6g}{}){}", what, low, high, largest, at,
+                     r.model.crank_driven() ? " deg" : "", tail);
+}
+
 }  // namespace
 
 void print_explanation(std::ostream& out, const LinkageModel& model, Format format) {
@@ -251,7 +299,9 @@ void print_linkage_csv(std::ostream& out, const LinkageReport& r) {
   out << ",condition,iterations,residual_inf,status,branch_kept";
   const auto lines = link_lines(r.model.description());
   print_link_header(out, r, lines);
+  print_statics_header(out, r);
   out << '\n';
+  LinkageStaticsSolver statics(r.model);
   for (const auto& pose : r.sweep.poses) {
     out << fmt::format("{:.10g}", pose.driver);
     std::vector<JointMotion> m;
@@ -268,6 +318,7 @@ void print_linkage_csv(std::ostream& out, const LinkageReport& r) {
       const double w = *r.speed_rad_s;
       for (const AngularMotion& m : rates.links) out << fmt::format(",{:.17g},{:.17g}", m.omega * w, m.alpha * w * w);
     }
+    if (has_loads(r)) print_statics_row(out, statics.solve(pose));
     out << '\n';
   }
 }
@@ -306,6 +357,8 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
                                 {"solver", r.solver.options().solver},
                                 {"driver", r.model.crank_driven() ? "crank_deg" : "travel"},
                                 {"poses", nlohmann::ordered_json::array()}};
+  LinkageStaticsSolver statics(r.model);
+  const auto supports = statics_supports(r.model.description());
   for (const auto& pose : r.sweep.poses) {
     nlohmann::ordered_json positions, velocities, accelerations, transmission;
     for (std::size_t j = 0; j < joints.size(); ++j) {
@@ -348,6 +401,7 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
       out["poses"].back()["mechanical_advantage"] = number(advantage);  // null at a toggle (infinite) or no pose
       out["poses"].back()["mechanical_advantage_infinite"] = std::isinf(advantage);
     }
+    if (has_loads(r)) out["poses"].back()["statics"] = statics_json(r, supports, statics.solve(pose));
   }
   out["status"] = std::string(to_string(r.status));
   out["links_per"] = r.model.crank_driven() ? "radian of crank" : "unit of slider travel";
@@ -454,6 +508,7 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
   if (std::isfinite(low)) out << fmt::format("kappa(J)           {:.3g} .. {:.3g} (largest at {:g})\n", low, high, at);
   for (std::size_t b : dyads(r.solver)) out << "transmission       " << transmission_summary(r, b) << '\n';
   if (r.output) out << "output             " << output_summary(r) << '\n';
+  if (has_loads(r)) out << "statics            " << statics_summary(r) << '\n';
   print_derivative_check(out, r.derivatives);
   if (r.jacobian) {
     out << fmt::format("jacobian           exact J against finite differences at {} solved poses: worst relative error "

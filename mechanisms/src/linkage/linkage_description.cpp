@@ -328,6 +328,8 @@ class Reader {
     read_driver(table_of(*driver, "[driver]"));
     check_link_names();
     check_output();
+    const auto lines = link_lines(description_);
+    for_each_table("load", [&](const toml::table& t) { read_load(t, lines); });
     return std::move(description_);
   }
 
@@ -408,7 +410,7 @@ class Reader {
     };
     static constexpr Section sections[] = {{"linkage", false}, {"ground", false}, {"joints", false},
                                            {"link", true},     {"body", true},    {"slider", true},
-                                           {"driver", false}};
+                                           {"driver", false},  {"load", true}};
     for (const auto& entry : in_file_order(root_)) {
       const toml::key* key = entry.first;
       const toml::node* node = entry.second;
@@ -430,7 +432,14 @@ class Reader {
   }
 
   void read_linkage(const toml::table& linkage) {
-    check_keys(linkage, {"name", "title", "output"}, "[linkage]");
+    check_keys(linkage, {"name", "title", "output", "gravity"}, "[linkage]");
+    if (const toml::node* gravity = linkage.get("gravity")) {
+      description_.gravity = number_of(*gravity, "the linkage's gravity");
+      if (description_.gravity < 0.0) {
+        fail(place_of(*gravity), "gravity is " + number_text(description_.gravity) +
+                                     ": give its size in m/s^2 (it pulls along -y), at least 0");
+      }
+    }
     const toml::node& name_node = required(linkage, "name", "[linkage]");
     const std::string_view name = string_of(name_node, "the linkage's name");
     if (!valid_name(name, max_linkage_name, true)) {
@@ -648,6 +657,52 @@ class Reader {
       spec.angle_place = place_of(*angle);
     }
     description_.sliders.push_back(spec);
+  }
+
+  // [[load]]: joint = "B" with force = [Fx, Fy] or mass = m; or link = "name" with torque = T.
+  void read_load(const toml::table& load, const std::vector<LinkLine>& lines) {
+    check_keys(load, {"joint", "link", "force", "torque", "mass"}, "[[load]]");
+    LoadSpec spec;
+    spec.place = place_of(load);
+    const toml::node* joint = load.get("joint");
+    const toml::node* link = load.get("link");
+    if ((joint == nullptr) == (link == nullptr)) {
+      fail(joint != nullptr ? place_of(*link) : spec.place,
+           "a [[load]] acts on a joint (joint = \"B\") or on a link or body (link = \"name\"): give one of the two");
+    }
+    const auto refuse = [&](std::string_view key, const std::string& why) {
+      if (const toml::node* node = load.get(key)) fail(place_of(*node), why);
+    };
+    if (link != nullptr) {
+      const std::string_view name = string_of(*link, "a load's link");
+      const auto found = std::find_if(lines.begin(), lines.end(), [&](const LinkLine& l) { return l.name == name; });
+      if (found == lines.end()) {
+        fail(place_of(*link), "unknown link or body " + quoted(name) + " for a torque: name one of the " +
+                                  output_choices(description_).substr(0, 400));
+      }
+      refuse("force", "a force acts at a joint: write joint = \"...\", not link");
+      refuse("mass", "a mass sits at a joint: write joint = \"...\", not link");
+      spec.kind = LoadKind::torque;
+      spec.line = static_cast<int>(found - lines.begin());
+      spec.torque = number_of(required(load, "torque", "a [[load]] on a link"), "a load's torque");
+    } else {
+      spec.joint = joint_of(*joint, "a load's joint");
+      refuse("torque", "a torque acts on a link or body: write link = \"name\", not joint");
+      const toml::node* force = load.get("force");
+      const toml::node* mass = load.get("mass");
+      if ((force == nullptr) == (mass == nullptr)) {
+        fail(force != nullptr ? place_of(*mass) : spec.place, "a [[load]] at a joint gives force = [Fx, Fy] or mass = m, one of the two");
+      }
+      if (force != nullptr) {
+        spec.kind = LoadKind::force;
+        spec.force = point_of(*force, "a load's force");
+      } else {
+        spec.kind = LoadKind::mass;
+        spec.mass = number_of(*mass, "a load's mass");
+        if (spec.mass < 0.0) fail(place_of(*mass), "a load's mass must be at least 0, got " + number_text(spec.mass));
+      }
+    }
+    description_.loads.push_back(spec);
   }
 
   void read_driver(const toml::table& driver) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
 #include "numlab/mechanisms/plane_angles.hpp"
@@ -286,6 +287,15 @@ void LinkageModel::jacobian_entries(const Eigen::VectorXd& q, double /*t*/, std:
     for (Eigen::Index r = 0; r < block.rows(); ++r) {
       for (int xy = 0; xy < 2; ++xy) entries.push_back({row + static_cast<int>(r), column + xy, block(r, xy)});
     }
+  });
+}
+
+void LinkageModel::multiplier_forces(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
+                                     std::vector<Eigen::Vector2d>& forces) const {
+  for (Eigen::Vector2d& f : forces) f.setZero();
+  for_each_partial(q, [&](int row, int joint, const auto& block) {
+    constexpr int rows = std::decay_t<decltype(block)>::RowsAtCompileTime;
+    forces[static_cast<std::size_t>(joint)] += block.transpose() * lambda.template segment<rows>(row);
   });
 }
 

@@ -43,7 +43,11 @@ void* __wrap_realloc(void* memory, std::size_t size) {
 #include <vector>
 
 #include "model_files.hpp"
+#include "numlab/linalg/matrix_file.hpp"
 #include "numlab/mechanisms/linkage/linkage_fast_solver.hpp"
+#include "numlab/mechanisms/linkage/linkage_statics.hpp"
+#include "numlab/mechanisms/linkage/linkage_sweep.hpp"
+#include <cmath>
 
 using namespace numlab::mechanisms;
 using namespace numlab::mechanisms::testing;
@@ -120,4 +124,28 @@ TEST_CASE("a fast-path solve allocates nothing once the model and workspace are 
       if (kind != std::string("analytic")) CHECK(iterations > 0);  // Newton iterations were counted
     }
   }
+}
+
+TEST_CASE("the driving torque (one more linear solve per pose) allocates nothing once its solver is made",
+          "[linkage-fast][allocations]") {
+  // The shipped four-bar with a torque, a force and a mass: every kind of load.
+  std::string text = numlab::linalg::read_text_file(model_path("four-bar"));
+  text += "\n[[load]]\nlink = \"Q-B\"\ntorque = -10.0\n[[load]]\njoint = \"B\"\nmass = 2.0\n[[load]]\njoint = \"A\"\nforce = [3.0, -4.0]\n";
+  const LinkageModel model(parse_linkage_description(text, "four-bar-loads.toml"));
+  const LinkageSolver solver(model, LinkageSolverOptions{});
+  const LinkageSweep sweep = linkage_sweep(solver, 0.0, 350.0, 10.0);
+  LinkageStaticsSolver statics(model);
+  double sum = 0.0;
+  int equilibria = 0;
+  const Allocations during = allocations_during([&] {
+    for (const LinkagePose& pose : sweep.poses) {
+      const LinkageStatics& s = statics.solve(pose);
+      sum += s.driver;
+      equilibria += s.status == StaticsStatus::equilibrium ? 1 : 0;
+    }
+  });
+  CHECK(during.malloc_calls == 0);
+  CHECK(during.new_calls == 0);
+  CHECK(equilibria == static_cast<int>(sweep.poses.size()));
+  CHECK(std::isfinite(sum));
 }

@@ -68,6 +68,23 @@ struct DriverSpec {
   SourcePlace reference_place{};  // of `angle` (crank) or `travel` (slider)
 };
 
+// A load on the mechanism ([[load]], docs/linkage-files.md "Loads and the driving torque"): a force
+// at a joint (N), a torque on a link or body (N times the file's length unit, counter-clockwise
+// positive), or a mass at a joint (kg) that gravity pulls down -y with m g (N, g in m/s^2).
+enum class LoadKind { force, torque, mass };
+
+struct LoadSpec {
+  LoadKind kind = LoadKind::force;
+  int joint = -1;  // force, mass: index into LinkageDescription::joints
+  int line = -1;   // torque: index into link_lines() (links, then bodies, in file order)
+  Eigen::Vector2d force = Eigen::Vector2d::Zero();  // force: [Fx, Fy]
+  double torque = 0.0;                              // torque
+  double mass = 0.0;                                // mass
+  SourcePlace place;
+};
+
+inline constexpr double standard_gravity = 9.80665;  // m/s^2, the default of [linkage] gravity
+
 struct LinkageDescription {
   std::string file;    // as given, for messages
   std::string name;    // [linkage] name
@@ -79,6 +96,8 @@ struct LinkageDescription {
   std::vector<BodySpec> bodies;
   std::vector<SliderSpec> sliders;
   DriverSpec driver;
+  std::vector<LoadSpec> loads;              // [[load]], in file order
+  double gravity = standard_gravity;        // [linkage] gravity, m/s^2 along -y (masses only)
 
   // The index of the joint called `name`, or -1.
   int joint_index(std::string_view name) const;

@@ -93,6 +93,11 @@ class LinkageModel {
   void driver_derivative(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi_t) const;
   void acceleration_rhs(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, double t, Eigen::VectorXd& gamma) const;
 
+  // Per joint, ground joints included: sum over rows r of lambda_r d Phi_r / d p_j (J^T lambda split
+  // by joint, with the ground joints' partials too). `forces` must hold one entry per joint; it is
+  // overwritten, and nothing is allocated (linkage_statics.hpp: the constraint forces).
+  void multiplier_forces(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, std::vector<Eigen::Vector2d>& forces) const;
+
   // The structural nonzero pattern of J: row r has column c when constraint r's joints include
   // c's joint (x and y together, so a joint's two unknowns always fall in one block).
   Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> pattern() const;
