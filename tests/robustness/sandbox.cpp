@@ -119,6 +119,32 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
       {"lk-slider-driven.toml", "[linkage]\nname = \"s\"\n[ground]\nO = [0.0, 0.0]\n[joints]\nA = [0.9, 0.5]\nS = [2.9, 0.25]\n"
                                 "[[link]]\njoints = [\"O\", \"A\"]\nlength = 1.0\n[[link]]\njoints = [\"A\", \"S\"]\nlength = 2.0\n"
                                 "[[slider]]\njoint = \"S\"\nthrough = [0.0, 0.25]\n[driver]\ntype = \"slider\"\njoint = \"S\"\ntravel = 2.9\n"},
+      // Issue 30 §3: loads ([[load]]) and the driving torque; each bad one refused at its place.
+      {"lk-loads.toml", four_bar() + "\n[[load]]\nlink = \"Q-B\"\ntorque = -10.0\n\n[[load]]\njoint = \"B\"\nmass = 2.0\n"},
+      {"lk-slider-load.toml", "[linkage]\nname = \"s\"\n[ground]\nO = [0.0, 0.0]\n[joints]\nA = [0.9, 0.5]\nS = [2.9, 0.25]\n"
+                              "[[link]]\njoints = [\"O\", \"A\"]\nlength = 1.0\n[[link]]\njoints = [\"A\", \"S\"]\nlength = 2.0\n"
+                              "[[slider]]\njoint = \"S\"\nthrough = [0.0, 0.25]\n[driver]\ntype = \"slider\"\njoint = \"S\"\ntravel = 2.9\n"
+                              "[[load]]\nlink = \"O-A\"\ntorque = 5.0\n"},
+      {"lk-parallelogram-load.toml", four_bar({{"Q = [4.0, 0.0]", "Q = [3.5, 0.0]"}, {"B = [3.4, 2.9]", "B = [4.37, 0.5]"},
+                                               {"length = 3.0", "length = 1.0"}}) +
+                                         "\n[[load]]\nlink = \"Q-B\"\ntorque = 1.0\n"},
+      {"lk-load-unknown-joint.toml", four_bar() + "\n[[load]]\njoint = \"X\"\nforce = [0.0, -10.0]\n"},
+      {"lk-load-unknown-link.toml", four_bar() + "\n[[load]]\nlink = \"crank\"\ntorque = 2.5\n"},
+      {"lk-load-both.toml", four_bar() + "\n[[load]]\njoint = \"B\"\nlink = \"O-A\"\ntorque = 2.5\n"},
+      {"lk-load-neither.toml", four_bar() + "\n[[load]]\nforce = [1.0, 2.0]\n"},
+      {"lk-load-force-and-mass.toml", four_bar() + "\n[[load]]\njoint = \"B\"\nforce = [1.0, 2.0]\nmass = 2.0\n"},
+      {"lk-load-torque-at-joint.toml", four_bar() + "\n[[load]]\njoint = \"B\"\ntorque = 2.0\n"},
+      {"lk-load-force-on-link.toml", four_bar() + "\n[[load]]\nlink = \"A-B\"\nforce = [1.0, 2.0]\ntorque = 1.0\n"},
+      {"lk-load-negative-mass.toml", four_bar() + "\n[[load]]\njoint = \"B\"\nmass = -2.0\n"},
+      {"lk-load-force-one.toml", four_bar() + "\n[[load]]\njoint = \"B\"\nforce = [1.0]\n"},
+      {"lk-load-force-nan.toml", four_bar() + "\n[[load]]\njoint = \"B\"\nforce = [nan, 1.0]\n"},
+      {"lk-load-unknown-key.toml", four_bar() + "\n[[load]]\njoint = \"B\"\nforce = [1.0, 0.0]\nat = 3\n"},
+      {"lk-load-table.toml", four_bar() + "\n[load]\njoint = \"B\"\nforce = [1.0, 0.0]\n"},
+      {"lk-load-no-torque.toml", four_bar() + "\n[[load]]\nlink = \"A-B\"\n"},
+      {"lk-load-torque-string.toml", four_bar() + "\n[[load]]\nlink = \"A-B\"\ntorque = \"2\"\n"},
+      {"lk-gravity-negative.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ngravity = -9.8"}}) +
+                                       "\n[[load]]\njoint = \"B\"\nmass = 1.0\n"},
+      {"lk-gravity-string.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ngravity = \"down\""}})},
       {"lk-deep-key.toml", deeply_nested("a", " = 1\n")},
       {"lk-deep-header.toml", deeply_nested("[a", "]\n")},
       // Titles with a C1 control (U+009B, a CSI), a direction override (U+202E), an isolate (U+2066).
