@@ -257,3 +257,34 @@ TEST_CASE("a [[load]] read, with gravity's default and its own value", "[linkage
   CHECK(d.gravity == 1.62);
   CHECK(d.loads[0].force == Eigen::Vector2d(1.0, 2.0));
 }
+
+TEST_CASE("toward a fold the torque grows, finite, then no pose: never a NaN passed off as a number", "[linkage-statics]") {
+  // The non-Grashof four-bar of docs/linkage-files.md 'Assembly limits' (crank 2, coupler 3, rocker
+  // 2.5, ground 4): it stops assembling at crank 129.838 deg, coupler and rocker in line (|AQ| = 5.5),
+  // where J is singular and a torque on the rocker needs an unbounded driver torque.
+  const std::string text = four_bar_text(2.0, 3.0, 2.5, 4.0, 1.0) + "[[load]]\nlink = \"rocker\"\ntorque = 1.0\n";
+  const LinkageModel model(parse_linkage_description(text, "non-grashof.toml"));
+  const LinkageSolver solver(model, LinkageSolverOptions{});
+  LinkageStaticsSolver statics(model);
+  const LinkageSweep sweep = linkage_sweep(solver, 100.0, 135.0, 0.25);
+  double first = 0.0, last = 0.0;
+  int equilibria = 0, no_pose = 0;
+  for (const LinkagePose& pose : sweep.poses) {
+    INFO("crank " << pose.driver);
+    const LinkageStatics& s = statics.solve(pose);
+    if (s.status == StaticsStatus::equilibrium) {
+      CHECK(std::isfinite(s.driver));
+      if (equilibria++ == 0) first = std::abs(s.driver);
+      last = std::abs(s.driver);
+      CHECK(pose.driver < 129.84);
+    } else if (s.status == StaticsStatus::singular) {
+      CHECK(std::isinf(s.driver));
+    } else {
+      CHECK(pose.driver > 129.83);  // past the fold: no pose, and so no statics
+      ++no_pose;
+    }
+  }
+  CHECK(equilibria > 100);
+  CHECK(no_pose > 0);
+  CHECK(last > 5.0 * first);  // measured: 0.917 at 100 deg, 9.198 at 129.75 deg, the last pose before the fold
+}
