@@ -22,6 +22,9 @@
 #include "numlab/mechanisms/crank_angle.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
+#include "numlab/linalg/matrix_file.hpp"
+#include "numlab/mechanisms/linkage/link_motion.hpp"
+#include "numlab/mechanisms/linkage/linkage_statics.hpp"
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
 #include "scenes/linkage_scene.hpp"
 
@@ -355,6 +358,65 @@ void show_over_modelling(LabSession& session, const LinkageModel& model, const C
 
 }  // namespace
 
+// Step 8: four-bar.toml under a torque on its rocker and a mass at B: the driver torque from the
+// Lagrange multipliers against virtual work and against the slope of the loads' potential.
+double load_potential(const LinkageModel& model, const Eigen::VectorXd& q, const std::vector<LinkLine>& lines,
+                      const Eigen::VectorXd& q_reference) {
+  const auto joints = joint_motions(model, q, {}, {});
+  const auto reference = joint_motions(model, q_reference, {}, {});
+  double V = 0.0;
+  for (const LoadSpec& load : model.description().loads) {
+    if (load.kind == LoadKind::force) V -= load.force.dot(joints[static_cast<std::size_t>(load.joint)].p);
+    if (load.kind == LoadKind::mass) V += load.mass * model.description().gravity * joints[static_cast<std::size_t>(load.joint)].p.y();
+    if (load.kind == LoadKind::torque) {  // -T theta, theta measured from the reference pose's (no wrap)
+      const LinkLine& line = lines[static_cast<std::size_t>(load.line)];
+      const auto angle = [&](const std::vector<JointMotion>& j) {
+        return angular_motion(j[static_cast<std::size_t>(line.from)], j[static_cast<std::size_t>(line.to)]).angle;
+      };
+      V -= load.torque * std::remainder(angle(joints) - angle(reference), 2.0 * std::numbers::pi);
+    }
+  }
+  return V;
+}
+
+bool show_driving_torque(LabSession& session) {
+  const std::string loads = "\n[[load]]\nlink = \"Q-B\"\ntorque = -10.0\n\n[[load]]\njoint = \"B\"\nmass = 2.0\n";
+  const LinkageModel model(parse_linkage_description(linalg::read_text_file(models_dir() + "/four-bar.toml") + loads,
+                                                     "four-bar.toml with loads"));
+  const LinkageSolver solver = make_solver(model, "full");
+  const LinkageSweep sweep = linkage_sweep(solver, 0.0, 359.0, 1.0);
+  const auto lines = link_lines(model.description());
+  LinkageStaticsSolver statics(model);
+  std::vector<Eigen::Vector2d> applied(model.description().joints.size());
+  Table table({"crank (deg)", "tau by multipliers", "by virtual work", "difference", "by dV/dtheta", "difference"});
+  std::vector<DrivingTorqueRow> rows;
+  bool solved = true;
+  for (const LinkagePose& pose : sweep.poses) {
+    if (std::fmod(pose.driver, 45.0) != 0.0 || pose.outcome.status != Status::converged) continue;
+    const LinkageStatics& s = statics.solve(pose);
+    // Virtual work: the loads as forces at the joints (the torque as a couple), times the joints' velocities.
+    applied_joint_forces(model, pose.q, applied);
+    const auto joints = joint_motions(model, pose.q, pose.velocity, pose.acceleration);
+    double power = 0.0, scale = 0.0;
+    for (std::size_t j = 0; j < applied.size(); ++j) power += applied[j].dot(joints[j].v), scale += std::abs(applied[j].dot(joints[j].v));
+    // The potential's slope: positions solved at theta +- h.
+    const double t = model.driver_from_user(pose.driver), h = 1e-4;
+    const LinkageSolution plus = solver.solve(t + h, pose.q + h * pose.velocity);
+    const LinkageSolution minus = solver.solve(t - h, pose.q - h * pose.velocity);
+    solved = solved && s.status == StaticsStatus::equilibrium && plus.outcome.status == Status::converged &&
+             minus.outcome.status == Status::converged;
+    const double slope = (load_potential(model, plus.q, lines, pose.q) - load_potential(model, minus.q, lines, pose.q)) / (2.0 * h);
+    const DrivingTorqueRow row{pose.driver, s.driver, -power, slope, scale};
+    rows.push_back(row);
+    table.add_row({fmt::format("{:g}", row.crank_deg), fmt::format("{:.10g}", row.multipliers), fmt::format("{:.10g}", row.virtual_work),
+                   scientific(std::abs(row.multipliers - row.virtual_work) / scale), fmt::format("{:.10g}", row.potential),
+                   scientific(std::abs(row.multipliers - row.potential) / scale)});
+  }
+  session.show(table, "driving-torque");
+  session.say(driving_torque_sentence(rows));
+  return solved && !rows.empty();
+}
+
 int run_linkage_lab(LabSession& session) {
   const std::string file = "jansen.toml";
   const LinkageModel model(read_linkage_description(models_dir() + "/" + file));
@@ -422,9 +484,19 @@ int run_linkage_lab(LabSession& session) {
                           "models (the pose solves alone). 'Jacobian nonzeros' counts the entries of J that are not zero at seed 000's pose.")) return {};
   show_over_modelling(session, model, row_of(cycle_rows, "full"));
 
+  if (!session.begin_step("The driving torque: Lagrange multipliers against virtual work",
+                          "four-bar.toml with a torque of -10 on its rocker and 2 kg at B ([[load]] tables). The torque "
+                          "the crank must apply to hold each pose still comes from one more linear solve with the "
+                          "Jacobian already at hand: J^T lambda = Q, Q the loads as forces on the joints, and the driver's "
+                          "load is lambda . Phi_t. Virtual work says the same from the velocities (tau + sum F . v_J = 0 "
+                          "per radian), and so does the slope of the loads' potential V = -sum F . r_J - T theta, "
+                          "differenced from positions solved at theta +- 1e-4 rad.")) return {};
+  const bool torque_agrees = show_driving_torque(session);
+
   const bool cycles_converged = std::all_of(cycle_rows.begin(), cycle_rows.end(),
                                             [](const CycleRow& r) { return r.status == Status::converged; });
-  return cycles_converged && sweep.status == Status::converged && derivatives_solved && limit_found && crossing_followed
+  return cycles_converged && sweep.status == Status::converged && derivatives_solved && limit_found && crossing_followed &&
+                 torque_agrees
              ? exit_success
              : exit_method_failed;
 }

@@ -160,4 +160,20 @@ std::string crossing_sentence(const CrossingPassage& c) {
   return text + ".";
 }
 
+std::string driving_torque_sentence(const std::vector<DrivingTorqueRow>& rows) {
+  double work = 0.0, potential = 0.0, low = INFINITY, high = -INFINITY, largest = 0.0, at = 0.0;
+  for (const DrivingTorqueRow& r : rows) {
+    work = std::max(work, std::abs(r.multipliers - r.virtual_work) / r.scale);
+    potential = std::max(potential, std::abs(r.multipliers - r.potential) / r.scale);
+    low = std::min(low, r.multipliers), high = std::max(high, r.multipliers);
+    if (std::abs(r.multipliers) > largest) largest = std::abs(r.multipliers), at = r.crank_deg;
+  }
+  return fmt::format("At these {} poses the driver torque from one more linear solve with J (J^T lambda = Q, tau = lambda . "
+                     "Phi_t) is the virtual work's -sum F . v_J to {:.2g} and the central difference of the loads' "
+                     "potential to {:.2g}, both relative to the loads' terms: the multipliers are the constraint forces, and "
+                     "the driver's own multiplier is the torque. Over these poses it runs from {:.4g} to {:.4g} N x length "
+                     "unit, largest in size at crank {:g} deg.",
+                     rows.size(), work, potential, low, high, at);
+}
+
 }  // namespace numlab::cli

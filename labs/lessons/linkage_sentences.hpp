@@ -86,4 +86,15 @@ struct ModelCost {
 // rows: the 10-equation model, the 8-equation model, the derived model, in that order.
 std::string over_modelling_sentence(const std::vector<ModelCost>& rows);
 
+// Step 8: the driving torque three ways at a few poses.
+struct DrivingTorqueRow {
+  double crank_deg;
+  double multipliers;        // tau = lambda . Phi_t, J^T lambda = Q
+  double virtual_work;       // -(sum F . v_J) per radian
+  double potential;          // dV/dtheta, central difference of the loads' potential
+  double scale;              // sum of |F . v_J|: the size the differences are read against
+};
+// How far the three agree (relative to the loads' terms), and the torque's range over the rows.
+std::string driving_torque_sentence(const std::vector<DrivingTorqueRow>& rows);
+
 }  // namespace numlab::cli

@@ -224,6 +224,25 @@ TEST_CASE("Linkage lab: every sentence is made from the tables the same run save
     // The distances named, each from its row.
     check_rounded(number_after(text, "the worst joint distance from seed 000's closed form is "), number(ten[column(rows, "distance from seed 000")]), 2);
   }
+
+  {  // step 8: the driving torque three ways; the sentence's agreements and range from the table
+    const auto rows = lab.table("step8-driving-torque.csv");
+    REQUIRE(rows.size() == 9);  // every 45 deg of a turn
+    const std::size_t tau = column(rows, "tau by multipliers");
+    double work = 0.0, potential = 0.0, low = INFINITY, high = -INFINITY;
+    for (std::size_t r = 1; r < rows.size(); ++r) {
+      work = std::max(work, number(rows[r][3]));
+      potential = std::max(potential, number(rows[r][5]));
+      low = std::min(low, number(rows[r][tau])), high = std::max(high, number(rows[r][tau]));
+      // Multipliers and virtual work are one torque to rounding; the potential's slope to the solver's tolerance.
+      CHECK(number(rows[r][3]) < 1e-12);
+      CHECK(number(rows[r][5]) < 1e-6);
+    }
+    CHECK_THAT(text, Contains(fmt::format("At these {} poses the driver torque", rows.size() - 1)));
+    check_rounded(number_after(text, "is the virtual work's -sum F . v_J to "), work, 2);
+    check_rounded(number_after(text, "central difference of the loads' potential to "), potential, 2);
+    CHECK_THAT(text, Contains(fmt::format("runs from {:.4g} to {:.4g} N x length unit", low, high)));
+  }
 }
 
 TEST_CASE("Linkage sentences: a Newton block, a slower sequential solve, a limit that is no fold", "[labs][sentences]") {
