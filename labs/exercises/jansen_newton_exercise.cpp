@@ -125,7 +125,7 @@ Exercise jansen_newton_exercise() {
     return std::vector<Check>{
         {"Newton reaches the closed-form pose at every 10 degrees of the crank cycle, within 2 ||J^-1|| (tolerance + "
          "rounding)",
-         1, [cycle, exact](Session& s) { return Battery::converges_to(s, cycle, exact); }},
+         1, [cycle = cycle, exact = exact](Session& s) { return Battery::converges_to(s, cycle, exact); }},
         {"A 'converged' status is backed by ||f(theta)||_inf <= tolerance, and max_iterations is kept", 2,
          [requests = honest_requests(variant, leg)](Session& s) { return Battery::honest(s, requests); }},
         {"The trace follows numlab's Newton from the same start, iteration by iteration", 3,

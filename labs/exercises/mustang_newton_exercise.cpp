@@ -242,7 +242,7 @@ Exercise mustang_newton_exercise() {
     return std::vector<Check>{
         {"Newton reaches the closed-form pose across the assembly range, near both limits, within 2 ||J^-1|| "
          "(tolerance + rounding)",
-         1, [range, exact](Session& s) { return Battery::converges_to(s, range, exact); }},
+         1, [range = range, exact = exact](Session& s) { return Battery::converges_to(s, range, exact); }},
         {fmt::format("No 'converged' status beyond the assembly limits ({:.2f} deg, {:.2f} deg), where no root exists",
                      linkage.lower_deg, linkage.upper_deg),
          2, [angles = beyond_limits(variant, linkage), linkage](Session& s) { return no_assembly(s, angles, linkage); }},
