@@ -174,7 +174,7 @@ std::vector<Detector> linkage_J_detectors(const LinkageModel& model, const std::
                                             "= d f[{0}] / d {2} ({3})",
                                             row, col, model.column_name(col), model.row_name(row));
                        }});
-  detectors.push_back({"derivative_sign", Specificity::exact, [&model, &samples, all]() -> Evidence {
+  detectors.push_back({"derivative_sign", Specificity::exact, [&model, all]() -> Evidence {
                          int row = -1, col = -1;
                          const bool holds = all([&](const LinkageClosureSample& s, double tolerance) {
                            for (int i = 0; i < s.J.rows(); ++i) {
