@@ -77,24 +77,13 @@ std::vector<Pose> poses(const Variant& variant, const mechanisms::JansenLeg& leg
                         [&leg](double crank_angle) { return jansen10_closed_form_angles(crank_angle, leg); });
 }
 
-// The poses and the leg's lengths (a variant's, or seed 000's).
-struct Battery {
-  JansenVariant lengths;
-  std::vector<Pose> list;
-  Jansen10Closure closure(double crank_angle) const { return Jansen10Closure(crank_angle, lengths.links, lengths.foot); }
-};
+using Battery = JacobianBattery<Pose>;
 
-Battery battery_for(const Variant& variant) {
-  Battery battery;
-  battery.lengths = jansen_variant_for_poses(variant, true, poses);
-  battery.list = poses(variant, battery.lengths.leg());
-  return battery;
-}
+Battery battery_for(const Variant& variant) { return jacobian_battery<Pose>(variant, true, poses); }
 
-nlohmann::json request_for(const Pose& pose, const JansenVariant& lengths) {
-  nlohmann::json request = {{"crank_angle", pose.crank_angle}, {"theta", to_json(Eigen::VectorXd(pose.theta))}};
-  lengths.add_to(request);
-  return request;
+// The 10-equation closure with the battery's lengths at `crank_angle`.
+Jansen10Closure closure_at(const Battery& battery, double crank_angle) {
+  return Jansen10Closure(crank_angle, battery.lengths.links, battery.lengths.foot);
 }
 
 std::string pose_text(const Pose& pose) {
@@ -103,7 +92,7 @@ std::string pose_text(const Pose& pose) {
 }
 
 std::vector<ReferenceTime> closure_time(const Pose& pose, const Battery& battery) {
-  return {{"numlab Jansen10Closure (f and J)", residual_and_jacobian_seconds(battery.closure(pose.crank_angle), pose.theta)}};
+  return {{"numlab Jansen10Closure (f and J)", residual_and_jacobian_seconds(closure_at(battery, pose.crank_angle), pose.theta)}};
 }
 
 // Rows 0, 1, 6 and 7 start from P1->A = (b + li cos theta2, a + li sin theta2): one of them off by
@@ -136,9 +125,9 @@ Verdict check_f(Session& session, const Battery& battery) {
   const mechanisms::JansenLengths& L = battery.lengths.links;
   const double tolerance = 1e3 * eps * links_sum(battery.lengths);  // far above rounding, far below any wrong term
   for (const Pose& pose : list) {
-    const nlohmann::json reply = session.ask(request_for(pose, battery.lengths));
+    const nlohmann::json reply = session.ask(jacobian_request(pose, battery.lengths));
     Jansen10Closure::Vector expected;
-    battery.closure(pose.crank_angle).residual(pose.theta, expected);
+    closure_at(battery, pose.crank_angle).residual(pose.theta, expected);
     session.expect({pose_text(pose), {{"f", to_json(Eigen::VectorXd(expected))}},
                     fmt::format("each f[i] within {} of numlab's Jansen10Closure above", sci(tolerance))});
     const Eigen::VectorXd f = vector_field(reply, "f", 10);
@@ -197,7 +186,7 @@ std::string length_hint(double used, int col, const JansenVariant& lengths) {
 
 std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, const Pose& pose, int row, int col,
                    double tolerance, const Battery& battery) {
-  if (const auto angle = column_from_angle(battery.closure(pose.crank_angle), got, pose.theta, col, tolerance)) {
+  if (const auto angle = column_from_angle(closure_at(battery, pose.crank_angle), got, pose.theta, col, tolerance)) {
     return fmt::format("column {} (d/d {}) is evaluated at {}: a column from the wrong angle", col, angle_name(col),
                        angle_name(*angle));
   }
@@ -216,8 +205,8 @@ std::string J_hint(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, 
 Verdict check_J(Session& session, const Battery& battery) {
   const std::vector<Pose>& list = battery.list;
   for (const Pose& pose : list) {
-    const nlohmann::json reply = session.ask(request_for(pose, battery.lengths));
-    const Jansen10Closure closure = battery.closure(pose.crank_angle);
+    const nlohmann::json reply = session.ask(jacobian_request(pose, battery.lengths));
+    const Jansen10Closure closure = closure_at(battery, pose.crank_angle);
     Jansen10Closure::Matrix expected;
     closure.jacobian(pose.theta, expected);
     // J's entries are at most a link long; rounding in them is a few eps of that.

@@ -38,24 +38,9 @@ std::vector<Pose> poses(const Variant& variant, const mechanisms::JansenLeg& leg
                         [&leg](double crank_angle) { return jansen_closed_form_angles(crank_angle, leg); });
 }
 
-// The poses and the leg's lengths (a variant's, or seed 000's).
-struct Battery {
-  JansenVariant lengths;
-  std::vector<Pose> list;
-};
+using Battery = JacobianBattery<Pose>;
 
-Battery battery_for(const Variant& variant) {
-  Battery battery;
-  battery.lengths = jansen_variant_for_poses(variant, false, poses);
-  battery.list = poses(variant, battery.lengths.leg());
-  return battery;
-}
-
-nlohmann::json request_for(const Pose& pose, const JansenVariant& lengths) {
-  nlohmann::json request = {{"crank_angle", pose.crank_angle}, {"theta", to_json(Eigen::VectorXd(pose.theta))}};
-  lengths.add_to(request);
-  return request;
-}
+Battery battery_for(const Variant& variant) { return jacobian_battery<Pose>(variant, false, poses); }
 
 std::string pose_text(const Pose& pose) {
   return fmt::format("crank_angle {:.4f} rad, theta = [{:.4f}]", pose.crank_angle,
@@ -97,7 +82,7 @@ Verdict check_f(Session& session, const Battery& battery) {
   const mechanisms::JansenLengths& L = battery.lengths.links;
   const double tolerance = f_tolerance(L);
   for (const Pose& pose : list) {
-    const nlohmann::json reply = session.ask(request_for(pose, battery.lengths));
+    const nlohmann::json reply = session.ask(jacobian_request(pose, battery.lengths));
     JansenClosure::Vector expected;
     JansenClosure(pose.crank_angle, L).residual(pose.theta, expected);
     session.expect({pose_text(pose), {{"f", to_json(Eigen::VectorXd(expected))}},
@@ -143,7 +128,7 @@ Verdict check_J(Session& session, const Battery& battery) {
   const std::vector<Pose>& list = battery.list;
   const mechanisms::JansenLengths& L = battery.lengths.links;
   for (const Pose& pose : list) {
-    const nlohmann::json reply = session.ask(request_for(pose, battery.lengths));
+    const nlohmann::json reply = session.ask(jacobian_request(pose, battery.lengths));
     JansenClosure::Matrix expected;
     JansenClosure(pose.crank_angle, L).jacobian(pose.theta, expected);
     // J's entries are at most a link long; rounding in them is a few eps of that.

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "exercises/reply_fields.hpp"
 #include "exercises/variant.hpp"
 #include "exercises/variant_lengths.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
@@ -54,6 +55,27 @@ JansenVariant jansen_variant_for_poses(const Variant& variant, bool with_foot, P
       return false;
     }
   });
+}
+// A Jacobian exercise's battery: the leg's lengths (a variant's, or seed 000's) and the poses
+// `poses(variant, leg)` builds on that leg.
+template <typename Pose>
+struct JacobianBattery {
+  JansenVariant lengths;
+  std::vector<Pose> list;
+};
+template <typename Pose, typename Poses>
+JacobianBattery<Pose> jacobian_battery(const Variant& variant, bool with_foot, Poses poses) {
+  JacobianBattery<Pose> battery;
+  battery.lengths = jansen_variant_for_poses(variant, with_foot, poses);
+  battery.list = poses(variant, battery.lengths.leg());
+  return battery;
+}
+// One pose's request, {crank_angle, theta}, with the leg's `lengths` when they are varied.
+template <typename Pose>
+nlohmann::json jacobian_request(const Pose& pose, const JansenVariant& lengths) {
+  nlohmann::json request = {{"crank_angle", pose.crank_angle}, {"theta", to_json(Eigen::VectorXd(pose.theta))}};
+  lengths.add_to(request);
+  return request;
 }
 // A wrong_link detector's evidence: under a varied leg, the student's f equals `seed_f` (numlab's f
 // with seed 000's lengths) to `tolerance`. Nothing otherwise.
