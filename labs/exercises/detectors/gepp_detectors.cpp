@@ -111,6 +111,20 @@ struct Case {
   GeppRun reference;
 };
 
+// Whether the student's trace records the pivots `run` takes: the same row and pivot at every
+// column it eliminates, and, when the run stops as singular, optionally the stopped column too
+// (its row, and a pivot as negligible as the run's).
+bool same_columns(const std::vector<GeppTraceEntry>& trace, const GeppRun& run, const Case& c) {
+  const double n = static_cast<double>(c.A.rows());
+  const bool with_stop = run.singular && trace.size() == run.rows.size() + 1;
+  if (trace.size() != run.rows.size() && !with_stop) return false;
+  for (std::size_t k = 0; k < run.rows.size(); ++k) {
+    const double tolerance = std::max(1e-6 * std::abs(run.pivots[k]), 100.0 * n * eps * run.growth * c.scale);
+    if (trace[k].row != run.rows[k] || !(std::abs(trace[k].pivot - run.pivots[k]) <= tolerance)) return false;
+  }
+  return !with_stop || (trace.back().row == run.stopped_row && std::abs(trace.back().pivot) <= c.negligible);
+}
+
 // Whether `run` explains the student's answer, and in which words; "" when it does not.
 std::string explanation(const Case& c, const GeppRun& run, const GeppAnswer& answer) {
   const double n = static_cast<double>(c.A.rows());
@@ -119,7 +133,7 @@ std::string explanation(const Case& c, const GeppRun& run, const GeppAnswer& ans
   bool distinguishes = false;
   if (answer.singular != run.singular) return "";
   if (answer.singular) {
-    if (answer.trace && answer.trace->size() != run.rows.size()) return "";
+    if (answer.trace && !same_columns(*answer.trace, run, c)) return "";
     if (!reference.singular) {
       distinguishes = true;
       parts.push_back(fmt::format("it stops as singular at column {} (|a_kk| = {} <= n*eps*max|a_ij| = {}) as you do, "
@@ -144,12 +158,8 @@ std::string explanation(const Case& c, const GeppRun& run, const GeppAnswer& ans
   }
   if (answer.trace && !run.rows.empty()) {
     const std::vector<GeppTraceEntry>& trace = *answer.trace;
-    if (trace.size() != run.rows.size()) return "";
-    for (std::size_t k = 0; k < trace.size(); ++k) {
-      const double tolerance = std::max(1e-6 * std::abs(run.pivots[k]), 100.0 * n * eps * run.growth * c.scale);
-      if (trace[k].row != run.rows[k] || !(std::abs(trace[k].pivot - run.pivots[k]) <= tolerance)) return "";
-    }
-    for (std::size_t k = 0; k < trace.size() && k < reference.rows.size(); ++k) {
+    if (!same_columns(trace, run, c)) return "";
+    for (std::size_t k = 0; k < run.rows.size() && k < reference.rows.size(); ++k) {
       if (reference.rows[k] != run.rows[k]) {
         const Eigen::VectorXd& candidates = reference.candidates[k];
         const auto at = [&](long long row) { return measured(std::abs(candidates(row - static_cast<long long>(k)))); };
@@ -193,6 +203,7 @@ GeppRun replay_gepp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, GeppMist
       run.singular = true;
       run.stopped_column = k;
       run.stopped_pivot = a(k, k);
+      run.stopped_row = p;
       return run;
     }
     run.rows.push_back(p);

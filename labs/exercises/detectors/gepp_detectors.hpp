@@ -32,6 +32,7 @@ struct GeppRun {
   bool singular = false;
   int stopped_column = -1;                // where |pivot| <= n*eps*max|a_ij| stopped it, when singular
   double stopped_pivot = 0.0;             // a_kk there, after the swap
+  int stopped_row = -1;                   // the row it took as the pivot there
   std::vector<int> rows;                  // the pivot row at each column (0-based, before the swap)
   std::vector<double> pivots;             // a_kk after the swap
   std::vector<Eigen::VectorXd> candidates;  // a_ik, i = k ... n-1, before the swap

@@ -77,6 +77,15 @@ TEST_CASE("gepp detectors: each replayed mistake is named by its own cause") {
   };
   CHECK(cause(d::GeppMistake::no_pivoting, false, true) == "no_pivoting");
   CHECK(cause(d::GeppMistake::no_pivoting, true, false) == "no_pivoting");  // "singular" at a_00 = 1e-20
+  // The same "singular" with a trace that records the column where it stopped (row 0, pivot 1e-20),
+  // as tests/exercises/mutants/.../gepp_no_pivoting.py does, and without that column.
+  const d::GeppRun stopped = d::replay_gepp(T, ones, d::GeppMistake::no_pivoting);
+  REQUIRE((stopped.singular && stopped.stopped_column == 0 && stopped.stopped_row == 0));
+  d::GeppAnswer recorded = gepp_answer(stopped);
+  recorded.trace->push_back({stopped.stopped_row, stopped.stopped_pivot});
+  CHECK(gepp_cause(T, ones, recorded) == "no_pivoting");
+  recorded.trace->back().pivot = 1.0;  // not the pivot it stopped at: no longer its trace
+  CHECK(gepp_cause(T, ones, recorded) != "no_pivoting");
   CHECK(cause(d::GeppMistake::signed_pivot, true, true) == "signed_pivot");
   CHECK(cause(d::GeppMistake::inverted_multiplier, false, true) == "inverted_multiplier");
   CHECK(cause(d::GeppMistake::inverted_multiplier, false, false) == "inverted_multiplier");
