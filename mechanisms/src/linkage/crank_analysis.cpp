@@ -1,16 +1,14 @@
 #include "numlab/mechanisms/linkage/crank_analysis.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-
-#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "crank_roots.hpp"
 #include "numlab/mechanisms/linkage/link_motion.hpp"
-#include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 
 namespace numlab::mechanisms {
 
@@ -80,7 +78,13 @@ struct Structure {
 
 Structure find_structure(const LinkageDescription& d, const std::vector<Member>& m) {
   Structure s;
-  if (d.driver.kind != DriverKind::crank) return {.problem = "not a four-bar: it is driven by a slider, not a crank"};
+  if (d.driver.kind != DriverKind::crank) {
+    constexpr const char* kinds[] = {"a crank", "a slider", "an actuator", "a motor"};
+    return {.problem = std::string("not a four-bar: it is driven by ") + kinds[static_cast<int>(d.driver.kind)] + ", not a crank"};
+  }
+  if (std::any_of(d.sliders.begin(), d.sliders.end(), [](const SliderSpec& slider) { return slider.on_link(); })) {
+    return {.problem = "not a four-bar or slider-crank: a slider runs on a moving link"};
+  }
   s.O = d.driver.pivot, s.A = d.driver.joint;
   const std::size_t wanted = d.sliders.empty() ? 3 : 2;
   if (d.sliders.size() > 1) return {.problem = "not a four-bar: " + std::to_string(d.sliders.size()) + " sliders"};
@@ -116,61 +120,7 @@ Structure find_structure(const LinkageDescription& d, const std::vector<Member>&
   return s;
 }
 
-// A pose at driver t (radians) solved from q0 and polished by Newton to rounding: the roots are
-// asked to 1e-10 rad, finer than the sweep's tolerance.
-Eigen::VectorXd polished(const LinkageSolver& solver, double t, const Eigen::VectorXd& q0) {
-  const LinkageModel& model = solver.model();
-  Eigen::VectorXd q = solver.solve(t, q0).q, f;
-  Eigen::MatrixXd J;
-  for (int k = 0; k < 3; ++k) {
-    model.residual(q, t, f);
-    model.jacobian(q, t, J);
-    q -= Eigen::PartialPivLU<Eigen::MatrixXd>(J).solve(f);
-  }
-  return q;
-}
-
-// Brent's method (GSL) on f over [lo, hi] where f changes sign; the root to 1e-10 in x.
-double brent(const std::function<double(double)>& f, double lo, double hi, int& most_iterations) {
-  const double f_lo = f(lo), f_hi = f(hi);
-  if (f_lo == 0.0) return lo;
-  if (f_hi == 0.0) return hi;
-  if ((f_lo < 0.0) == (f_hi < 0.0)) return nan;  // the sign change did not survive the polish: no root
-  gsl_set_error_handler_off();  // GSL's default handler aborts; a failure is a NaN here
-  gsl_function F;
-  F.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
-  F.params = const_cast<std::function<double(double)>*>(&f);
-  gsl_root_fsolver* s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  double root = nan;
-  if (gsl_root_fsolver_set(s, &F, lo, hi) == GSL_SUCCESS) {
-    for (int k = 1; k <= 200; ++k) {
-      if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
-      if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 1e-10, 0.0) == GSL_SUCCESS) {
-        root = gsl_root_fsolver_root(s);
-        most_iterations = std::max(most_iterations, k);
-        break;
-      }
-    }
-  }
-  gsl_root_fsolver_free(s);
-  return root;
-}
-
-// Roots of g over a full turn of the crank (radians), bracketed on a 1-degree grid.
-std::vector<double> roots_over_turn(const std::function<double(double)>& g, int& iterations) {
-  std::vector<double> roots;
-  const int n = 360;
-  double previous = g(0.0);
-  for (int k = 1; k <= n; ++k) {
-    const double lo = (k - 1) * 2.0 * pi / n, hi = k * 2.0 * pi / n, value = g(hi);
-    if ((previous < 0.0) != (value < 0.0) || value == 0.0) {
-      const double root = brent(g, lo, hi, iterations);
-      if (std::isfinite(root) && (roots.empty() || std::abs(root - roots.back()) > 1e-9)) roots.push_back(root);
-    }
-    previous = value;
-  }
-  return roots;
-}
+using crank_roots::half_turn_roots;
 
 // The closed form nearest to `found` among the candidates (degrees), or NaN.
 double nearest(double found, const std::vector<double>& candidates) {
@@ -189,9 +139,10 @@ class Analyser {
       : solver_(solver), model_(solver.model()), d_(model_.description()), lines_(link_lines(d_)) {
     members_ = members(d_);
     s_ = find_structure(d_, members_);
-    if (!output_name.empty()) {
-      const auto output = find_output(d_, output_name);
-      if (!output) throw std::invalid_argument("unknown output '" + output_name + "': name one of the " + output_choices(d_));
+    const std::string& name = output_name.empty() ? d_.output : output_name;  // --output, else the file's
+    if (!name.empty()) {
+      const auto output = find_output(d_, name);
+      if (!output) throw std::invalid_argument("unknown output '" + name + "': name one of the " + output_choices(d_));
       output_ = *output;
     }
   }
@@ -200,7 +151,12 @@ class Analyser {
     CrankAnalysis r;
     if (!s_.problem.empty()) {
       r.not_analysed = s_.problem;
-      return r;
+      if (d_.driver.kind != DriverKind::crank) return r;
+      if (output_.name.empty()) {
+        r.not_analysed += "; name an output (--output or the file's output) for its toggles and time ratio";
+        return r;
+      }
+      return crank_driven(r);
     }
     const auto P = [&](int j) { return d_.joints[static_cast<std::size_t>(j)].position; };
     r.crank_name = s_.crank->name;
@@ -220,13 +176,15 @@ class Analyser {
       const double angle = slider.angle_deg / degrees;
       const Eigen::Vector2d u(std::cos(angle), std::sin(angle)), w = slider.through - P(s_.O);
       r.ground = u.x() * w.y() - u.y() * w.x();  // the offset e: the line's signed distance from O
-      r.crank_turns_fully = r.crank + std::abs(r.ground) <= r.coupler;
-      r.classification = r.crank_turns_fully ? "the crank turns fully (r + |e| <= l)" : "the crank cannot turn fully (r + |e| > l)";
+      r.classification = r.crank + std::abs(r.ground) <= r.coupler ? "the crank turns fully (r + |e| <= l)"
+                                                                   : "the crank cannot turn fully (r + |e| > l)";
       if (output_.name.empty()) output_ = *find_output(d_, d_.joints[static_cast<std::size_t>(s_.B)].name);
     }
     r.output = output_.name;
+    r.output_is_angle = output_.angle();
     driver_toggles(r);
     output_toggles(r);
+    add_closed_forms(r);
     time_ratio(r);
     r.brent_iterations = iterations_;
     return r;
@@ -234,6 +192,37 @@ class Analyser {
 
  private:
   Eigen::Vector2d ground(int j) const { return d_.joints[static_cast<std::size_t>(j)].position; }
+  double reference() const { return model_.driver_to_user(solver_.reference_driver()); }
+
+  // Any other crank-driven mechanism, by its output alone: the crank a turn from the reference pose
+  // (it turns fully when every pose of the turn assembles), the output's toggles over it, the time ratio.
+  CrankAnalysis crank_driven(CrankAnalysis& r) {
+    r.kind = "crank-driven";
+    r.output = output_.name;
+    r.output_is_angle = output_.angle();
+    for (const Member& m : members_) {
+      if (m.has(d_.driver.pivot) && m.has(d_.driver.joint)) r.crank_name = m.name, r.crank = m.distance(d_.driver.pivot, d_.driver.joint);
+    }
+    double reached = reference();
+    add_rate_roots(r, reference() + 360.0, reached);
+    r.crank_turns_fully = reached >= reference() + 360.0 - 1e-9;
+    if (r.crank_turns_fully) {
+      r.classification = "the crank turns fully (every pose of a turn assembles)";
+    } else {
+      const double upper = reached;
+      add_rate_roots(r, reference() - 360.0, reached);
+      r.classification = fmt_range(reached, upper);
+    }
+    sort(r.output_toggles);
+    for (Toggle& t : r.output_toggles) t.what = standing_text;
+    time_ratio(r);
+    r.brent_iterations = iterations_;
+    return r;
+  }
+
+  static std::string fmt_range(double lo, double hi) {
+    return fmt::format("the crank does not turn fully: from the reference pose it assembles from {:.6f} to {:.6f} deg", lo, hi);
+  }
 
   void classify(CrankAnalysis& r) const {
     const std::pair<double, const char*> links[] = {{r.crank, "crank"}, {r.ground, "ground"}, {r.rocker, "rocker"}, {r.coupler, "coupler"}};
@@ -258,22 +247,28 @@ class Analyser {
     }
   }
 
-  // The crank's own dead centres: the coupler and rocker in line, |AQ| = b + c or |b - c|.
+  // The crank's own dead centres, where it cannot turn on. The velocity ratio is infinite there (a
+  // fold: no pose past it), so the root is taken of a smooth function of the crank angle t instead.
   void driver_toggles(CrankAnalysis& r) {
+    const double flat = 1e-12 * std::max({r.crank, r.coupler, r.rocker, std::abs(r.ground)});
     if (s_.rocker == nullptr) {
-      // The rod normal to the line: |e - r sin| = l, which needs r + |e| >= l.
-      // The rod's end S is e - r sin(t - beta) from the line through A parallel to the slider's.
-      const auto g = [&](double sign) {
-        return [&, sign](double t) { return sign * (r.ground - r.crank * std::sin(t - slider_angle())) - r.coupler; };
-      };
-      for (double sign : {1.0, -1.0}) {
-        for (double t : roots_over_turn(g(sign), iterations_)) {
-          r.driver_toggles.push_back(toggle_at(wrap_degrees(t * degrees), nan, rod_normal_text));
+      // 1. Slider-crank: the rod normal to the line, h(t) = e - r sin(t - beta) = +-l (h: the line's
+      //    distance from A), monotone on the half-turns from beta - 90 deg; sin(t - beta) = (e -+ l) / r.
+      const double beta = slider_angle();
+      for (const double h : {r.coupler, -r.coupler}) {
+        const auto g = [&, h](double t) { return r.ground - r.crank * std::sin(t - beta) - h; };
+        const double s = (r.ground - h) / r.crank, phi = std::abs(s) <= 1.0 ? std::asin(s) : nan;
+        for (double t : half_turn_roots(g, beta - pi / 2.0, flat, iterations_)) {
+          const double found = wrap_degrees(t * degrees);
+          r.driver_toggles.push_back(toggle_at(found, nearest(found, {(beta + phi) * degrees, (beta + pi - phi) * degrees}), rod_normal_text));
         }
       }
       sort(r.driver_toggles);
+      r.crank_turns_fully = r.driver_toggles.empty();
       return;
     }
+    // 2. Four-bar: |AQ(t)| = b + c (extended) or |b - c| (folded); |AQ|^2 = a^2 + d^2 - 2ad cos(t - gamma)
+    //    grows on [gamma, gamma + pi] and falls on [gamma + pi, gamma + 2 pi]: one bracket each.
     const Eigen::Vector2d O = ground(s_.O), Q = ground(s_.Q);
     const double gamma = std::atan2(Q.y() - O.y(), Q.x() - O.x());
     static const std::string coupler_rocker[] = {"coupler and rocker extended in line", "coupler and rocker folded in line"};
@@ -282,9 +277,10 @@ class Analyser {
       const auto g = [&, length = length](double t) {
         return (O + r.crank * Eigen::Vector2d(std::cos(t), std::sin(t)) - Q).norm() - length;
       };
+      // 3. Beside each root, the law of cosines: cos(t - gamma) = (a^2 + d^2 - L^2) / 2ad.
       const double c = (r.crank * r.crank + r.ground * r.ground - length * length) / (2.0 * r.crank * r.ground);
       const double phi = std::abs(c) <= 1.0 ? std::acos(c) : nan;
-      for (double t : roots_over_turn(g, iterations_)) {
+      for (double t : half_turn_roots(g, gamma, flat, iterations_)) {
         const double found = wrap_degrees(t * degrees);
         r.driver_toggles.push_back(toggle_at(found, nearest(found, {(gamma + phi) * degrees, (gamma - phi) * degrees}), *what));
       }
@@ -295,49 +291,53 @@ class Analyser {
 
   double slider_angle() const { return d_.sliders[0].angle_deg / degrees; }
 
-  // The output's rate d(output)/d(crank) at a pose.
-  double rate(double t, const Eigen::VectorXd& q) const {
-    const auto joints = joint_motions(model_, q, linkage_velocity(model_, t, q), Eigen::VectorXd());
-    return output_rate(output_, lines_, joints);
+  // The output's toggles from `reference()` towards `stop` (user degrees), added to r.output_toggles.
+  void add_rate_roots(CrankAnalysis& r, double stop, double& reached) {
+    for (const crank_roots::RateRoot& root : crank_roots::rate_roots_over_sweep(solver_, output_, reference(), stop, iterations_, reached)) {
+      add_output_toggle(r, wrap_degrees(root.crank_deg), root.q);
+    }
   }
 
-  // Where the output's rate changes sign over the reference branch: a sweep each way from the
-  // reference pose (a full turn, or up to the crank's own toggles), then Brent on each bracket.
+  // Where the output's rate changes sign on the reference branch: a turn from the reference pose, or
+  // when the crank does not turn fully, each way up to its nearest toggle (no pose lies past it).
   void output_toggles(CrankAnalysis& r) {
-    const double reference = model_.driver_to_user(solver_.reference_driver());
-    for (const double stop : {reference + 360.0, reference - 360.0}) {
-      if (r.crank_turns_fully && stop < reference) break;  // one turn covers it
-      const LinkageSweep sweep = linkage_sweep(solver_, reference, stop, stop > reference ? 1.0 : -1.0);
-      const LinkagePose* previous = nullptr;
-      double previous_rate = nan;
-      for (const LinkagePose& pose : sweep.poses) {
-        if (pose.outcome.status != Status::converged || pose.velocity.size() == 0) break;
-        const double t = model_.driver_from_user(pose.driver), value = rate(t, pose.q);
-        if (previous != nullptr && ((previous_rate < 0.0) != (value < 0.0))) {
-          const Eigen::VectorXd start = previous->q;
-          const auto f = [&](double x) { return rate(x, polished(solver_, x, start)); };
-          const double t0 = model_.driver_from_user(previous->driver);
-          const double root = brent(f, std::min(t0, t), std::max(t0, t), iterations_);
-          if (std::isfinite(root)) add_output_toggle(r, wrap_degrees(model_.driver_to_user(root)), polished(solver_, root, start));
-        }
-        previous = &pose, previous_rate = value;
+    double reached = 0.0;
+    if (r.crank_turns_fully) {
+      add_rate_roots(r, reference() + 360.0, reached);
+    } else {
+      double up = reference() + 360.0, down = reference() - 360.0;
+      for (const Toggle& t : r.driver_toggles) {
+        up = std::min(up, reference() + wrap_degrees(t.crank_deg - reference()));
+        down = std::max(down, reference() - wrap_degrees(reference() - t.crank_deg));
       }
+      add_rate_roots(r, up, reached);
+      add_rate_roots(r, down, reached);
     }
     sort(r.output_toggles);
-    add_closed_forms(r);
   }
 
-  // A toggle at `found` degrees, the pose q there: crank and coupler (rod) extended or folded.
+  // A toggle at `found` degrees, the pose q there: the output's value, and for a four-bar or
+  // slider-crank whether crank and coupler (rod) are extended or folded.
   void add_output_toggle(CrankAnalysis& r, double found, const Eigen::VectorXd& q) const {
     for (const Toggle& t : r.output_toggles) {
       if (std::abs(wrap_degrees(t.crank_deg - found + 180.0) - 180.0) < 1e-7) return;  // the turn's two ends
     }
-    const Eigen::Vector2d O = ground(s_.O);
-    const Eigen::Vector2d A = model_.positions(q)[static_cast<std::size_t>(s_.A)], B = model_.positions(q)[static_cast<std::size_t>(s_.B)];
-    const bool extended = (A - O).dot(B - A) > 0.0;
-    r.output_toggles.push_back(toggle_at(found, nan, extended ? extended_text : folded_text, extended));
+    const JointPositions p = model_.positions(q);
+    Toggle toggle = toggle_at(found, nan, standing_text);
+    if (output_.angle()) {
+      const LinkLine& line = lines_[static_cast<std::size_t>(output_.line)];
+      const Eigen::Vector2d v = p[static_cast<std::size_t>(line.to)] - p[static_cast<std::size_t>(line.from)];
+      toggle.output_value = std::atan2(v.y(), v.x()) * degrees;
+    } else {
+      toggle.output_value = output_.direction.dot(p[static_cast<std::size_t>(output_.joint)]);
+    }
+    if (s_.problem.empty()) {
+      const Eigen::Vector2d O = ground(s_.O), A = p[static_cast<std::size_t>(s_.A)], B = p[static_cast<std::size_t>(s_.B)];
+      toggle.extended = (A - O).dot(B - A) > 0.0;
+      toggle.what = toggle.extended ? extended_text : folded_text;
+    }
+    r.output_toggles.push_back(toggle);
   }
-
 
   // The textbook's positions: crank and coupler (rod) extended or folded in line, for the default output.
   void add_closed_forms(CrankAnalysis& r) const {
@@ -367,11 +367,16 @@ class Analyser {
     }
   }
 
+  // Two toggles t0 < t1 of a crank that turns fully: the crank turns t1 - t0 from the first to the
+  // second and 360 - (t1 - t0) back; the slow stroke is the longer, time ratio slow / quick.
   void time_ratio(CrankAnalysis& r) const {
     if (!r.crank_turns_fully || r.output_toggles.size() != 2) return;
     const double stroke = wrap_degrees(r.output_toggles[1].crank_deg - r.output_toggles[0].crank_deg);
-    r.alpha_deg = std::abs(stroke - 180.0);
-    r.time_ratio = (180.0 + r.alpha_deg) / (180.0 - r.alpha_deg);
+    r.slow_stroke_deg = std::max(stroke, 360.0 - stroke);
+    r.quick_stroke_deg = 360.0 - r.slow_stroke_deg;
+    r.slow_stroke_start = stroke >= 180.0 ? 0 : 1;
+    r.alpha_deg = r.slow_stroke_deg - 180.0;
+    r.time_ratio = r.slow_stroke_deg / r.quick_stroke_deg;
     const double a = r.output_toggles[0].closed_form_deg, b = r.output_toggles[1].closed_form_deg;
     if (std::isfinite(a) && std::isfinite(b)) {
       const double alpha = std::abs(wrap_degrees(b - a) - 180.0);
