@@ -26,6 +26,9 @@ const char* kind_name(ConstraintKind kind) {
     case ConstraintKind::slider_line: return "slider_line";
     case ConstraintKind::crank: return "crank";
     case ConstraintKind::slider_travel: return "slider_travel";
+    case ConstraintKind::slider_on_line: return "slider_on_line";
+    case ConstraintKind::actuator: return "actuator";
+    case ConstraintKind::motor: return "motor";
   }
   return "";
 }
@@ -66,6 +69,18 @@ std::vector<std::string> row_formulas(const LinkageModel& model, const Constrain
     case ConstraintKind::slider_travel:
       return {fmt::format("{} * ({} - {}) + {} * ({} - {}) - t", number(c.direction.x()), x(0), number(c.point.x()),
                           number(c.direction.y()), y(0), number(c.point.y()))};
+    case ConstraintKind::slider_on_line:
+      return {fmt::format("(({2} - {1}) * ({5} - {4}) - ({6} - {4}) * ({0} - {1})) / sqrt(({2} - {1})^2 + ({6} - {4})^2) - {3}",
+                          x(0), x(1), x(2), number(c.offset), y(1), y(0), y(2))};
+    case ConstraintKind::actuator:
+      return {fmt::format("sqrt(({} - {})^2 + ({} - {})^2) - t", x(0), x(1), y(0), y(1))};
+    case ConstraintKind::motor: {
+      const std::string ux = fmt::format("({} - {})", x(1), x(0)), uy = fmt::format("({} - {})", y(1), y(0));
+      const std::string vx = fmt::format("({} - {})", x(2), x(0)), vy = fmt::format("({} - {})", y(2), y(0));
+      return {fmt::format("{0} * (({1} * {4} - {2} * {3}) * cos(t) - ({1} * {3} + {2} * {4}) * sin(t)) / "
+                          "sqrt(({1}^2 + {2}^2) * ({3}^2 + {4}^2))",
+                          number(c.length), ux, uy, vx, vy)};
+    }
   }
   return {};
 }
@@ -97,11 +112,13 @@ nlohmann::json linkage_model_json(const LinkageModel& model) {
     equations.push_back(std::move(equation));
   }
   const auto& driver = d.driver;
-  nlohmann::json driver_json = {{"type", model.crank_driven() ? "crank" : "slider"},
+  constexpr const char* types[] = {"crank", "slider", "actuator", "motor"};
+  nlohmann::json driver_json = {{"type", types[static_cast<int>(driver.kind)]},
                                 {"joint", joint_name(model, driver.joint)},
                                 {"reference", driver.reference},
                                 {"units", model.crank_driven() ? "degrees" : "length"}};
-  if (model.crank_driven()) driver_json["pivot"] = joint_name(model, driver.pivot);
+  if (driver.pivot >= 0) driver_json["pivot"] = joint_name(model, driver.pivot);
+  if (driver.from >= 0) driver_json["from"] = joint_name(model, driver.from);
   return {{"name", d.name}, {"joints", joints}, {"unknowns", unknowns}, {"driver", driver_json}, {"equations", equations}};
 }
 
@@ -119,7 +136,16 @@ std::string linkage_model_task(const LinkageModel& model) {
   text.back() = '.';
   text += "\n\n";
   const auto& driver = d.driver;
-  if (model.crank_driven()) {
+  if (driver.kind == mechanisms::DriverKind::actuator) {
+    text += fmt::format("**Driver:** an actuator: joints {} and {} are t apart (length units); a request's `driver` is "
+                        "t; the reference pose is at t = {}.\n\n",
+                        joint_name(model, driver.from), joint_name(model, driver.joint), number(driver.reference));
+  } else if (driver.kind == mechanisms::DriverKind::motor) {
+    text += fmt::format("**Driver:** a motor at joint {0}: the angle from {0}->{1} to {0}->{2} in **degrees** (t = driver * "
+                        "pi / 180 in the equations below); the reference pose is at {3} degrees.\n\n",
+                        joint_name(model, driver.pivot), joint_name(model, driver.from), joint_name(model, driver.joint),
+                        number(driver.reference));
+  } else if (model.crank_driven()) {
     text += fmt::format("**Driver:** a crank: joint {} turns about ground joint {}; a request's `driver` is the crank "
                         "angle in **degrees** (t = driver * pi / 180 in the equations below); the reference pose is "
                         "at {} degrees.\n\n",

@@ -23,7 +23,16 @@ const std::string& joint_name(const LinkageModel& model, int joint) {
   return model.description().joints[static_cast<std::size_t>(joint)].name;
 }
 
-std::string driver_column(const LinkageModel& model) { return model.crank_driven() ? "crank_deg" : "travel"; }
+// The driver's CSV column: crank_deg, travel (a slider driver), length (an actuator), motor_deg.
+std::string driver_column(const LinkageModel& model) {
+  switch (model.driver_kind()) {
+    case DriverKind::crank: return "crank_deg";
+    case DriverKind::slider: return "travel";
+    case DriverKind::actuator: return "length";
+    case DriverKind::motor: return "motor_deg";
+  }
+  return "travel";
+}
 
 bool converged(const LinkagePose& pose) { return pose.outcome.status == Status::converged; }
 
@@ -355,7 +364,7 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
   nlohmann::ordered_json out = {{"mechanism", r.model.description().name},
                                 {"title", r.model.description().title},
                                 {"solver", r.solver.options().solver},
-                                {"driver", r.model.crank_driven() ? "crank_deg" : "travel"},
+                                {"driver", driver_column(r.model)},
                                 {"poses", nlohmann::ordered_json::array()}};
   LinkageStaticsSolver statics(r.model);
   const auto supports = statics_supports(r.model.description());

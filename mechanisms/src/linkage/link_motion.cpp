@@ -69,14 +69,14 @@ AngularMotion angular_motion(const JointMotion& from, const JointMotion& to) {
 std::optional<LinkageOutput> find_output(const LinkageDescription& description, std::string_view name) {
   const auto lines = link_lines(description);
   for (std::size_t k = 0; k < lines.size(); ++k) {
-    if (lines[k].name == name) return LinkageOutput{lines[k].name, static_cast<int>(k), -1, -1, Eigen::Vector2d::UnitX()};
+    if (lines[k].name == name) return LinkageOutput{lines[k].name, static_cast<int>(k), -1, -1, Eigen::Vector2d::UnitX(), -1, -1};
   }
   for (std::size_t s = 0; s < description.sliders.size(); ++s) {
     const SliderSpec& slider = description.sliders[s];
     if (description.joints[static_cast<std::size_t>(slider.joint)].name == name) {
       const double angle = slider.angle_deg * std::acos(-1.0) / 180.0;
       return LinkageOutput{std::string(name), -1, static_cast<int>(s), slider.joint,
-                           {std::cos(angle), std::sin(angle)}};
+                           {std::cos(angle), std::sin(angle)}, slider.line_from, slider.line_to};
     }
   }
   return std::nullopt;
@@ -102,7 +102,14 @@ double output_rate(const LinkageOutput& output, const std::vector<LinkLine>& lin
     const LinkLine& line = lines[static_cast<std::size_t>(output.line)];
     return angular_motion(joints[static_cast<std::size_t>(line.from)], joints[static_cast<std::size_t>(line.to)]).omega;
   }
-  return output.direction.dot(joints[static_cast<std::size_t>(output.joint)].v);
+  const JointMotion& a = joints[static_cast<std::size_t>(output.joint)];
+  if (output.line_from < 0) return output.direction.dot(a.v);
+  const JointMotion& b = joints[static_cast<std::size_t>(output.line_from)];
+  const JointMotion& c = joints[static_cast<std::size_t>(output.line_to)];
+  const Eigen::Vector2d d = c.p - b.p, dd = c.v - b.v;
+  const double length = d.norm();
+  const Eigen::Vector2d w = d / length, dw = (dd - w * w.dot(dd)) / length;
+  return (a.v - b.v).dot(w) + (a.p - b.p).dot(dw);
 }
 
 double mechanical_advantage(double velocity_ratio) {

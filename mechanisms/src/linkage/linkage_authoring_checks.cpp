@@ -199,7 +199,9 @@ double mechanism_size(const LinkageDescription& d) {
 
 void check_driver_angles(const LinkageDescription& description) {
   if (description.driver.kind == DriverKind::crank) authoring::check_crank_angle(description);
-  for (const SliderSpec& slider : description.sliders) authoring::check_slider_angle(description, slider);
+  for (const SliderSpec& slider : description.sliders) {
+    if (!slider.on_link()) authoring::check_slider_angle(description, slider);  // a slot's line moves: no angle to check
+  }
 }
 
 Eigen::VectorXd polished_reference(const LinkageModel& model, const Eigen::VectorXd& start) {

@@ -328,6 +328,7 @@ class Reader {
     read_driver(table_of(*driver, "[driver]"));
     check_link_names();
     check_output();
+    if (const toml::node* trace = linkage->as_table()->get("trace")) read_trace(*trace);
     const auto lines = link_lines(description_);
     for_each_table("load", [&](const toml::table& t) { read_load(t, lines); });
     return std::move(description_);
@@ -432,7 +433,7 @@ class Reader {
   }
 
   void read_linkage(const toml::table& linkage) {
-    check_keys(linkage, {"name", "title", "output", "gravity"}, "[linkage]");
+    check_keys(linkage, {"name", "title", "output", "gravity", "trace"}, "[linkage]");
     if (const toml::node* gravity = linkage.get("gravity")) {
       description_.gravity = number_of(*gravity, "the linkage's gravity");
       if (description_.gravity < 0.0) {
@@ -470,6 +471,22 @@ class Reader {
         fail(line.place, std::string(line.body ? "body" : "link") + " name " + quoted(line.name) +
                              " is already the name of the link or body at line " + std::to_string(it->second));
       }
+    }
+  }
+
+  // `trace = ["P", ...]`: moving joints, each once, whose paths the drawing highlights.
+  void read_trace(const toml::node& node) {
+    const toml::array* names = node.as_array();
+    if (names == nullptr || names->empty()) fail(place_of(node), "trace must be a list of moving joints' names, e.g. [\"P\"]");
+    for (const toml::node& item : *names) {
+      const int joint = joint_of(item, "a trace entry");
+      if (description_.joints[static_cast<std::size_t>(joint)].ground) {
+        fail(place_of(item), "trace names the ground joint " + joint_name(joint) + ", which has no path: name a moving joint");
+      }
+      if (std::find(description_.trace.begin(), description_.trace.end(), joint) != description_.trace.end()) {
+        fail(place_of(item), "trace names " + joint_name(joint) + " twice");
+      }
+      description_.trace.push_back(joint);
     }
   }
 
@@ -593,12 +610,13 @@ class Reader {
     for (std::size_t k = 0; k < local->size(); ++k) {
       spec.local.push_back(point_of(*local->get(k), "local point " + std::to_string(k + 1)));
     }
-    check_body_shape(spec, place_of(local_node));
+    spec.collinear = check_body_shape(spec, place_of(local_node));
     description_.bodies.push_back(std::move(spec));
   }
 
-  // No two local points coincide, and not all lie on one line (both relative to the body's size).
-  void check_body_shape(const BodySpec& body, SourcePlace place) const {
+  // No two local points coincide (relative to the body's size). Returns whether all lie on one line:
+  // a bar with points on it or on its extension, rigid all the same.
+  bool check_body_shape(const BodySpec& body, SourcePlace place) const {
     const std::size_t n = body.local.size();
     double size = 0.0;
     std::size_t far_a = 0, far_b = 1;
@@ -630,13 +648,13 @@ class Reader {
       const Eigen::Vector2d r = p - body.local[far_a];
       height = std::max(height, std::abs(axis.x() * r.y() - axis.y() * r.x()));
     }
-    if (height <= tolerance) fail(place, "the local points of body " + quoted(body.name) + " lie on one line");
+    return height <= tolerance;
   }
 
   std::string joint_name(int index) const { return quoted(description_.joints[static_cast<std::size_t>(index)].name); }
 
   void read_slider(const toml::table& slider) {
-    check_keys(slider, {"joint", "through", "angle"}, "[[slider]]");
+    check_keys(slider, {"joint", "through", "angle", "line", "offset"}, "[[slider]]");
     SliderSpec spec;
     spec.place = place_of(slider);
     const toml::node& joint_node = required(slider, "joint", "[[slider]]");
@@ -650,12 +668,47 @@ class Reader {
                                        std::to_string(other.place.line));
       }
     }
-    spec.through = point_of(required(slider, "through", "[[slider]]"), "a slider's 'through' point");
+    const toml::node* through = slider.get("through");
+    const toml::node* line = slider.get("line");
+    if ((through == nullptr) == (line == nullptr)) {
+      fail(through != nullptr ? place_of(*line) : spec.place,
+           "a [[slider]] runs on a fixed line (through = [x, y]) or on a moving link's line (line = [\"B\", \"C\"]): "
+           "give one of the two");
+    }
     spec.angle_place = spec.place;
+    if (line != nullptr) return read_slider_on_link(slider, *line, spec);
+    if (const toml::node* offset = slider.get("offset")) {
+      fail(place_of(*offset), "a slider's offset goes with line = [\"B\", \"C\"]; a fixed line is placed by 'through'");
+    }
+    spec.through = point_of(*through, "a slider's 'through' point");
     if (const toml::node* angle = slider.get("angle")) {
       spec.angle_deg = number_of(*angle, "a slider's angle");
       spec.angle_place = place_of(*angle);
     }
+    description_.sliders.push_back(spec);
+  }
+
+  // [[slider]] with line = ["B", "C"]: the joint in a slot along the line of two joints of one link or
+  // body, `offset` to its left.
+  void read_slider_on_link(const toml::table& slider, const toml::node& line_node, SliderSpec& spec) {
+    if (const toml::node* angle = slider.get("angle")) {
+      fail(place_of(*angle), "a slider on a link runs along its line B -> C: 'angle' goes with 'through' only");
+    }
+    const toml::array* line = line_node.as_array();
+    if (line == nullptr || line->size() != 2) fail(place_of(line_node), "a slider's line must be two joint names, [\"B\", \"C\"]");
+    spec.line_from = joint_of(*line->get(0), "a slider's line joint");
+    spec.line_to = joint_of(*line->get(1), "a slider's line joint");
+    for (const toml::node* item : {line->get(0), line->get(1)}) {
+      if (joint_of(*item, "a slider's line joint") == spec.joint) {
+        fail(place_of(*item), "the slider's joint " + joint_name(spec.joint) + " cannot also define its line");
+      }
+    }
+    if (spec.line_from == spec.line_to) fail(place_of(line_node), "a slider's line needs two different joints");
+    if (!linked(spec.line_from, spec.line_to)) {
+      fail(place_of(line_node), "the slider's line " + joint_name(spec.line_from) + " -> " + joint_name(spec.line_to) +
+                                    " is not on one [[link]] or [[body]]: name two joints of the link that carries the slot");
+    }
+    if (const toml::node* offset = slider.get("offset")) spec.offset = number_of(*offset, "a slider's offset");
     description_.sliders.push_back(spec);
   }
 
@@ -716,9 +769,73 @@ class Reader {
     } else if (type == "slider") {
       check_keys(driver, {"type", "joint", "travel"}, "a slider [driver]");
       read_slider_driver(driver);
+    } else if (type == "actuator") {
+      check_keys(driver, {"type", "joints", "length"}, "an actuator [driver]");
+      read_actuator(driver);
+    } else if (type == "motor") {
+      check_keys(driver, {"type", "pivot", "from", "joint", "angle"}, "a motor [driver]");
+      read_motor(driver);
     } else {
-      fail(place_of(type_node), "unknown driver type " + quoted(type) + ": use \"crank\" or \"slider\"");
+      fail(place_of(type_node),
+           "unknown driver type " + quoted(type) + ": use \"crank\", \"slider\", \"actuator\" or \"motor\"");
     }
+  }
+
+  // An actuator: a driven distance between two joints that no link or body already holds apart.
+  void read_actuator(const toml::table& driver) {
+    DriverSpec& spec = description_.driver;
+    spec.kind = DriverKind::actuator;
+    const toml::node& joints_node = required(driver, "joints", "[driver]");
+    const toml::array* joints = joints_node.as_array();
+    if (joints == nullptr || joints->size() != 2) fail(place_of(joints_node), "an actuator's joints must be two joint names");
+    spec.from = joint_of(*joints->get(0), "an actuator's joint");
+    spec.joint = joint_of(*joints->get(1), "an actuator's joint");
+    if (spec.from == spec.joint) fail(place_of(joints_node), "an actuator from joint " + joint_name(spec.from) + " to itself");
+    if (description_.joints[static_cast<std::size_t>(spec.from)].ground &&
+        description_.joints[static_cast<std::size_t>(spec.joint)].ground) {
+      fail(place_of(joints_node), "an actuator between two ground joints cannot move anything");
+    }
+    if (linked(spec.from, spec.joint)) {
+      fail(place_of(joints_node), "an actuator between " + joint_name(spec.from) + " and " + joint_name(spec.joint) +
+                                      ", which a [[link]] or [[body]] already holds at a fixed distance");
+    }
+    const toml::node& length_node = required(driver, "length", "[driver]");
+    spec.reference = number_of(length_node, "the actuator's length");
+    spec.reference_place = place_of(length_node);
+    if (spec.reference <= 0.0) {
+      fail(place_of(length_node), "the actuator's length must be positive, got " + number_text(spec.reference));
+    }
+  }
+
+  // A motor: the angle from pivot -> from to pivot -> joint, the two on different links or bodies
+  // that share the pivot.
+  void read_motor(const toml::table& driver) {
+    DriverSpec& spec = description_.driver;
+    spec.kind = DriverKind::motor;
+    const toml::node& pivot_node = required(driver, "pivot", "[driver]");
+    spec.pivot = joint_of(pivot_node, "the motor's pivot");
+    const toml::node& from_node = required(driver, "from", "[driver]");
+    spec.from = joint_of(from_node, "the motor's 'from' joint");
+    const toml::node& joint_node = required(driver, "joint", "[driver]");
+    spec.joint = joint_of(joint_node, "the motor's joint");
+    for (const auto& [node, joint] : {std::pair{&from_node, spec.from}, std::pair{&joint_node, spec.joint}}) {
+      if (joint == spec.pivot) fail(place_of(*node), "the motor's pivot " + joint_name(spec.pivot) + " cannot also be its 'from' or 'joint'");
+      if (!linked(spec.pivot, joint)) {
+        fail(place_of(*node), "the motor's joint " + joint_name(joint) + " is on no [[link]] or [[body]] with pivot " +
+                                  joint_name(spec.pivot));
+      }
+    }
+    if (spec.from == spec.joint || linked(spec.from, spec.joint)) {
+      fail(place_of(joint_node), "the motor's 'from' " + joint_name(spec.from) + " and 'joint' " + joint_name(spec.joint) +
+                                     " are on one link or body: a motor turns one link against another");
+    }
+    if (description_.joints[static_cast<std::size_t>(spec.from)].ground &&
+        description_.joints[static_cast<std::size_t>(spec.pivot)].ground) {
+      fail(place_of(from_node), "a motor against the ground: pivot and 'from' are both ground joints; write type = \"crank\"");
+    }
+    const toml::node& angle_node = required(driver, "angle", "[driver]");
+    spec.reference = number_of(angle_node, "the motor's angle");
+    spec.reference_place = place_of(angle_node);
   }
 
   void read_crank(const toml::table& driver) {
@@ -764,6 +881,10 @@ class Reader {
                                      [&](const SliderSpec& s) { return s.joint == spec.joint; });
     if (slider == sliders.end()) {
       fail(place_of(joint_node), "joint " + joint_name(spec.joint) + " has no [[slider]] for the slider driver to move");
+    }
+    if (slider->on_link()) {
+      fail(place_of(joint_node), "joint " + joint_name(spec.joint) + " slides on a moving link: drive the distance with "
+                                     "type = \"actuator\" instead of a slider driver");
     }
     spec.slider = static_cast<int>(slider - sliders.begin());
     const toml::node& travel_node = required(driver, "travel", "[driver]");

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "linkage_joints.hpp"
+#include "linkage_rows.hpp"
 
 namespace numlab::mechanisms::detail {
 
@@ -26,11 +27,18 @@ Eigen::Vector2d rows_of(const LinkageModel& model, const Constraint& c, const Ei
     case ConstraintKind::slider_line: return {cross(c.direction, p(0) - c.point), 0.0};
     case ConstraintKind::crank: return p(1) - p(0) - c.length * crank_direction;
     case ConstraintKind::slider_travel: return {c.direction.dot(p(0) - c.point) - t, 0.0};
+    case ConstraintKind::slider_on_line: return {line_slot_row(p(0), p(1), p(2), c.offset).value, 0.0};
+    case ConstraintKind::actuator: return {(p(0) - p(1)).norm() - t, 0.0};
+    case ConstraintKind::motor: return {motor_row(p(0), p(1), p(2), t, c.length).value, 0.0};
   }
   return Eigen::Vector2d::Zero();
 }
 
-Eigen::Matrix2d partial_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, int joint) {
+Eigen::Matrix2d partial_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, double t, int joint) {
+  const auto p = [&](int slot) { return joint_at(model, q, c.joints[static_cast<std::size_t>(slot)]); };
+  const auto pick = [&](const Eigen::Vector2d& d0, const Eigen::Vector2d& d1, const Eigen::Vector2d& d2) {
+    return joint == c.joints[0] ? d0 : joint == c.joints[1] ? d1 : d2;
+  };
   Eigen::Matrix2d d = Eigen::Matrix2d::Zero();
   if (joint != c.joints[0] && joint != c.joints[1] && joint != c.joints[2]) return d;  // c does not read it
   switch (c.kind) {
@@ -50,6 +58,21 @@ Eigen::Matrix2d partial_of(const LinkageModel& model, const Constraint& c, const
     case ConstraintKind::slider_line: d.row(0) << -c.direction.y(), c.direction.x(); break;
     case ConstraintKind::crank: d = joint == c.joints[0] ? Eigen::Matrix2d(-Eigen::Matrix2d::Identity()) : Eigen::Matrix2d::Identity(); break;
     case ConstraintKind::slider_travel: d.row(0) = c.direction.transpose(); break;
+    case ConstraintKind::slider_on_line: {
+      const LineSlotRow slot = line_slot_row(p(0), p(1), p(2), c.offset);
+      d.row(0) = pick(slot.dA, slot.dB, slot.dC).transpose();
+      break;
+    }
+    case ConstraintKind::actuator: {
+      const Eigen::Vector2d g = actuator_gradient(p(0), p(1));
+      d.row(0) = pick(g, -g, Eigen::Vector2d::Zero()).transpose();
+      break;
+    }
+    case ConstraintKind::motor: {
+      const MotorRow motor = motor_row(p(0), p(1), p(2), t, c.length);
+      d.row(0) = pick(motor.dA, motor.dB, motor.dC).transpose();
+      break;
+    }
   }
   return d;
 }

@@ -19,9 +19,9 @@ using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eig
 Eigen::Vector2d rows_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, double t,
                         const Eigen::Vector2d& crank_direction);
 
-// d(rows of c) / d(joint's x, y): the blocks LinkageModel::jacobian puts in J; zero for a joint c
-// does not read.
-Eigen::Matrix2d partial_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, int joint);
+// d(rows of c) / d(joint's x, y) at (q, t): the blocks LinkageModel::jacobian puts in J; zero for a
+// joint c does not read. Only a motor's depend on t.
+Eigen::Matrix2d partial_of(const LinkageModel& model, const Constraint& c, const Eigen::VectorXd& q, double t, int joint);
 
 // Phi(q; t), every constraint once, into f (sized to the equations).
 void whole_residual(const LinkageModel& model, const Eigen::VectorXd& q, double t, const Eigen::Vector2d& crank_direction,

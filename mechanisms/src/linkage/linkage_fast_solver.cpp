@@ -48,7 +48,7 @@ struct WholeProblem {
       const int first_row = model.first_row(static_cast<int>(k));
       for (const int joint : c.joints) {
         if (joint < 0 || model.column_of(joint) < 0) continue;  // unused slot, or a ground joint
-        const Eigen::Matrix2d d = partial_of(model, c, x, joint);
+        const Eigen::Matrix2d d = partial_of(model, c, x, t, joint);
         for (int r = 0; r < c.rows(); ++r) {
           for (int xy = 0; xy < 2; ++xy) work(at(row_at, first_row + r), at(column_at, model.column_of(joint) + xy)) = d(r, xy);
         }
@@ -93,7 +93,7 @@ struct JointProblem {
   bool jacobian(const Eigen::Vector2d& x) {
     place(x);
     for (const LinkageFastSolver::Part& part : block.parts) {
-      const Eigen::Matrix2d d = partial_of(model, *part.constraint, q, block.joints[0]);
+      const Eigen::Matrix2d d = partial_of(model, *part.constraint, q, t, block.joints[0]);
       for (int r = 0; r < 2; ++r) {
         if (part.row[r] >= 0) J.row(part.row[r]) = d.row(r);
       }
@@ -143,7 +143,7 @@ struct BlockProblem {
     place(x);
     for (const LinkageFastSolver::Part& part : block.parts) {
       for (std::size_t k = 0; k < block.joints.size(); ++k) {
-        const Eigen::Matrix2d d = partial_of(model, *part.constraint, q, block.joints[k]);
+        const Eigen::Matrix2d d = partial_of(model, *part.constraint, q, t, block.joints[k]);
         for (int r = 0; r < 2; ++r) {
           if (part.row[r] >= 0) block.work.block<1, 2>(part.row[r], 2 * static_cast<Eigen::Index>(k)) = d.row(r);
         }

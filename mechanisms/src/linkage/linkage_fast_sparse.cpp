@@ -7,7 +7,7 @@
 
 namespace numlab::mechanisms {
 
-bool LinkageFastSolver::Sparse::assemble(const LinkageModel& model, const Eigen::VectorXd& x) {
+bool LinkageFastSolver::Sparse::assemble(const LinkageModel& model, double t, const Eigen::VectorXd& x) {
   entries.clear();
   bool finite = true;
   for (std::size_t k = 0; k < model.constraints().size(); ++k) {
@@ -15,7 +15,7 @@ bool LinkageFastSolver::Sparse::assemble(const LinkageModel& model, const Eigen:
     const int first_row = model.first_row(static_cast<int>(k));
     for (const int joint : c.joints) {
       if (joint < 0 || model.column_of(joint) < 0) continue;  // unused slot, or a ground joint
-      const Eigen::Matrix2d d = detail::partial_of(model, c, x, joint);
+      const Eigen::Matrix2d d = detail::partial_of(model, c, x, t, joint);
       for (int r = 0; r < c.rows(); ++r) {
         for (int xy = 0; xy < 2; ++xy) {
           finite = finite && std::isfinite(d(r, xy));

@@ -23,7 +23,7 @@ struct LinkageFastSolver::Sparse {
   bool factored = false;
   // J at x (each constraint's partial derivatives, partial_of) and its LU. False when an entry of
   // J is not finite.
-  bool assemble(const LinkageModel& model, const Eigen::VectorXd& x);
+  bool assemble(const LinkageModel& model, double t, const Eigen::VectorXd& x);
   // J dx = -f by the LU; Status::singular when the LU found no pivot, or gave a step not finite.
   Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx);
 
@@ -42,7 +42,7 @@ struct SparseWholeProblem {
   Eigen::Vector2d crank_direction;
   LinkageFastSolver::Sparse& sparse;
   void residual(const Eigen::VectorXd& x, Eigen::VectorXd& f) const;
-  bool jacobian(const Eigen::VectorXd& x) const { return sparse.assemble(model, x); }
+  bool jacobian(const Eigen::VectorXd& x) const { return sparse.assemble(model, t, x); }
   Status solve(const Eigen::VectorXd& f, Eigen::VectorXd& dx) const { return sparse.solve(f, dx); }
 };
 

@@ -4,6 +4,8 @@
 #include <numbers>
 #include <type_traits>
 
+#include "linkage_rows.hpp"
+#include "numlab/mechanisms/linkage/body_base_pairs.hpp"
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
 #include "numlab/mechanisms/plane_angles.hpp"
 
@@ -24,9 +26,15 @@ Eigen::Vector2d body_coefficients(const Eigen::Vector2d& b0, const Eigen::Vector
 
 }  // namespace
 
-LinkageModel::LinkageModel(LinkageDescription description) : description_(std::move(description)) {
-  derive();
+LinkageModel::LinkageModel(LinkageDescription description) : LinkageModel(std::move(description), {}) {
+  // Each body's base pair from the structure, not from the order of its joints (body_base_pairs.hpp).
+  if (!description_.bodies.empty()) *this = LinkageModel(description_, body_base_pairs(*this));
   require_one_degree_of_freedom(*this);
+}
+
+LinkageModel::LinkageModel(LinkageDescription description, std::vector<std::array<int, 2>> base_pairs)
+    : description_(std::move(description)), base_pairs_(std::move(base_pairs)) {
+  derive();
 }
 
 void LinkageModel::add(Constraint constraint) {
@@ -45,10 +53,12 @@ bool driven_pair(const DriverSpec& driver, int i, int j) {
 }
 
 // A body's constraints: its base pair's distance (the crank's pair when the crank turns this body:
-// then the crank holds that distance), then each further joint placed by the base pair.
-std::vector<Constraint> body_constraints(const LinkageDescription& d, const BodySpec& body) {
+// then the crank holds that distance), then each further joint placed by the base pair. `pair`:
+// the base pair's indices into the body's joints.
+std::vector<Constraint> body_constraints(const LinkageDescription& d, int index, std::array<int, 2> pair) {
+  const BodySpec& body = d.bodies[static_cast<std::size_t>(index)];
   const DriverSpec& driver = d.driver;
-  std::size_t b0 = 0, b1 = 1;
+  std::size_t b0 = static_cast<std::size_t>(pair[0]), b1 = static_cast<std::size_t>(pair[1]);
   for (std::size_t i = 0; i < body.joints.size(); ++i) {
     for (std::size_t k = 0; k < body.joints.size(); ++k) {
       if (i != k && driven_pair(driver, body.joints[i], body.joints[k]) && body.joints[i] == driver.pivot) b0 = i, b1 = k;
@@ -62,6 +72,7 @@ std::vector<Constraint> body_constraints(const LinkageDescription& d, const Body
     c.joints = {j0, j1, -1};
     c.length = (body.local[b1] - body.local[b0]).norm();
     c.name = "body " + body.name + ": " + pair_name(d, j0, j1);
+    c.body = index;
     c.place = body.place;
     out.push_back(std::move(c));
   }
@@ -73,14 +84,15 @@ std::vector<Constraint> body_constraints(const LinkageDescription& d, const Body
     c.coefficients = body_coefficients(body.local[b0], body.local[b1], body.local[k]);
     c.name = "body " + body.name + ": " + d.joints[static_cast<std::size_t>(body.joints[k])].name + " from " +
              pair_name(d, j0, j1);
+    c.body = index;
     c.place = body.place;
     out.push_back(std::move(c));
   }
   return out;
 }
 
-// The driver's constraint: the crank's joint on its circle at angle t, or the slider's joint at
-// travel t along its line.
+// The driver's constraint: the crank's joint on its circle at angle t, the slider's joint at travel
+// t along its line, the actuator's joints t apart, or the motor's two links at angle t.
 Constraint driver_constraint(const LinkageDescription& d) {
   const DriverSpec& driver = d.driver;
   Constraint c;
@@ -90,6 +102,15 @@ Constraint driver_constraint(const LinkageDescription& d) {
     c.joints = {driver.pivot, driver.joint, -1};
     c.length = crank_radius(d);
     c.name = "crank " + pair_name(d, driver.pivot, driver.joint);
+  } else if (driver.kind == DriverKind::actuator) {
+    c.kind = ConstraintKind::actuator;
+    c.joints = {driver.from, driver.joint, -1};
+    c.name = "actuator " + pair_name(d, driver.from, driver.joint);
+  } else if (driver.kind == DriverKind::motor) {
+    c.kind = ConstraintKind::motor;
+    c.joints = {driver.pivot, driver.from, driver.joint};
+    c.length = held_distance(d, driver.pivot, driver.joint);
+    c.name = "motor " + d.joints[static_cast<std::size_t>(driver.from)].name + "-" + pair_name(d, driver.pivot, driver.joint);
   } else {
     const SliderSpec& slider = d.sliders[static_cast<std::size_t>(driver.slider)];
     c.joints = {driver.joint, -1, -1};
@@ -123,12 +144,23 @@ void LinkageModel::derive() {
     add(std::move(c));
   }
   // 2. Bodies: the base pair's distance, then each further joint placed by the base pair.
-  for (const BodySpec& body : d.bodies) {
-    for (Constraint& c : body_constraints(d, body)) add(std::move(c));
+  for (std::size_t b = 0; b < d.bodies.size(); ++b) {
+    const std::array<int, 2> pair = base_pairs_.empty() ? std::array<int, 2>{0, 1} : base_pairs_[b];
+    for (Constraint& c : body_constraints(d, static_cast<int>(b), pair)) add(std::move(c));
   }
-  // 3. Sliders: the joint on its line.
+  // 3. Sliders: the joint on its line (fixed, or through two joints of a moving body).
   for (const SliderSpec& slider : d.sliders) {
     Constraint c;
+    if (slider.on_link()) {
+      c.kind = ConstraintKind::slider_on_line;
+      c.joints = {slider.joint, slider.line_from, slider.line_to};
+      c.offset = slider.offset;
+      c.name = "slider " + d.joints[static_cast<std::size_t>(slider.joint)].name + " on " +
+               pair_name(d, slider.line_from, slider.line_to);
+      c.place = slider.place;
+      add(std::move(c));
+      continue;
+    }
     c.kind = ConstraintKind::slider_line;
     c.joints = {slider.joint, -1, -1};
     c.point = slider.through;
@@ -230,6 +262,15 @@ void LinkageModel::residual(const Eigen::VectorXd& q, double t, Eigen::VectorXd&
       case ConstraintKind::slider_travel:
         f(row) = c.direction.dot(p(c.joints[0]) - c.point) - t;
         break;
+      case ConstraintKind::slider_on_line:
+        f(row) = detail::line_slot_row(p(c.joints[0]), p(c.joints[1]), p(c.joints[2]), c.offset).value;
+        break;
+      case ConstraintKind::actuator:
+        f(row) = (p(c.joints[0]) - p(c.joints[1])).norm() - t;
+        break;
+      case ConstraintKind::motor:
+        f(row) = detail::motor_row(p(c.joints[0]), p(c.joints[1]), p(c.joints[2]), t, c.length).value;
+        break;
     }
   }
 }
@@ -237,7 +278,7 @@ void LinkageModel::residual(const Eigen::VectorXd& q, double t, Eigen::VectorXd&
 // Each constraint's partial derivatives, block by block: put(row, joint, block) for every joint the
 // constraint involves (a block of the constraint's rows by the joint's x and y).
 template <typename Put>
-void LinkageModel::for_each_partial(const Eigen::VectorXd& q, Put put) const {
+void LinkageModel::for_each_partial(const Eigen::VectorXd& q, double t, Put put) const {
   const PositionReader p{*this, q};
   const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
@@ -270,18 +311,38 @@ void LinkageModel::for_each_partial(const Eigen::VectorXd& q, Put put) const {
       case ConstraintKind::slider_travel:
         put(row, c.joints[0], Eigen::RowVector2d(c.direction.transpose()));
         break;
+      case ConstraintKind::slider_on_line: {
+        const detail::LineSlotRow slot = detail::line_slot_row(p(c.joints[0]), p(c.joints[1]), p(c.joints[2]), c.offset);
+        put(row, c.joints[0], Eigen::RowVector2d(slot.dA.transpose()));
+        put(row, c.joints[1], Eigen::RowVector2d(slot.dB.transpose()));
+        put(row, c.joints[2], Eigen::RowVector2d(slot.dC.transpose()));
+        break;
+      }
+      case ConstraintKind::actuator: {
+        const Eigen::RowVector2d g = detail::actuator_gradient(p(c.joints[0]), p(c.joints[1])).transpose();
+        put(row, c.joints[0], g);
+        put(row, c.joints[1], Eigen::RowVector2d(-g));
+        break;
+      }
+      case ConstraintKind::motor: {
+        const detail::MotorRow motor = detail::motor_row(p(c.joints[0]), p(c.joints[1]), p(c.joints[2]), t, c.length);
+        put(row, c.joints[0], Eigen::RowVector2d(motor.dA.transpose()));
+        put(row, c.joints[1], Eigen::RowVector2d(motor.dB.transpose()));
+        put(row, c.joints[2], Eigen::RowVector2d(motor.dC.transpose()));
+        break;
+      }
     }
   }
 }
 
-void LinkageModel::jacobian(const Eigen::VectorXd& q, double /*t*/, Eigen::MatrixXd& J) const {
+void LinkageModel::jacobian(const Eigen::VectorXd& q, double t, Eigen::MatrixXd& J) const {
   J.setZero(equation_count_, unknown_count());
-  for_each_partial(q, [&](int row, int joint, const auto& block) { put(*this, J, row, joint, block); });
+  for_each_partial(q, t, [&](int row, int joint, const auto& block) { put(*this, J, row, joint, block); });
 }
 
-void LinkageModel::jacobian_entries(const Eigen::VectorXd& q, double /*t*/, std::vector<JacobianEntry>& entries) const {
+void LinkageModel::jacobian_entries(const Eigen::VectorXd& q, double t, std::vector<JacobianEntry>& entries) const {
   entries.clear();
-  for_each_partial(q, [&](int row, int joint, const auto& block) {
+  for_each_partial(q, t, [&](int row, int joint, const auto& block) {
     const int column = column_of(joint);
     if (column < 0) return;  // a ground joint: no unknowns
     for (Eigen::Index r = 0; r < block.rows(); ++r) {
@@ -290,26 +351,31 @@ void LinkageModel::jacobian_entries(const Eigen::VectorXd& q, double /*t*/, std:
   });
 }
 
-void LinkageModel::multiplier_forces(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
+void LinkageModel::multiplier_forces(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
                                      std::vector<Eigen::Vector2d>& forces) const {
   for (Eigen::Vector2d& f : forces) f.setZero();
-  for_each_partial(q, [&](int row, int joint, const auto& block) {
+  for_each_partial(q, t, [&](int row, int joint, const auto& block) {
     constexpr int rows = std::decay_t<decltype(block)>::RowsAtCompileTime;
     forces[static_cast<std::size_t>(joint)] += block.transpose() * lambda.template segment<rows>(row);
   });
 }
 
-void LinkageModel::driver_derivative(const Eigen::VectorXd& /*q*/, double t, Eigen::VectorXd& phi_t) const {
+void LinkageModel::driver_derivative(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi_t) const {
+  const PositionReader p{*this, q};
   phi_t.setZero(equation_count_);
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const Constraint& c = constraints_[k];
     if (c.kind == ConstraintKind::crank) phi_t.segment<2>(first_row_[k]) = -c.length * perp(unit(t + c.offset));
-    if (c.kind == ConstraintKind::slider_travel) phi_t(first_row_[k]) = -1.0;
+    if (c.kind == ConstraintKind::slider_travel || c.kind == ConstraintKind::actuator) phi_t(first_row_[k]) = -1.0;
+    if (c.kind == ConstraintKind::motor) {
+      phi_t(first_row_[k]) = detail::motor_row(p(c.joints[0]), p(c.joints[1]), p(c.joints[2]), t, c.length).dt;
+    }
   }
 }
 
-void LinkageModel::acceleration_rhs(const Eigen::VectorXd& /*q*/, const Eigen::VectorXd& qdot, double t,
+void LinkageModel::acceleration_rhs(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, double t,
                                     Eigen::VectorXd& gamma) const {
+  const PositionReader p{*this, q};
   const PositionReader v{*this, qdot};  // velocities; ground joints read as their positions, so mask them
   const auto velocity = [&](int joint) -> Eigen::Vector2d {
     return column_of(joint) < 0 ? Eigen::Vector2d::Zero() : v(joint);
@@ -318,11 +384,18 @@ void LinkageModel::acceleration_rhs(const Eigen::VectorXd& /*q*/, const Eigen::V
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const Constraint& c = constraints_[k];
     const int row = first_row_[k];
-    // Only the distance rows (quadratic in q) and the crank (in t) have second derivatives.
+    // The rows linear in q and t (body points, fixed sliders, the slider driver) have none.
+    const auto [a, b, e] = c.joints;
     if (c.kind == ConstraintKind::distance) {
-      gamma(row) = -(velocity(c.joints[0]) - velocity(c.joints[1])).squaredNorm() / c.length;
+      gamma(row) = -(velocity(a) - velocity(b)).squaredNorm() / c.length;
     } else if (c.kind == ConstraintKind::crank) {
       gamma.segment<2>(row) = -c.length * unit(t + c.offset);
+    } else if (c.kind == ConstraintKind::slider_on_line) {
+      gamma(row) = -detail::line_slot_second(p(a), p(b), p(e), velocity(a), velocity(b), velocity(e));
+    } else if (c.kind == ConstraintKind::actuator) {
+      gamma(row) = -detail::actuator_second(p(a), p(b), velocity(a), velocity(b));
+    } else if (c.kind == ConstraintKind::motor) {
+      gamma(row) = -detail::motor_second(p(a), p(b), p(e), velocity(a), velocity(b), velocity(e), t, c.length);
     }
   }
 }

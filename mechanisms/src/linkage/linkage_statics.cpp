@@ -27,6 +27,7 @@ std::vector<StaticsSupport> statics_supports(const LinkageDescription& descripti
     if (description.joints[j].ground) supports.push_back({description.joints[j].name, static_cast<int>(j), -1});
   }
   for (std::size_t s = 0; s < description.sliders.size(); ++s) {
+    if (description.sliders[s].on_link()) continue;  // its guide is a moving link: an internal force
     const int joint = description.sliders[s].joint;
     supports.push_back({description.joints[static_cast<std::size_t>(joint)].name, joint, static_cast<int>(s)});
   }
@@ -131,7 +132,7 @@ const LinkageStatics& LinkageStaticsSolver::solve(const LinkagePose& pose) {
   model_.driver_derivative(pose.q, t, phi_t_);
   result_.driver = lambda_.dot(phi_t_);
   // 4. The reactions.
-  model_.multiplier_forces(pose.q, lambda_, constraint_);
+  model_.multiplier_forces(pose.q, t, lambda_, constraint_);
   for (std::size_t s = 0; s < supports_.size(); ++s) {
     const StaticsSupport& support = supports_[s];
     const int row = guide_rows_[s];

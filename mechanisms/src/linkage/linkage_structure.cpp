@@ -30,26 +30,33 @@ Mobility gruebler_kutzbach(const LinkageDescription& d) {
     for (int joint : body.joints) ++members_at[static_cast<std::size_t>(joint)];
   }
   for (const SliderSpec& slider : d.sliders) ++members_at[static_cast<std::size_t>(slider.joint)];
+  // An actuator is two members, its cylinder pinned at one joint and its rod at the other.
+  const int actuators = d.driver.kind == DriverKind::actuator ? 1 : 0;
+  if (actuators > 0) ++members_at[static_cast<std::size_t>(d.driver.from)], ++members_at[static_cast<std::size_t>(d.driver.joint)];
   Mobility m;
-  m.members = 1 + static_cast<int>(d.links.size() + d.bodies.size() + d.sliders.size());
+  m.members = 1 + static_cast<int>(d.links.size() + d.bodies.size() + d.sliders.size()) + 2 * actuators;
   for (int k : members_at) m.lower_pairs += std::max(k - 1, 0);
-  m.lower_pairs += static_cast<int>(d.sliders.size());  // each slider block's prismatic pair
+  m.lower_pairs += static_cast<int>(d.sliders.size()) + actuators;  // each slider block's and cylinder's prismatic pair
   m.mobility = 3 * (m.members - 1) - 2 * m.lower_pairs;
   return m;
 }
 
-double crank_radius(const LinkageDescription& d) {
-  const int pivot = d.driver.pivot, joint = d.driver.joint;
+double held_distance(const LinkageDescription& d, int a, int b) {
   for (const LinkSpec& link : d.links) {
-    if ((link.first == pivot && link.second == joint) || (link.first == joint && link.second == pivot)) return link.length;
+    if ((link.first == a && link.second == b) || (link.first == b && link.second == a)) return link.length;
   }
   for (const BodySpec& body : d.bodies) {
     const auto at = [&](int j) { return std::find(body.joints.begin(), body.joints.end(), j) - body.joints.begin(); };
-    const auto p = at(pivot), q = at(joint);
+    const auto p = at(a), q = at(b);
     if (p < static_cast<long>(body.joints.size()) && q < static_cast<long>(body.joints.size())) {
       return (body.local[static_cast<std::size_t>(q)] - body.local[static_cast<std::size_t>(p)]).norm();
     }
   }
+  return -1.0;
+}
+
+double crank_radius(const LinkageDescription& d) {
+  if (const double radius = held_distance(d, d.driver.pivot, d.driver.joint); radius > 0.0) return radius;
   throw LinkageFileError(d.file, d.driver.place, "the crank's joint is not on a link or body with its pivot");
 }
 

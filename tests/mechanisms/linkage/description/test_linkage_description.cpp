@@ -363,8 +363,10 @@ TEST_CASE("Linkage files: bodies", "[linkage-file][bad-input]") {
                 "local point 3: y must be finite, got inf");
   check_refused(body("[\"A\", \"B\", \"P\"]", "[[0, 0], [3, 0], [3, 0]]"), 16, 9,
                 "local points of joints 'B' and 'P' coincide in body 'body 1'");
-  check_refused(body("[\"A\", \"B\", \"P\"]", "[[0, 0], [3, 0], [1.5, 0]]"), 16, 9,
-                "the local points of body 'body 1' lie on one line");
+  // Points on one line make a bar (a point on it or on its extension): accepted, marked collinear.
+  CHECK(parse_linkage_description(body("[\"A\", \"B\", \"P\"]", "[[0, 0], [3, 0], [1.5, 0]]"), "t.toml").bodies[0].collinear);
+  CHECK(parse_linkage_description(body("[\"A\", \"B\", \"P\"]", "[[0, 0], [3, 0], [4.5, 0]]"), "t.toml").bodies[0].collinear);
+  CHECK_FALSE(parse_linkage_description(body("[\"A\", \"B\", \"P\"]", "[[0, 0], [3, 0], [1.5, 1]]"), "t.toml").bodies[0].collinear);
   check_refused(head + lines({"[[body]]", "name = \"the coupler\"", "joints = [\"A\", \"B\", \"P\"]",
                               "local = [[0, 0], [3, 0], [1.5, 1]]"}) + crank,
                 15, 8, "invalid body name 'the coupler': use 1 to 32 letters, digits, '-' or '_'");
@@ -376,10 +378,10 @@ TEST_CASE("Linkage files: a body's tolerances are relative to its size (1e-9 of 
   const auto body = [](const std::string& local) {
     return head + lines({"[[body]]", "joints = [\"A\", \"B\", \"P\"]", "local = " + local}) + crank;
   };
-  // 3e6 long, 1e-4 off the line: 3.3e-11 of its size, collinear.
-  check_refused(body("[[0, 0], [3e6, 0], [1.5e6, 1e-4]]"), 16, 9, "the local points of body 'body 1' lie on one line");
+  // 3e6 long, 1e-4 off the line: 3.3e-11 of its size, collinear (a bar).
+  CHECK(parse_linkage_description(body("[[0, 0], [3e6, 0], [1.5e6, 1e-4]]"), "t.toml").bodies[0].collinear);
   // 3e-6 long, 3e-12 off the line: 1e-6 of its size, a (thin) triangle.
-  CHECK(parse_linkage_description(body("[[0, 0], [3e-6, 0], [1.5e-6, 3e-12]]"), "t.toml").bodies.size() == 1);
+  CHECK_FALSE(parse_linkage_description(body("[[0, 0], [3e-6, 0], [1.5e-6, 3e-12]]"), "t.toml").bodies[0].collinear);
   // Two points 1e-3 apart in a body 3e6 long: 3.3e-10 of its size, coincident.
   check_refused(body("[[0, 0], [3e6, 0], [3e6, 1e-3]]"), 16, 9,
                 "local points of joints 'B' and 'P' coincide in body 'body 1'");
@@ -394,7 +396,9 @@ TEST_CASE("Linkage files: sliders", "[linkage-file][bad-input]") {
   check_refused(slider("\"S\"", "[0, inf]", "0"), 16, 15, "a slider's 'through' point: y must be finite, got inf");
   check_refused(slider("\"S\"", "[0, 0.5]", "nan"), 17, 9, "a slider's angle must be finite, got nan");
   check_refused(slider("\"S\"", "[0, 0.5]", "\"up\""), 17, 9, "a slider's angle must be a number");
-  check_refused(head + lines({"[[slider]]", "joint = \"S\""}) + crank, 14, 1, "[[slider]] needs 'through'");
+  check_refused(head + lines({"[[slider]]", "joint = \"S\""}) + crank, 14, 1,
+                "a [[slider]] runs on a fixed line (through = [x, y]) or on a moving link's line (line = [\"B\", \"C\"]): "
+                "give one of the two");
   check_refused(head + lines({"[[slider]]", "joint = \"S\"", "through = [0, 0.5]", "[[slider]]", "joint = \"S\"",
                               "through = [0, 1]"}) + crank,
                 18, 9, "joint 'S' already has a slider at line 14");
@@ -403,7 +407,8 @@ TEST_CASE("Linkage files: sliders", "[linkage-file][bad-input]") {
 TEST_CASE("Linkage files: the driver", "[linkage-file][bad-input]") {
   check_refused_without_place(head, "no [driver] table: a linkage needs exactly one driver");
   const auto driver = [](std::initializer_list<std::string> keys) { return head + lines({"[driver]"}) + lines(keys); };
-  check_refused(driver({"type = \"motor\""}), 15, 8, "unknown driver type 'motor': use \"crank\" or \"slider\"");
+  check_refused(driver({"type = \"rotor\""}), 15, 8,
+                "unknown driver type 'rotor': use \"crank\", \"slider\", \"actuator\" or \"motor\"");
   check_refused(driver({"pivot = \"O\""}), 14, 1, "[driver] needs 'type'");
   check_refused(driver({"type = \"crank\"", "pivot = \"A\"", "joint = \"B\"", "angle = 0"}), 16, 9,
                 "a driver on a joint that is not grounded: the crank's pivot 'A' is a moving joint");

@@ -53,13 +53,15 @@ struct AngularMotion {
 AngularMotion angular_motion(const JointMotion& from, const JointMotion& to);
 
 // What --output or `output = "..."` names: a link or body (its angle), or a slider's joint (its travel
-// along the slider's line).
+// along the slider's line; for a slider on a moving link, s = (p_A - p_B) . w along its line B -> C,
+// w = (p_C - p_B) / |p_C - p_B|).
 struct LinkageOutput {
   std::string name;
   int line = -1;                              // index into link_lines(), or -1
   int slider = -1;                            // index into description.sliders, or -1
   int joint = -1;                             // the slider's joint, or -1
   Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  // a slider's unit direction
+  int line_from = -1, line_to = -1;           // a slider on a moving link: its line's joints B, C
   bool angle() const { return line >= 0; }
 };
 // The output called `name`, or nullopt.
@@ -67,7 +69,8 @@ std::optional<LinkageOutput> find_output(const LinkageDescription& description, 
 // "links O-A, A-B, Q-B; bodies coupler; slider joints S": what an output may name, for messages.
 std::string output_choices(const LinkageDescription& description);
 
-// The output's rate per unit of driver: omega of its line, or u . v of its slider joint.
+// The output's rate per unit of driver: omega of its line, u . v of its slider joint, or for a slider
+// on a moving link s' = (v_A - v_B) . w + (p_A - p_B) . w', w' = (d' - w (w . d')) / |d|, d = p_C - p_B.
 double output_rate(const LinkageOutput& output, const std::vector<LinkLine>& lines, const std::vector<JointMotion>& joints);
 
 // The mechanical advantage of an ideal (lossless) mechanism is the inverse of the velocity ratio:

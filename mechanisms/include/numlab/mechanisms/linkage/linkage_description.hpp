@@ -40,32 +40,44 @@ struct LinkSpec {
 struct BodySpec {
   std::string name;
   std::vector<int> joints;               // indices into LinkageDescription::joints
-  std::vector<Eigen::Vector2d> local;    // one local position per joint, not all on one line
+  std::vector<Eigen::Vector2d> local;    // one local position per joint, no two coinciding
   SourcePlace place;
+  bool collinear = false;                // every local point on one line: a bar (drawn as one), still rigid
 };
 
-// A joint held on a straight line fixed to the ground: through `through`, at `angle_deg` from +x.
+// A joint held on a straight line: fixed to the ground (through `through`, at `angle_deg` from +x),
+// or carried by a moving link or body (`line`: the line from joint line_from to joint line_to of one
+// link or body, the slot `offset` to its left). Exactly one of the two.
 struct SliderSpec {
   int joint = -1;
   Eigen::Vector2d through = Eigen::Vector2d::Zero();
   double angle_deg = 0.0;
   SourcePlace place;
   SourcePlace angle_place{};  // of `angle`; the slider's place when the file leaves it out
+  int line_from = -1, line_to = -1;  // `line = ["B", "C"]`: the carrying body's joints, or -1 (a fixed line)
+  double offset = 0.0;               // the slot's signed distance to the left of B -> C (length units)
+  bool on_link() const { return line_from >= 0; }
 };
 
-enum class DriverKind { crank, slider };
+enum class DriverKind { crank, slider, actuator, motor };
 
 // The one input. A crank turns `joint` about the ground joint `pivot` (the angle of pivot -> joint
 // from +x, in degrees); a slider driver moves the slider's joint along its line (the travel from
-// the line's `through` point, in length units).
+// the line's `through` point, in length units); an actuator sets the distance |from - joint| (length
+// units); a motor sets the angle from pivot -> from to pivot -> joint (degrees, counter-clockwise),
+// two links or bodies turning about their shared joint `pivot`. Self-contained, so that a mechanism
+// of mobility 2 can later hold a list of them.
 struct DriverSpec {
   DriverKind kind = DriverKind::crank;
-  int pivot = -1;      // crank: a ground joint
-  int joint = -1;      // the driven joint (crank: on a link or body with the pivot; slider: a slider's joint)
+  int pivot = -1;      // crank: a ground joint; motor: the joint the two links share
+  int joint = -1;      // the driven joint (crank: on a link or body with the pivot; slider: a slider's joint;
+                       // actuator: its second joint; motor: on the second link or body)
+  int from = -1;       // actuator: its first joint; motor: the joint on the first link or body
   int slider = -1;     // slider driver: index into LinkageDescription::sliders
   double reference = 0.0;  // the driver's value at the reference pose (degrees or length)
   SourcePlace place;
-  SourcePlace reference_place{};  // of `angle` (crank) or `travel` (slider)
+  SourcePlace reference_place{};  // of `angle` (crank, motor), `travel` (slider) or `length` (actuator)
+  bool angle() const { return kind == DriverKind::crank || kind == DriverKind::motor; }  // degrees, else length
 };
 
 // A load on the mechanism ([[load]], docs/linkage-files.md "Loads and the driving torque"): a force
@@ -98,6 +110,7 @@ struct LinkageDescription {
   DriverSpec driver;
   std::vector<LoadSpec> loads;              // [[load]], in file order
   double gravity = standard_gravity;        // [linkage] gravity, m/s^2 along -y (masses only)
+  std::vector<int> trace;                   // [linkage] trace: moving joints whose paths --svg highlights
 
   // The index of the joint called `name`, or -1.
   int joint_index(std::string_view name) const;
@@ -119,8 +132,10 @@ class LinkageFileError : public std::invalid_argument {
 // Reads a description from TOML text (`file` names it in messages). Checks everything that can be
 // checked from the file alone: TOML syntax, the sections and keys, unknown and duplicate joint names,
 // a link from a joint to itself, lengths (positive and finite), numbers finite, bodies (three or
-// more distinct joints, local coordinates not all on one line), sliders, the driver (a crank on a
-// ground pivot, its joint on a link or body with it). Throws LinkageFileError.
+// more distinct joints, no two local points coinciding), sliders (on a fixed line or on the line of
+// two joints of one link or body), the driver (a crank on a ground pivot, its joint on a link or body
+// with it; a slider driver; an actuator between joints no link holds; a motor between two links or
+// bodies at their shared joint). Throws LinkageFileError.
 LinkageDescription parse_linkage_description(std::string_view toml_text, const std::string& file);
 
 // Reads the file (at most linalg::max_input_file_bytes) and parses it. Throws LinkageFileError.

@@ -10,8 +10,12 @@
 //                                         with (a, b) from the local coordinates: c stays where the body
 //                                         puts it, never in its mirror image, so a body cannot flip
 //   slider of joint j             1 row   u x (p_j - P) = 0, the joint on the line through P along u
+//   slider of A on line B-C       1 row   ((p_C - p_B) x (p_A - p_B)) / |p_C - p_B| - e = 0, e the slot's offset
 //   crank about pivot O           2 rows  p_A - p_O - r (cos t, sin t) = 0, t = theta + offset
 //   slider driver                 1 row   u . (p_j - P) - s = 0
+//   actuator P-Q                  1 row   |p_P - p_Q| - s = 0
+//   motor B-A-C                   1 row   l ((u x v) cos t - (u . v) sin t) / (|u| |v|) = 0, u = p_B - p_A,
+//                                         v = p_C - p_A, l = |AC| (so the row is in length units)
 //
 // The crank replaces the distance O-A of its link or body (the two rows imply it). A model is
 // square exactly when the mobility is one (linkage_structure.hpp checks that first).
@@ -25,19 +29,21 @@
 
 namespace numlab::mechanisms {
 
-enum class ConstraintKind { distance, body_point, slider_line, crank, slider_travel };
+enum class ConstraintKind { distance, body_point, slider_line, crank, slider_travel, slider_on_line, actuator, motor };
 
 // One constraint: 1 or 2 rows of the system, on up to three joints.
 struct Constraint {
   ConstraintKind kind = ConstraintKind::distance;
   std::array<int, 3> joints{-1, -1, -1};  // distance: i, j; body_point: b0, b1, c; slider_line and
-                                          // slider_travel: j; crank: pivot, joint
-  double length = 0.0;                    // distance: L; crank: r
+                                          // slider_travel: j; crank: pivot, joint; slider_on_line: A, B, C;
+                                          // actuator: P, Q; motor: A (pivot), B (from), C (joint)
+  double length = 0.0;                    // distance: L; crank: r; motor: l, the row's length scale
   Eigen::Vector2d coefficients = Eigen::Vector2d::Zero();  // body_point: (a, b)
   Eigen::Vector2d point = Eigen::Vector2d::Zero();         // slider: P
   Eigen::Vector2d direction = Eigen::Vector2d::UnitX();    // slider: u (unit)
-  double offset = 0.0;                    // crank: radians added to the driver's angle
+  double offset = 0.0;                    // crank: radians added to the driver's angle; slider_on_line: e
   std::string name;                       // for messages and --explain: "link O-A", "body coupler: P"
+  int body = -1;                          // the [[body]] whose rows these are (index), or -1
   SourcePlace place;                      // where the file states the item it comes from
 
   int rows() const { return kind == ConstraintKind::body_point || kind == ConstraintKind::crank ? 2 : 1; }
@@ -51,9 +57,13 @@ class LinkageModel {
   // Derives the constraints. Throws LinkageFileError when the description is not a mechanism with
   // one degree of freedom (linkage_structure.hpp: mobility, then structural rank).
   explicit LinkageModel(LinkageDescription description);
+  // The same with every body's base pair given (indices into its joints, one pair per body; empty:
+  // the first two), not chosen from the structure, and no check (body_base_pairs.hpp tries pairs).
+  LinkageModel(LinkageDescription description, std::vector<std::array<int, 2>> base_pairs);
 
   const LinkageDescription& description() const { return description_; }
   const std::vector<Constraint>& constraints() const { return constraints_; }
+  const std::vector<std::array<int, 2>>& base_pairs() const { return base_pairs_; }
   int unknown_count() const { return static_cast<int>(moving_.size()) * 2; }
   int equation_count() const { return equation_count_; }
   // Moving joints in unknown order: unknowns 2k, 2k+1 are x, y of joint moving()[k].
@@ -66,11 +76,13 @@ class LinkageModel {
   std::string row_name(int row) const;
   std::string column_name(int column) const;
 
-  // The driver's value in the model's units: radians for a crank, length for a slider. `value` is
-  // what the user gives: degrees for a crank, length for a slider.
+  // The driver's value in the model's units: radians for a crank or motor, length for a slider or
+  // actuator. `value` is what the user gives: degrees for a crank or motor, length otherwise.
   double driver_from_user(double value) const;
   double driver_to_user(double value) const;
-  bool crank_driven() const { return description_.driver.kind == DriverKind::crank; }
+  // Whether the driver is an angle (a crank or a motor: degrees, periodic), not a length.
+  bool crank_driven() const { return description_.driver.angle(); }
+  DriverKind driver_kind() const { return description_.driver.kind; }
 
   // Positions <-> unknowns.
   JointPositions positions(const Eigen::VectorXd& q) const;
@@ -96,7 +108,8 @@ class LinkageModel {
   // Per joint, ground joints included: sum over rows r of lambda_r d Phi_r / d p_j (J^T lambda split
   // by joint, with the ground joints' partials too). `forces` must hold one entry per joint; it is
   // overwritten, and nothing is allocated (linkage_statics.hpp: the constraint forces).
-  void multiplier_forces(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, std::vector<Eigen::Vector2d>& forces) const;
+  void multiplier_forces(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
+                         std::vector<Eigen::Vector2d>& forces) const;
 
   // The structural nonzero pattern of J: row r has column c when constraint r's joints include
   // c's joint (x and y together, so a joint's two unknowns always fall in one block).
@@ -105,10 +118,11 @@ class LinkageModel {
  private:
   void derive();
   template <typename Put>
-  void for_each_partial(const Eigen::VectorXd& q, Put put) const;
+  void for_each_partial(const Eigen::VectorXd& q, double t, Put put) const;
   void add(Constraint constraint);
 
   LinkageDescription description_;
+  std::vector<std::array<int, 2>> base_pairs_;  // per body, or empty (the first two joints)
   std::vector<Constraint> constraints_;
   std::vector<int> moving_, column_, first_row_;
   std::vector<int> row_constraint_;  // constraint of each row

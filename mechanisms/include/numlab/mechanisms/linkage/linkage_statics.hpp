@@ -36,13 +36,16 @@
 
 namespace numlab::mechanisms {
 
-// A support: a ground joint, or a slider's joint (its guide).
+// A support: a ground joint, or a slider's joint on a fixed line (its guide). A slider in a moving
+// link's slot, an actuator and a motor act between members: their forces are internal, and the
+// driver's multiplier gives an actuator's force (N, positive pushing its joints apart) or a motor's
+// torque (N x length unit, counter-clockwise positive on the link of its `joint`).
 struct StaticsSupport {
   std::string name;  // the joint's name: columns reaction_<name>_x, reaction_<name>_y
   int joint = -1;
   int slider = -1;   // index into description.sliders, or -1 for a ground joint
 };
-// The ground joints in file order, then the slider joints in file order.
+// The ground joints in file order, then the joints of the sliders on fixed lines in file order.
 std::vector<StaticsSupport> statics_supports(const LinkageDescription& description);
 
 enum class StaticsStatus { equilibrium, singular, no_pose };
@@ -50,7 +53,8 @@ std::string_view to_string(StaticsStatus status);
 
 struct LinkageStatics {
   StaticsStatus status = StaticsStatus::no_pose;
-  double driver = 0.0;                      // crank: torque (CCW +); slider: force along the line
+  double driver = 0.0;                      // crank, motor: torque (CCW +); slider: force along the line;
+                                            // actuator: force (+ pushing apart)
   std::vector<Eigen::Vector2d> reactions;   // one per statics_supports() entry
 };
 

@@ -3,8 +3,10 @@
 // equation have an unknown of its own?
 //
 //   1. mobility         - Gruebler-Kutzbach, M = 3 (n - 1) - 2 j1 - j2: n members (the ground, every
-//                         link, body and slider block), j1 lower pairs (a pin where k members meet
-//                         counts k - 1; a slider adds its prismatic pair), j2 = 0 (no cams or gears);
+//                         link, body and slider block, an actuator's cylinder and rod), j1 lower pairs
+//                         (a pin where k members meet counts k - 1; a slider adds its prismatic pair,
+//                         an actuator its cylinder-rod pair), j2 = 0 (no cams or gears); a motor
+//                         adds no member (it drives the pin it sits on);
 //   2. structural rank  - a perfect matching of equations to unknowns in the Jacobian's pattern
 //                         (augmenting paths); when there is none, the unmatched unknowns (or
 //                         equations) and everything reachable from them by alternating paths is
@@ -33,6 +35,8 @@ Mobility gruebler_kutzbach(const LinkageDescription& description);
 // The pivot-to-joint distance the crank keeps, from its link or body. Throws LinkageFileError when
 // no link or body holds both (the reader checks this too).
 double crank_radius(const LinkageDescription& description);
+// The distance a [[link]] or [[body]] holds between joints a and b, or -1 when none holds both.
+double held_distance(const LinkageDescription& description, int a, int b);
 
 // The structural problem of a model, or an empty string: "joints C, D: 3 equations for 4 unknowns".
 struct StructuralProblem {
