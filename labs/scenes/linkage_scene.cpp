@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "output/svg_canvas.hpp"
+#include "scenes/ground_drawing.hpp"
+#include "scenes/label_placement.hpp"
 #include "scenes/scene_layout.hpp"
 
 namespace numlab::cli {
@@ -86,24 +88,6 @@ std::string driver_text(const LinkageModel& model, double value) {
 
 std::size_t at(int joint) { return static_cast<std::size_t>(joint); }
 
-// The joints each joint shares a link or a body with.
-std::vector<std::vector<int>> neighbours(const LinkageModel& model) {
-  const auto& d = model.description();
-  std::vector<std::vector<int>> next(d.joints.size());
-  for (const auto& link : d.links) {
-    next[at(link.first)].push_back(link.second);
-    next[at(link.second)].push_back(link.first);
-  }
-  for (const auto& body : d.bodies) {
-    for (const int a : body.joints) {
-      for (const int b : body.joints) {
-        if (a != b) next[at(a)].push_back(b);
-      }
-    }
-  }
-  return next;
-}
-
 // The SMIL values over the frames from `first`, once round and back to `first`.
 template <typename Value>
 std::string values(const Scene& scene, std::size_t first, Value value) {
@@ -148,9 +132,14 @@ std::vector<double> path_lengths(const Scene& scene) {
   return length;
 }
 
-// Dashed, the path of every moving joint; the longest a little heavier (not counting the crank pin's
-// circle when there is another). Returns the longest's name too.
-std::string joint_paths(const Scene& scene, std::string& longest_name) {
+// The joints whose paths are drawn and the one drawn heavier: the chosen ones, all heavier; else every
+// moving joint, the longest path heavier (not counting the crank pin's circle when there is another).
+struct DrawnPaths {
+  std::vector<int> joints;
+  int heavy = -1;  // -1: every drawn path is heavy (they were chosen)
+};
+DrawnPaths drawn_paths(const Scene& scene, const LinkageSceneOptions& options) {
+  if (!options.paths.empty()) return {options.paths, -1};
   const std::vector<double> length = path_lengths(scene);
   const auto& moving = scene.model.moving();
   const auto& driver = scene.model.description().driver;
@@ -160,31 +149,35 @@ std::string joint_paths(const Scene& scene, std::string& longest_name) {
   }
   if (candidates.empty()) candidates = moving;
   const int longest = *std::max_element(candidates.begin(), candidates.end(), [&](int a, int b) { return length[at(a)] < length[at(b)]; });
-  longest_name = xml_escaped(scene.model.description().joints[at(longest)].name);
+  return {moving, longest};
+}
+
+// Dashed, the drawn paths (id "path-NAME"), the heavy ones heavier.
+std::string joint_paths(const Scene& scene, const DrawnPaths& paths) {
   std::string svg;
-  for (const int j : moving) {
+  for (const int j : paths.joints) {
     std::string d;
     for (std::size_t k = 0; k < scene.frames.size(); ++k) {
       const Point& p = scene.frames[k][at(j)];
       d += fmt::format("{} {:.3f} {:.3f} ", scene.run_start[k] ? "M" : "L", p.x(), -p.y());
     }
     if (scene.closed) d += "Z";
-    const bool heavy = j == longest;
-    svg += fmt::format("<path class=\"path\" d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.3g}\" "
+    const bool heavy = paths.heavy < 0 || j == paths.heavy;
+    svg += fmt::format("<path class=\"path\" id=\"path-{}\" d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.3g}\" "
                        "stroke-dasharray=\"{:.3g} {:.3g}\"/>\n",
-                       d, heavy ? path_colour : "#7fa7c9", (heavy ? 0.8 : 0.45) * scene.unit, 2 * scene.unit,
-                       1.5 * scene.unit);
+                       xml_escaped(scene.model.description().joints[at(j)].name), d, heavy ? path_colour : "#7fa7c9",
+                       (heavy ? 0.8 : 0.45) * scene.unit, 2 * scene.unit, 1.5 * scene.unit);
   }
   return svg;
 }
 
-// A ground joint: the fixed pivot's triangle with a short hatched ground line under it.
-std::string ground_pivot(const Point& p, double unit) {
-  std::string svg = fixed_pivot(p, unit);
-  const double y = -p.y() + 6.0 * unit;
-  svg += fmt::format("<path d=\"M {:.3f} {:.3f} h {:.3f}", p.x() - 5.0 * unit, y, 10.0 * unit);
-  for (int k = 0; k < 5; ++k) svg += fmt::format(" M {:.3f} {:.3f} l {:.3f} {:.3f}", p.x() - 4.0 * unit + 2.0 * k * unit, y, -1.5 * unit, 2.0 * unit);
-  return svg + fmt::format("\" stroke=\"#666\" stroke-width=\"{:.3g}\" fill=\"none\"/>\n", 0.4 * unit);
+// The ground joints' positions in the scene (zoomed).
+std::vector<Point> ground_pivots(const Scene& scene) {
+  std::vector<Point> pivots;
+  for (const auto& joint : scene.model.description().joints) {
+    if (joint.ground) pivots.push_back(joint.position * scene.zoom);
+  }
+  return pivots;
 }
 
 // The linkage at frames[first]: bodies, links, slider blocks, joints; with seconds > 0 it moves
@@ -200,14 +193,21 @@ std::string linkage(const Scene& scene, std::size_t first, double seconds) {
     const int pivot = d.driver.pivot, joint = d.driver.joint;
     return crank && ((a == pivot && b == joint) || (a == joint && b == pivot));
   };
-  std::string svg;
-  for (const auto& joint : d.joints) {
-    if (joint.ground) svg += ground_pivot(joint.position * scene.zoom, u);
-  }
+  std::string svg = ground_svg(ground_pivots(scene), u);
   for (const auto& body : d.bodies) {
-    const std::vector<int> hull = body_outline(body);
     const bool driven = crank && std::count(body.joints.begin(), body.joints.end(), d.driver.pivot) > 0 &&
                         std::count(body.joints.begin(), body.joints.end(), d.driver.joint) > 0;
+    int first_end = -1, second_end = -1;
+    if (body_on_one_line(body, first_end, second_end)) {  // a bar with points on it: its outer points
+      const Point &a = now[at(first_end)], &b = now[at(second_end)];
+      svg += fmt::format("<line class=\"body\" x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"{}\" "
+                         "stroke-width=\"{:.3g}\" stroke-linecap=\"round\">{}{}{}{}</line>\n",
+                         a.x(), -a.y(), b.x(), -b.y(), driven ? crank_colour : bar_colour, (driven ? 3.0 : 2.0) * u,
+                         animate(scene, first, seconds, "x1", x_of(first_end)), animate(scene, first, seconds, "y1", y_of(first_end)),
+                         animate(scene, first, seconds, "x2", x_of(second_end)), animate(scene, first, seconds, "y2", y_of(second_end)));
+      continue;
+    }
+    const std::vector<int> hull = body_outline(body);
     auto points = [&](const JointPositions& f) {
       std::string list;
       for (const int j : hull) list += fmt::format("{:.3f},{:.3f} ", f[at(j)].x(), -f[at(j)].y());
@@ -256,59 +256,89 @@ std::string linkage(const Scene& scene, std::size_t first, double seconds) {
   return svg;
 }
 
-// Where each joint's name goes: of sixteen directions around the joint, the one farthest (in angle)
-// from everything drawn at it: its links and bodies, its path (along the velocity, both ways), its
-// slider's line, a ground pivot's triangle below it.
-std::vector<Point> label_places(const Scene& scene, const JointPositions& now, const Eigen::VectorXd& velocity) {
+constexpr double name_size = 4.5;  // font size of the joints' names, in units
+
+// A name's half extent: 0.35 em per character (Helvetica's widest capitals are about 0.72 em) and
+// half an em up and down.
+Point name_half(const std::string& name, double unit) {
+  const double em = name_size * unit;
+  return {0.35 * em * static_cast<double>(name.size()), 0.5 * em};
+}
+
+// What the names keep clear of (label_placement.hpp): the joints' circles and slider blocks, the
+// links and the bodies (edges and spokes to their centre, so that a name does not sit inside one),
+// the ground, the slider lines, the arrows; the drawn paths count less.
+LabelObstacles label_obstacles(const Scene& scene, const JointPositions& now, const std::vector<int>& paths,
+                               const std::vector<std::pair<Point, Point>>& arrows) {
   const auto& d = scene.model.description();
-  const auto next = neighbours(scene.model);
-  std::vector<std::vector<Point>> taken(now.size());
-  for (std::size_t j = 0; j < now.size(); ++j) {
-    for (const int n : next[j]) {
-      if ((now[at(n)] - now[j]).norm() > 0.0) taken[j].push_back((now[at(n)] - now[j]).normalized());
+  const double u = scene.unit;
+  LabelObstacles obstacles;
+  for (const Point& p : now) obstacles.discs.push_back({p, 2.0 * u});
+  for (const auto& slider : d.sliders) obstacles.discs.push_back({now[at(slider.joint)], 4.8 * u});
+  for (const auto& link : d.links) obstacles.segments.push_back({now[at(link.first)], now[at(link.second)], 1.5 * u, false});
+  for (const auto& body : d.bodies) {
+    int a = -1, b = -1;
+    if (body_on_one_line(body, a, b)) {
+      obstacles.segments.push_back({now[at(a)], now[at(b)], 1.5 * u, false});
+      continue;
     }
-    if (d.joints[j].ground) taken[j].insert(taken[j].end(), {Point(0.0, -1.0), Point(0.5, -1.0).normalized(), Point(-0.5, -1.0).normalized()});
+    const std::vector<int> hull = body_outline(body);
+    Point centre = Point::Zero();
+    for (const int j : hull) centre += now[at(j)] / static_cast<double>(hull.size());
+    for (std::size_t k = 0; k < hull.size(); ++k) {
+      obstacles.segments.push_back({now[at(hull[k])], now[at(hull[(k + 1) % hull.size()])], 0.6 * u, false});
+      obstacles.segments.push_back({now[at(hull[k])], centre, 0.0, false});
+    }
   }
-  for (std::size_t k = 0; velocity.size() == scene.model.unknown_count() && k < scene.model.moving().size(); ++k) {
-    const Point v(velocity[static_cast<Eigen::Index>(2 * k)], velocity[static_cast<Eigen::Index>(2 * k + 1)]);
-    if (v.norm() > 0.0) taken[at(scene.model.moving()[k])].insert(taken[at(scene.model.moving()[k])].end(), {v.normalized(), -v.normalized()});
+  obstacles.boxes = ground_boxes(ground_pivots(scene), u);
+  double side = 0.0;
+  for (const auto& frame : scene.frames) {
+    for (const Point& p : frame) side = std::max(side, p.norm());
   }
   for (const auto& slider : d.sliders) {
     const double angle = slider.angle_deg * std::numbers::pi / 180.0;
-    const Point u(std::cos(angle), std::sin(angle));
-    taken[at(slider.joint)].insert(taken[at(slider.joint)].end(), {u, -u});
+    const Point direction(std::cos(angle), std::sin(angle)), through = slider.through * scene.zoom;
+    const Point middle = through + direction * direction.dot(now[at(slider.joint)] - through);
+    obstacles.segments.push_back({middle - 4.0 * side * direction, middle + 4.0 * side * direction, 0.2 * u, true});
   }
-  std::vector<Point> places;
-  for (std::size_t j = 0; j < now.size(); ++j) {
-    const Point best = clearest_direction(taken[j]);
-    const bool slider = std::any_of(d.sliders.begin(), d.sliders.end(), [&](const auto& s) { return at(s.joint) == j; });
-    places.push_back(now[j] + best * (slider ? 6.5 : 4.5) * scene.unit);
+  for (const auto& [from, to] : arrows) obstacles.segments.push_back({from, to, 0.4 * u, false});
+  // The paths, at most about 120 pieces each.
+  for (const int j : paths) {
+    const std::size_t stride = std::max<std::size_t>(1, scene.frames.size() / 120);
+    for (std::size_t k = stride; k < scene.frames.size(); k += stride) {
+      if (scene.run_start[k]) continue;
+      obstacles.segments.push_back({scene.frames[k - stride][at(j)], scene.frames[k][at(j)], 0.4 * u, true});
+    }
   }
-  return places;
+  return obstacles;
 }
 
-constexpr double name_size = 4.5;  // font size of the joints' names, in units
+// Each joint's name box (label_placement.hpp).
+std::vector<LabelBox> label_places(const Scene& scene, const JointPositions& now, const std::vector<int>& paths,
+                                   const std::vector<std::pair<Point, Point>>& arrows) {
+  std::vector<Point> halves;
+  for (const auto& joint : scene.model.description().joints) halves.push_back(name_half(joint.name, scene.unit));
+  return place_labels(std::vector<Point>(now.begin(), now.end()), halves, 2.0 * scene.unit,
+                      label_obstacles(scene, now, paths, arrows), scene.unit);
+}
 
-// Each joint's name, centred at its place.
-std::string joint_names(const Scene& scene, const std::vector<Point>& places) {
+// Each joint's name, centred in its box.
+std::string joint_names(const Scene& scene, const std::vector<LabelBox>& places) {
   const auto& joints = scene.model.description().joints;
   std::string svg;
   for (std::size_t j = 0; j < places.size(); ++j) {
-    svg += fmt::format("<text x=\"{:.3f}\" y=\"{:.3f}\" font-size=\"{:.3g}\" fill=\"#222\" text-anchor=\"middle\" "
+    svg += fmt::format("<text class=\"name\" x=\"{:.3f}\" y=\"{:.3f}\" font-size=\"{:.3g}\" fill=\"#222\" text-anchor=\"middle\" "
                        "dominant-baseline=\"central\">{}</text>\n",
-                       places[j].x(), -places[j].y(), name_size * scene.unit, xml_escaped(joints[j].name));
+                       places[j].centre.x(), -places[j].centre.y(), name_size * scene.unit, xml_escaped(joints[j].name));
   }
   return svg;
 }
 
-// The frame grown to hold every name (about 0.6 em per character, centred).
-void include_names(Frame& frame, const Scene& scene, const std::vector<Point>& places) {
-  const double em = name_size * scene.unit;
-  const auto& joints = scene.model.description().joints;
-  for (std::size_t j = 0; j < places.size(); ++j) {
-    const Point half(0.3 * em * static_cast<double>(joints[j].name.size()), 0.5 * em);
-    include(frame, places[j] - half);
-    include(frame, places[j] + half);
+// The frame grown to hold every name's box.
+void include_names(Frame& frame, const std::vector<LabelBox>& places) {
+  for (const LabelBox& box : places) {
+    include(frame, box.centre - box.half);
+    include(frame, box.centre + box.half);
   }
 }
 
@@ -333,16 +363,23 @@ std::string skipped_line(const Scene& scene, const LinkageSweep& sweep) {
   return fmt::format("{} of {} poses did not assemble and are skipped", scene.skipped, sweep.poses.size());
 }
 
-std::string paths_caption(const Scene& scene, const std::string& longest) {
+std::string paths_caption(const Scene& scene, const DrawnPaths& paths, const LinkageSceneOptions& options) {
+  const auto& joints = scene.model.description().joints;
+  if (paths.heavy < 0) {
+    std::vector<std::string> names;
+    for (const int j : paths.joints) names.push_back(xml_escaped(joints[at(j)].name));
+    return fmt::format("dashed: the path{} of {} over {} assembled poses ({})", names.size() == 1 ? "" : "s",
+                       fmt::join(names, ", "), scene.frames.size(), xml_escaped(options.paths_from));
+  }
   return fmt::format("dashed: the joints' paths over {} assembled poses; heavier: {}'s, the longest{}", scene.frames.size(),
-                     longest, scene.model.crank_driven() ? " but the crank pin's" : "");
+                     xml_escaped(joints[at(paths.heavy)].name), scene.model.crank_driven() ? " but the crank pin's" : "");
 }
 
 // Each moving joint's velocity as an arrow from the joint, the longest arrow_share of the frame's
 // larger side; the frame grows to hold the tips and the caption states the scale. A velocity that is
-// missing or not finite (a singular J) is said so, not drawn.
+// missing or not finite (a singular J) is said so, not drawn. Each arrow's ends go to `drawn`.
 std::string arrows_at(const Scene& scene, const JointPositions& now, const Eigen::VectorXd& v, Frame& frame,
-                      Caption& caption) {
+                      Caption& caption, std::vector<std::pair<Point, Point>>& drawn) {
   const LinkageModel& model = scene.model;
   if (v.size() != model.unknown_count() || !v.allFinite()) {
     caption.lines.emplace_back("arrows: the velocity at this pose is not finite (J is singular); none drawn");
@@ -364,6 +401,7 @@ std::string arrows_at(const Scene& scene, const JointPositions& now, const Eigen
     const Point& from = now[at(model.moving()[k])];
     const Point to = from + velocity_of(k) * scale * scene.zoom;
     include(frame, to);
+    drawn.emplace_back(from, to);
     svg += fmt::format("<line class=\"velocity\" x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"{}\" "
                        "stroke-width=\"{:.3g}\" marker-end=\"url(#velocity-head)\"/>\n",
                        from.x(), -from.y(), to.x(), -to.y(), arrow_colour, 0.7 * scene.unit);
@@ -374,14 +412,24 @@ std::string arrows_at(const Scene& scene, const JointPositions& now, const Eigen
   return svg;
 }
 
+// Every chosen path must be a moving joint's.
+void check_paths(const LinkageModel& model, const LinkageSceneOptions& options) {
+  for (const int j : options.paths) {
+    if (std::find(model.moving().begin(), model.moving().end(), j) == model.moving().end()) {
+      throw std::invalid_argument(fmt::format("joint {} has no path to draw: it is not a moving joint", j));
+    }
+  }
+}
+
 }  // namespace
 
 std::string linkage_pose_svg(const mechanisms::LinkageModel& model, const mechanisms::LinkageSweep& sweep,
-                             std::size_t pose, bool velocity_arrows) {
+                             std::size_t pose, const LinkageSceneOptions& options) {
   if (pose >= sweep.poses.size()) throw std::invalid_argument(fmt::format("no pose {} in the sweep", pose));
   if (!assembled(model, sweep.poses[pose])) {
     throw std::invalid_argument(fmt::format("the pose at {} did not assemble", driver_text(model, sweep.poses[pose].driver)));
   }
+  check_paths(model, options);
   const Scene scene = scene_of(model, sweep);
   const std::size_t first = static_cast<std::size_t>(
       std::find(scene.sweep_index.begin(), scene.sweep_index.end(), pose) - scene.sweep_index.begin());
@@ -390,16 +438,19 @@ std::string linkage_pose_svg(const mechanisms::LinkageModel& model, const mechan
   for (const auto& joints : scene.frames) points.insert(points.end(), joints.begin(), joints.end());
   Frame frame = frame_of(points);
 
-  std::string longest;
-  Caption caption{{fmt::format("{} at {}", title_of(model), driver_text(model, sweep.poses[pose].driver))}, scene.unit};
-  std::string drawing = joint_paths(scene, longest);
-  caption.lines.push_back(paths_caption(scene, longest));
+  const std::string reason = options.pose_reason.empty() ? "" : " (" + xml_escaped(options.pose_reason) + ")";
+  Caption caption{{fmt::format("{} at {}{}", title_of(model), driver_text(model, sweep.poses[pose].driver), reason)}, scene.unit};
+  const DrawnPaths paths = drawn_paths(scene, options);
+  std::string drawing = joint_paths(scene, paths);
+  caption.lines.push_back(paths_caption(scene, paths, options));
   if (scene.skipped > 0) caption.lines.push_back(skipped_line(scene, sweep));
 
   const Eigen::VectorXd& velocity = sweep.poses[pose].velocity;
-  const std::string arrows = velocity_arrows ? arrows_at(scene, now, velocity, frame, caption) : std::string();
-  const std::vector<Point> places = label_places(scene, now, velocity);
-  include_names(frame, scene, places);
+  std::vector<std::pair<Point, Point>> arrow_ends;
+  const std::string arrows = options.velocity_arrows ? arrows_at(scene, now, velocity, frame, caption, arrow_ends) : std::string();
+  const std::vector<int> heavy = paths.heavy < 0 ? paths.joints : std::vector<int>{paths.heavy};
+  const std::vector<LabelBox> places = label_places(scene, now, heavy, arrow_ends);
+  include_names(frame, places);
   frame = caption.fitted(frame);
   drawing = guides_across(scene, frame) + drawing + linkage(scene, first, 0.0);
   // The arrows over everything (a joint's circle would hide an arrow's tail), then the names.
@@ -407,8 +458,16 @@ std::string linkage_pose_svg(const mechanisms::LinkageModel& model, const mechan
   return picture(scene, frame, caption, drawing);
 }
 
+std::string linkage_pose_svg(const mechanisms::LinkageModel& model, const mechanisms::LinkageSweep& sweep,
+                             std::size_t pose, bool velocity_arrows) {
+  LinkageSceneOptions options;
+  options.velocity_arrows = velocity_arrows;
+  return linkage_pose_svg(model, sweep, pose, options);
+}
+
 std::string linkage_animation_svg(const mechanisms::LinkageModel& model, const mechanisms::LinkageSweep& sweep,
-                                  double seconds) {
+                                  double seconds, const LinkageSceneOptions& options) {
+  check_paths(model, options);
   const Scene scene = scene_of(model, sweep);
   std::vector<Point> points;
   for (const auto& joints : scene.frames) points.insert(points.end(), joints.begin(), joints.end());
@@ -418,13 +477,33 @@ std::string linkage_animation_svg(const mechanisms::LinkageModel& model, const m
                                driver_text(model, first.driver), model.crank_driven() ? fmt::format("{:g} deg", last.driver)
                                                                                       : fmt::format("{:g}", last.driver))},
                   scene.unit};
-  std::string longest;
-  std::string drawing = joint_paths(scene, longest);
-  caption.lines.push_back(paths_caption(scene, longest));
+  const DrawnPaths paths = drawn_paths(scene, options);
+  std::string drawing = joint_paths(scene, paths);
+  caption.lines.push_back(paths_caption(scene, paths, options));
   caption.lines.push_back(scene.skipped > 0 ? skipped_line(scene, sweep) : std::string("every pose of the sweep assembled"));
   frame = caption.fitted(frame);
   drawing = guides_across(scene, frame) + drawing + linkage(scene, 0, seconds);
   return picture(scene, frame, caption, drawing);
+}
+
+std::optional<std::size_t> best_conditioned_pose(const mechanisms::LinkageModel& model, const mechanisms::LinkageSweep& sweep) {
+  std::optional<std::size_t> best, first;
+  for (std::size_t k = 0; k < sweep.poses.size(); ++k) {
+    const LinkagePose& pose = sweep.poses[k];
+    if (!assembled(model, pose)) continue;
+    if (!first) first = k;
+    if (std::isfinite(pose.condition) && (!best || pose.condition < sweep.poses[*best].condition)) best = k;
+  }
+  return best ? best : first;
+}
+
+std::optional<std::size_t> pose_at(const mechanisms::LinkageSweep& sweep, double value) {
+  const auto& poses = sweep.poses;
+  const double step = poses.size() > 1 ? std::abs(poses[1].driver - poses[0].driver) : 1.0;
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    if (std::abs(poses[k].driver - value) <= 1e-9 * std::max(step, 1e-300)) return k;
+  }
+  return std::nullopt;
 }
 
 }  // namespace numlab::cli

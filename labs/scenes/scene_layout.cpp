@@ -41,6 +41,28 @@ std::vector<int> body_outline(const mechanisms::BodySpec& body) {
   return joints;
 }
 
+bool body_on_one_line(const mechanisms::BodySpec& body, int& first, int& second) {
+  // 1. The two local points farthest apart: the body's size.
+  const auto& p = body.local;
+  std::size_t a = 0, b = 0;
+  double size = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      if ((p[j] - p[i]).norm() > size) size = (p[j] - p[i]).norm(), a = i, b = j;
+    }
+  }
+  if (size == 0.0 || body.joints.size() != p.size()) return false;
+  // 2. Every point within 1e-9 of the size from the line through them.
+  const Point u = (p[b] - p[a]) / size;
+  for (const Point& q : p) {
+    const Point d = q - p[a];
+    if (std::abs(u.x() * d.y() - u.y() * d.x()) > 1e-9 * size) return false;
+  }
+  first = body.joints[a];
+  second = body.joints[b];
+  return true;
+}
+
 Point clearest_direction(const std::vector<Point>& taken) {
   Point best(1.0, 0.0);
   double clearance = -1.0;

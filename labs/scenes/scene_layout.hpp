@@ -15,6 +15,11 @@ namespace numlab::cli {
 // A rigid body that cannot flip keeps that order in every pose.
 std::vector<int> body_outline(const mechanisms::BodySpec& body);
 
+// A body whose local points all lie on one line (within 1e-9 of its size, the largest distance
+// between two of its points: the reader's test) is drawn as a bar. True for such a body, with its
+// two outer joints (the two local points farthest apart) in `first` and `second`.
+bool body_on_one_line(const mechanisms::BodySpec& body, int& first, int& second);
+
 // Of sixteen directions, the one farthest in angle from every unit vector in `taken`.
 Eigen::Vector2d clearest_direction(const std::vector<Eigen::Vector2d>& taken);
 
