@@ -15,6 +15,7 @@
 #include "exercises/replay.hpp"
 #include "exercises/results.hpp"
 #include "exercises/starters.hpp"
+#include "exercises/trace_page.hpp"
 #include "commands/exercise_model.hpp"
 #include "numlab/linalg/matrix_file.hpp"
 #include "numlab/printable_text.hpp"
@@ -265,7 +266,8 @@ int ExerciseCommand::check() const {
   if (out) {
     outputs = {{(fs::path(out_dir_) / "report.html").string(), "--out"},
                {(fs::path(out_dir_) / "results.json").string(), "--out"},
-               {(fs::path(out_dir_) / "replay" / "01-check.jsonl").string(), "--out"}};
+               {(fs::path(out_dir_) / "replay" / "01-check.jsonl").string(), "--out"},
+               {(fs::path(out_dir_) / "trace.html").string(), "--out"}};
     check_outputs(outputs, {});
   }
   // 2. The program, started in its sandbox (a command that cannot start is bad input).
@@ -288,6 +290,13 @@ int ExerciseCommand::check() const {
   }
   if (out) {
     ensure_directory(out_dir_);
+    // trace.html only for a failing trace check; one a run before left is removed (it would mislead).
+    if (const exercises::CheckResult* traced = exercises::failing_trace_check(results)) {
+      write_file_atomically(outputs[3].path, exercises::trace_page_html(exercise, *traced, variant));
+    } else {
+      std::error_code ignored;
+      fs::remove(outputs[3].path, ignored);
+    }
     write_file_atomically(outputs[0].path, exercises::results_html(exercise, results, shell_words(program_), variant));
     write_file_atomically(outputs[1].path, json.dump(2) + "\n");
     write_replays(out_dir_, replays);

@@ -18,6 +18,7 @@
 #include "exercises/grading.hpp"
 #include "commands/exercise_model.hpp"
 #include "exercises/results.hpp"
+#include "exercises/trace_page.hpp"
 #include "numlab/printable_text.hpp"
 #include "output/exit_codes.hpp"
 #include "output/files.hpp"
@@ -101,6 +102,8 @@ int ExerciseGradeCommand::grade_one() const {
                                                   graded.checked ? graded.command : graded.row.diagnosis, variant));
     if (!graded.build_log.empty())
       write_file_atomically((fs::path(out_dir_) / "build.log").string(), graded.build_log);
+    if (const exercises::CheckResult* traced = exercises::failing_trace_check(graded.results))
+      write_file_atomically((fs::path(out_dir_) / "trace.html").string(), exercises::trace_page_html(exercise, *traced, variant));
   } catch (const std::exception& error) {
     graded.row.student = worker_student_;
     graded.row.exercise = exercise.name;

@@ -67,6 +67,7 @@ CheckResult run_one(const std::string& exercise, const Check& check, Session& in
     result.hint = verdict.hint;
     result.references = verdict.references;
     if (!verdict.passed) result.diagnosis = verdict.diagnosis;
+    if (!verdict.passed) result.trace = verdict.trace;
   } catch (const StudentError& error) {
     result.status = CheckStatus::fail;
     result.message = fmt::format("your program replied with an error: {}", error.what());

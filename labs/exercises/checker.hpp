@@ -35,6 +35,7 @@ struct CheckResult {
   std::vector<Exchange> exchanges;  // the check's requests, in order
   std::string replay;  // the command that replays a failure (set by `exercise check --out`), or ""
   std::optional<Diagnosis> diagnosis;  // the detector that explained the failure, if one fired
+  std::optional<TraceComparison> trace{};  // a failing trace check's traces side by side (trace.html)
 };
 
 // The diagnosis of a whole run: the most specific over the checks that did not pass (the first

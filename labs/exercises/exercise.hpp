@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "exercises/diagnosis.hpp"
+#include "exercises/trace_comparison.hpp"
 #include "exercises/variant.hpp"
 
 namespace numlab::exercises {
@@ -38,6 +39,8 @@ struct Verdict {
   std::vector<ReferenceTime> references;
   // The most specific detector that fired on this failure, with its evidence; it replaces the hint.
   std::optional<Diagnosis> diagnosis;
+  // A failing trace check's two traces, step by step, and where they part (trace_comparison.hpp).
+  std::optional<TraceComparison> trace{};
 
   static Verdict pass(std::vector<ReferenceTime> references = {}) {
     return Verdict{true, "", "", std::move(references), std::nullopt};

@@ -270,6 +270,19 @@ Verdict missing_trace(const Problem& p, const linear::ReferenceTimes& times) {
                        times.medians());
 }
 
+// The student's sweeps beside numlab's for trace.html (trace_comparison.hpp); the check's tolerance
+// on x at the parting sweep.
+TraceComparison sweeps_side_by_side(const Problem& p, const Reference& reference, const nlohmann::json& trace,
+                                    std::size_t parting, double largest) {
+  const double allowed = 100.0 * static_cast<double>(parting + 1) * static_cast<double>(p.A.cols()) * eps * largest;
+  return sweep_comparison(p.label, trace, reference.xs, reference.updates, parting, allowed);
+}
+
+Verdict with_trace(Verdict verdict, TraceComparison comparison) {
+  verdict.trace = std::move(comparison);
+  return verdict;
+}
+
 // Task 4: the trace, sweep by sweep, against numlab's stepper.
 Verdict sweeps_like_numlab(Session& session, const std::vector<Problem>& problems) {
   linear::ReferenceTimes times;
@@ -284,11 +297,12 @@ Verdict sweeps_like_numlab(Session& session, const std::vector<Problem>& problem
     const double n = static_cast<double>(p.A.cols());
     for (std::size_t s = 0; s < reference.xs.size(); ++s) {
       if (s >= trace->size()) {
-        return Verdict::fail(fmt::format("{}: your trace ends at sweep {}; {}: at sweep {} its update_inf {} is above "
-                                         "tolerance*max(1,|x|)",
-                                         p.label, trace->size(), numlab_ending(p, reference), s,
-                                         s == 0 ? std::string("-") : sci(reference.updates[s - 1])),
-                             diagnosis_for(p, reply), stop_test_hint, times.medians());
+        return with_trace(Verdict::fail(fmt::format("{}: your trace ends at sweep {}; {}: at sweep {} its update_inf {} "
+                                                    "is above tolerance*max(1,|x|)",
+                                                    p.label, trace->size(), numlab_ending(p, reference), s,
+                                                    s == 0 ? std::string("-") : sci(reference.updates[s - 1])),
+                                        diagnosis_for(p, reply), stop_test_hint, times.medians()),
+                          sweeps_side_by_side(p, reference, *trace, s, largest));
       }
       const nlohmann::json& entry = linear::trace_entry(*trace, s);
       const Eigen::VectorXd x = vector_field(entry, "x", p.A.cols());
@@ -298,24 +312,28 @@ Verdict sweeps_like_numlab(Session& session, const std::vector<Problem>& problem
       Eigen::Index i = 0;
       const double difference = (x - expected).cwiseAbs().maxCoeff(&i);
       if (difference > allowed) {
-        return Verdict::fail(fmt::format("{}: sweep {}: x[{}] = {}, numlab's sweep gives {} ({}; allowed {} "
-                                         "= 100*sweep*n*eps*max(1,|x|))",
-                                         p.label, s + 1, i, digits17(x(i)), digits17(expected(i)),
-                                         exercises::difference(x(i), expected(i)), sci(allowed)),
-                             diagnosis_for(p, reply), departure_hint(p, reference, s, x, allowed), times.medians());
+        return with_trace(Verdict::fail(fmt::format("{}: sweep {}: x[{}] = {}, numlab's sweep gives {} ({}; allowed {} "
+                                                    "= 100*sweep*n*eps*max(1,|x|))",
+                                                    p.label, s + 1, i, digits17(x(i)), digits17(expected(i)),
+                                                    exercises::difference(x(i), expected(i)), sci(allowed)),
+                                        diagnosis_for(p, reply), departure_hint(p, reference, s, x, allowed),
+                                        times.medians()),
+                          sweeps_side_by_side(p, reference, *trace, s, largest));
       }
       if (std::abs(update - reference.updates[s]) > 2.0 * allowed) {
-        return Verdict::fail(fmt::format("{}: sweep {}: update_inf {}, numlab's {} ({}; allowed difference {})", p.label,
-                                         s + 1, digits17(update), digits17(reference.updates[s]),
-                                         exercises::difference(update, reference.updates[s]), sci(2.0 * allowed)),
-                             diagnosis_for(p, reply), "update_inf is max_i |x_i(new) - x_i(old)| over the sweep",
-                             times.medians());
+        return with_trace(Verdict::fail(fmt::format("{}: sweep {}: update_inf {}, numlab's {} ({}; allowed difference {})",
+                                                    p.label, s + 1, digits17(update), digits17(reference.updates[s]),
+                                                    exercises::difference(update, reference.updates[s]), sci(2.0 * allowed)),
+                                        diagnosis_for(p, reply), "update_inf is max_i |x_i(new) - x_i(old)| over the sweep",
+                                        times.medians()),
+                          sweeps_side_by_side(p, reference, *trace, s, largest));
       }
     }
     if (trace->size() > reference.xs.size()) {
-      return Verdict::fail(fmt::format("{}: your trace goes on to sweep {}; {} (status {} there)", p.label,
-                                       trace->size(), numlab_ending(p, reference), status_name(reference.status)),
-                           diagnosis_for(p, reply), stop_test_hint, times.medians());
+      return with_trace(Verdict::fail(fmt::format("{}: your trace goes on to sweep {}; {} (status {} there)", p.label,
+                                                  trace->size(), numlab_ending(p, reference), status_name(reference.status)),
+                                      diagnosis_for(p, reply), stop_test_hint, times.medians()),
+                        sweeps_side_by_side(p, reference, *trace, reference.xs.size(), largest));
     }
   }
   return Verdict::pass(times.medians());

@@ -137,6 +137,7 @@ const char* const singular_threshold_hint =
 struct Departure {
   std::string message;
   std::string hint;
+  std::size_t column = 0;  // where the trace departs (0-based)
 };
 
 // True when every entry of the trace pivots on its own column's row: no row was ever swapped in.
@@ -180,7 +181,7 @@ std::optional<Departure> first_departure(const nlohmann::json& trace, const Refe
   for (std::size_t k = 0; k < columns; ++k) {
     if (k >= trace.size()) {
       return Departure{fmt::format("the trace stops after {} columns; numlab's GEPP pivots on {}", trace.size(), columns),
-                       "give one trace entry per column, 0 ... n-1"};
+                       "give one trace entry per column, 0 ... n-1", k};
     }
     const nlohmann::json& entry = linear::trace_entry(trace, k);
     const long long column = integer_field(entry, "column");
@@ -189,13 +190,13 @@ std::optional<Departure> first_departure(const nlohmann::json& trace, const Refe
     const PivotChoice& expected = reference.pivots[k];
     if (column != static_cast<long long>(k)) {
       return Departure{fmt::format("trace[{}] is for column {}; expected column {}", k, column, k),
-                       "one trace entry per column, in order, columns counted from 0"};
+                       "one trace entry per column, in order, columns counted from 0", k};
     }
     if (row != expected.row) {
       if (row < static_cast<long long>(k) || row >= reference.n) {
         return Departure{fmt::format("column {}: pivot_row {} is not a row at or below the diagonal ({} ... {})", k,
                                      row, k, reference.n - 1),
-                         "pivot_row is the 0-based row of the matrix as it stands at that column"};
+                         "pivot_row is the 0-based row of the matrix as it stands at that column", k};
       }
       const Eigen::VectorXd& candidates = expected.candidates;
       const double yours = candidates(row - static_cast<long long>(k));
@@ -209,7 +210,7 @@ std::optional<Departure> first_departure(const nlohmann::json& trace, const Refe
                                    "{} (|a| = {})",
                                    k, row, sci(std::abs(yours)), expected.row,
                                    sci(std::abs(candidates(expected.row - static_cast<int>(k))))),
-                       hint};
+                       hint, k};
     }
     if (std::abs(pivot - expected.pivot) > pivot_tolerance) {
       return Departure{fmt::format("column {}: your pivot on row {} is {}; numlab's is {} ({}), allowed difference {} "
@@ -217,12 +218,12 @@ std::optional<Departure> first_departure(const nlohmann::json& trace, const Refe
                                    k, row, digits17(pivot), digits17(expected.pivot),
                                    difference(pivot, expected.pivot), sci(pivot_tolerance)),
                        "the right row but another value: an earlier column left different numbers below it "
-                       "(a swap of only part of the row, or a wrong elimination update)"};
+                       "(a swap of only part of the row, or a wrong elimination update)", k};
     }
   }
   if (trace.size() > columns) {
     return Departure{fmt::format("the trace has {} entries; numlab's GEPP pivots on {} columns", trace.size(), columns),
-                     ""};
+                     "", columns};
   }
   return std::nullopt;
 }
@@ -320,6 +321,20 @@ Verdict reports_singular(Session& session, const std::vector<System>& systems) {
   return Verdict::pass(times.medians());
 }
 
+// The student's pivot trace beside numlab's for trace.html (trace_comparison.hpp).
+TraceComparison pivots_side_by_side(const System& system, const Reference& reference, const nlohmann::json& trace,
+                                    std::size_t parting) {
+  std::vector<int> rows;
+  std::vector<double> pivots;
+  std::vector<Eigen::VectorXd> candidates;
+  for (const PivotChoice& choice : reference.pivots) {
+    rows.push_back(choice.row);
+    pivots.push_back(choice.pivot);
+    candidates.push_back(choice.candidates);
+  }
+  return pivot_comparison(system.label, trace, rows, pivots, candidates, parting);
+}
+
 // Task 3: the pivot trace, column by column, against numlab's stepper.
 Verdict pivots_like_numlab(Session& session, const std::vector<System>& systems) {
   linear::ReferenceTimes times;
@@ -344,8 +359,10 @@ Verdict pivots_like_numlab(Session& session, const std::vector<System>& systems)
                            singular_threshold_hint, times.medians());
     }
     if (const auto departure = first_departure(*trace, reference)) {
-      return Verdict::fail(system.label + ": " + departure->message, diagnosis_for(system, reference, reply),
-                           departure->hint, times.medians());
+      Verdict verdict = Verdict::fail(system.label + ": " + departure->message, diagnosis_for(system, reference, reply),
+                                      departure->hint, times.medians());
+      verdict.trace = pivots_side_by_side(system, reference, *trace, departure->column);
+      return verdict;
     }
   }
   return Verdict::pass(times.medians());

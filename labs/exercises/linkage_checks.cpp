@@ -79,6 +79,7 @@ std::optional<TraceDeparture> departure_at(const std::vector<TraceRow>& student,
   const TraceRow& ref = reference[k];
   const TraceRow& got = student[k];
   std::optional<TraceDeparture> departure{std::in_place};
+  departure->iteration = k;
   departure->message = fmt::format(
       "iteration {}: residual_inf = {}, step_inf = {}; numlab's Newton (GEPP, x <- x + dx with J dx = -f) from the same "
       "start has residual_inf = {} ({}), step_inf = {} ({}); {}",
@@ -116,7 +117,8 @@ std::optional<TraceDeparture> first_departure(const std::vector<TraceRow>& stude
                       "(residual_inf {} after iteration {})",
                       k + 1, student.size(), sci(reference[k].residual_inf), k + 1),
           "a stop test that passes too early (a sum of residuals that cancel, a signed test without abs), or a J that "
-          "is singular where f's derivative is not (a column from the wrong angle can make it so)"};
+          "is singular where f's derivative is not (a column from the wrong angle can make it so)",
+          k};
     }
     const TraceRow& got = student[k];
     const bool step_ok = std::abs(got.step_inf - ref.step_inf) <= relative * ref.step_inf + step_floor;

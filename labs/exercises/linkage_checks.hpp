@@ -98,6 +98,7 @@ std::optional<std::vector<TraceRow>> read_trace(const nlohmann::json& reply);
 struct TraceDeparture {
   std::string message;
   std::string hint;
+  std::size_t iteration = 0;  // the row that departs (0-based)
 };
 std::optional<TraceDeparture> first_departure(const std::vector<TraceRow>& student, const std::vector<TraceRow>& reference,
                                               double relative, double residual_floor, double step_floor,

@@ -12,6 +12,7 @@
 // and may have
 //   static std::vector<SlippedClosure> constant_angle_slips(const Lengths&);  // a constant angle typed in degrees
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -313,6 +314,22 @@ class NewtonBattery {
     return verdict;
   }
 
+  // The student's trace beside numlab's for trace.html (trace_comparison.hpp), parting at `parting`.
+  static TraceComparison side_by_side(const Request& request, const std::vector<TraceRow>& trace,
+                                      const Reference& reference, std::size_t parting) {
+    std::vector<double> your_residuals, your_steps, residuals, steps;
+    for (const TraceRow& row : trace) {
+      your_residuals.push_back(row.residual_inf);
+      your_steps.push_back(row.step_inf);
+    }
+    for (const TraceRow& row : reference.rows) {
+      residuals.push_back(row.residual_inf);
+      steps.push_back(row.step_inf);
+    }
+    return newton_comparison(Linkage::where(request.angle), your_residuals, your_steps, residuals, steps, parting,
+                             {reference.relative, rounding(), reference.step_floor, request.tolerance});
+  }
+
   // Task: the trace follows numlab's Newton from the same start.
   static Verdict trace_matches(Session& session, const std::vector<Request>& requests) {
     for (const Request& request : requests) {
@@ -323,11 +340,19 @@ class NewtonBattery {
       const Reference reference = reference_for(request);
       if (auto departure = first_departure(*trace, reference.rows, reference.relative, rounding(), reference.step_floor,
                                            reference.start_residual)) {
-        return Verdict::fail(fmt::format("{} (your status \"{}\" after {} iterations), {}", where, answer.reply.status,
-                                         answer.reply.iterations, departure->message),
-                             diagnosis(request, answer), departure->hint);
+        Verdict verdict = Verdict::fail(fmt::format("{} (your status \"{}\" after {} iterations), {}", where,
+                                                    answer.reply.status, answer.reply.iterations, departure->message),
+                                        diagnosis(request, answer), departure->hint);
+        verdict.trace = side_by_side(request, *trace, reference, departure->iteration);
+        return verdict;
       }
-      if (auto miscount = count_mismatch(request, answer, *trace, reference)) return *miscount;
+      if (auto miscount = count_mismatch(request, answer, *trace, reference)) {
+        // the traces part where one of them ends (when only `iterations` differs, no step parts)
+        if (trace->size() != reference.rows.size()) {
+          miscount->trace = side_by_side(request, *trace, reference, std::min(trace->size(), reference.rows.size()));
+        }
+        return *miscount;
+      }
     }
     return Verdict::pass(reference_times(requests.front()));
   }

@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "exercises/trace_page.hpp"
 #include "output/report_style.hpp"
 
 namespace numlab::exercises {
@@ -121,6 +122,8 @@ nlohmann::ordered_json results_json(const std::vector<CheckResult>& results, con
     test["message"] = result.status == CheckStatus::pass ? nlohmann::ordered_json() : nlohmann::ordered_json(message_with_hint(result));
     test["task_id"] = result.task_id;
     test["output"] = result.output.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(result.output);
+    // An extra field of a failing trace check: both traces and where they part (trace.html draws it).
+    if (result.status != CheckStatus::pass && result.trace) test["trace"] = trace_json(*result.trace);
     nlohmann::ordered_json timing;
     timing["you"] = result.seconds_per_request > 0.0 ? nlohmann::ordered_json(result.seconds_per_request)
                                                       : nlohmann::ordered_json();
@@ -178,6 +181,10 @@ std::string results_html(const Exercise& exercise, const std::vector<CheckResult
     body += "<p><strong>Fix first:</strong> " + html_escape(first->name) + " — " +
             html_escape(first_line(first->message)) + "</p>\n";
     if (!first->replay.empty()) body += "<p>Replay it: <code>" + html_escape(first->replay) + "</code></p>\n";
+    if (const CheckResult* traced = failing_trace_check(results)) {
+      body += "<p>Your trace beside numlab's, step by step: <a href=\"trace.html\">trace.html</a> (" +
+              html_escape(traced->trace->sentence) + ")</p>\n";
+    }
     body += "</div>\n";
   }
   if (variant.active()) body += "<p>Variant: <code>" + html_escape(*variant.id()) + "</code></p>\n";

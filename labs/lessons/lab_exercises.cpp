@@ -17,6 +17,7 @@
 #include "exercises/child_session.hpp"
 #include "exercises/results.hpp"
 #include "exercises/starters.hpp"
+#include "exercises/trace_page.hpp"
 #include "lessons/lab.hpp"
 #include "lessons/lab_sentences.hpp"
 
@@ -51,6 +52,8 @@ std::vector<CheckResult> check(LabSession& session, const exercises::Exercise& e
   ensure_directory(out);
   write_file_atomically(out + "/results.json", exercises::results_json(results).dump(2) + "\n");
   write_file_atomically(out + "/report.html", exercises::results_html(exercise, results, "python3 " + program));
+  if (const CheckResult* traced = exercises::failing_trace_check(results))
+    write_file_atomically(out + "/trace.html", exercises::trace_page_html(exercise, *traced));
   return results;
 }
 

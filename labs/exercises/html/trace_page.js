@@ -1,0 +1,135 @@
+// trace.html (labs/exercises/trace_page.cpp): steps through the student's trace and numlab's
+// together. The page works without this script (the static table); with it, one step at a time is
+// shown side by side, and the parting step says how the two traces part.
+(function () {
+  "use strict";
+  var data = JSON.parse(document.getElementById("trace-data").textContent);
+  var steps = Math.max(data.yours.length, data.numlab.length);
+  var names = { pivot_row: "pivot row", residual_inf: "||f||_inf", step_inf: "||dx||_inf" };
+  var element = function (id) { return document.getElementById(id); };
+  var stepper = element("stepper"), slider = element("slider"), table = element("trace-table");
+  var current = -1;
+
+  // 1. A small DOM helper: make(tag, attributes, children...).
+  function make(tag, attributes) {
+    var node = document.createElement(tag);
+    Object.keys(attributes || {}).forEach(function (key) {
+      if (key === "text") node.textContent = attributes[key];
+      else node.setAttribute(key, attributes[key]);
+    });
+    for (var i = 2; i < arguments.length; i++) if (arguments[i]) node.appendChild(arguments[i]);
+    return node;
+  }
+
+  function shown(value) {
+    if (value === null || value === undefined) return "\u2014";
+    return String(value);
+  }
+
+  // 2. The values of one step: each field (a list field entry by entry), yours beside numlab's.
+  function values(k) {
+    var yours = data.yours[k] || null, numlab = data.numlab[k] || null;
+    var caption = "Step " + (k + 1) + ": yours beside numlab's";
+    var body = make("tbody");
+    data.fields.forEach(function (field) {
+      var a = yours ? yours[field] : undefined, b = numlab ? numlab[field] : undefined;
+      var list = Array.isArray(a) || Array.isArray(b);
+      var count = list ? Math.max(Array.isArray(a) ? a.length : 0, Array.isArray(b) ? b.length : 0) : 1;
+      for (var i = 0; i < count; i++) {
+        var label = list ? field + "[" + i + "]" : names[field] || field;
+        var mine = list ? (Array.isArray(a) ? a[i] : undefined) : a;
+        var theirs = list ? (Array.isArray(b) ? b[i] : undefined) : b;
+        var parts = k === data.parting && field === data.parting_field && (!list || data.parting_entry === i);
+        var row = make("tr", parts ? { "class": "differs-row" } : {},
+          make("th", { scope: "row", text: label }),
+          make("td", { "class": parts ? "differs" : "", text: shown(mine) }),
+          make("td", { text: shown(theirs) }));
+        body.appendChild(row);
+      }
+    });
+    return make("table", { id: "step-table" }, make("caption", { text: caption }),
+      make("thead", {}, make("tr", {}, make("th", { scope: "col", text: "" }), make("th", { scope: "col", text: "yours" }),
+        make("th", { scope: "col", text: "numlab's" }))), body);
+  }
+
+  // 3. What numlab chose from at this step (GEPP: the column's entries on and below the diagonal).
+  function context(k) {
+    var here = data.context && data.context[k];
+    if (!here || !here.candidates) return null;
+    var numlabRow = data.numlab[k] ? data.numlab[k].pivot_row : null;
+    var yourRow = k <= data.parting && data.yours[k] ? data.yours[k].pivot_row : null;
+    var body = make("tbody");
+    here.candidates.forEach(function (a, j) {
+      var i = here.first_row + j, marks = [];
+      if (i === numlabRow) marks.push("numlab's pivot");
+      if (i === yourRow) marks.push("your pivot");
+      var cls = i === numlabRow ? "chosen-numlab" : i === yourRow ? "chosen-yours" : "";
+      body.appendChild(make("tr", { id: "candidate-" + i },
+        make("th", { scope: "row", text: "row " + i }), make("td", { "class": cls, text: String(a) }),
+        make("td", { "class": cls, text: String(Math.abs(a)) }), make("td", { text: marks.join(", ") })));
+    });
+    var caption = "numlab's column " + (k + data.first_number) + " before the swap: a_ik for i = " + here.first_row +
+      " and below" + (k > data.parting ? " (numlab's matrix: yours differs after step " + (data.parting + 1) + ")" : "");
+    return make("table", { id: "candidates" }, make("caption", { text: caption }),
+      make("thead", {}, make("tr", {}, make("th", { scope: "col", text: "row" }), make("th", { scope: "col", text: "a_ik" }),
+        make("th", { scope: "col", text: "|a_ik|" }), make("th", { scope: "col", text: "" }))), body);
+  }
+
+  function replace(id, node) {
+    var box = element(id);
+    while (box.firstChild) box.removeChild(box.firstChild);
+    if (node) box.appendChild(node);
+  }
+
+  // 4. Show step k (0-based): the controls, the sentence, the values, the table's row.
+  function go(k) {
+    k = Math.max(0, Math.min(steps - 1, k));
+    if (k === current) return;
+    current = k;
+    slider.value = String(k + 1);
+    element("first").disabled = element("previous").disabled = k === 0;
+    element("last").disabled = element("next").disabled = k === steps - 1;
+    var where = k < data.parting ? "the same as numlab's" : k === data.parting ? "where the traces part" : "after they parted";
+    element("position").textContent = "Step " + (k + 1) + " of " + steps + " (" + data.step_name + " " +
+      (k + data.first_number) + "): " + where;
+    var sentence = element("step-sentence");
+    sentence.className = "sentence" + (k === data.parting ? " parts" : "");
+    sentence.textContent = k === data.parting ? data.sentence
+      : k < data.parting ? "Your " + data.step_name + " agrees with numlab's here."
+      : "The traces parted at step " + (data.parting + 1) + ": from there each follows its own earlier steps.";
+    replace("step-values", values(k));
+    replace("step-context", context(k));
+    var old = table.querySelector("tr.current");
+    if (old) { old.classList.remove("current"); old.removeAttribute("aria-current"); }
+    var row = element("step-" + (k + 1));
+    if (row) {
+      row.classList.add("current");
+      row.setAttribute("aria-current", "step");
+      table.scrollTop = Math.max(0, row.offsetTop - table.clientHeight / 2);
+    }
+    stepper.setAttribute("data-step", String(k + 1));
+  }
+
+  // 5. The controls: buttons, the slider, and the keys (the slider keeps its own arrow keys).
+  element("first").addEventListener("click", function () { go(0); });
+  element("previous").addEventListener("click", function () { go(current - 1); });
+  element("next").addEventListener("click", function () { go(current + 1); });
+  element("last").addEventListener("click", function () { go(steps - 1); });
+  element("to-parting").addEventListener("click", function () { go(data.parting); });
+  slider.addEventListener("input", function () { go(Number(slider.value) - 1); });
+  document.addEventListener("keydown", function (event) {
+    if (event.altKey || event.ctrlKey || event.metaKey || event.target === slider) return;
+    var tag = event.target && event.target.tagName;
+    if (tag === "INPUT" || tag === "TEXTAREA" || tag === "SELECT") return;
+    var moves = { ArrowLeft: current - 1, ArrowRight: current + 1, Home: 0, End: steps - 1 };
+    if (!(event.key in moves)) return;
+    event.preventDefault();
+    go(moves[event.key]);
+  });
+
+  // 6. Start: the stepper shown, the table scrolls inside itself, at step N of #step-N or step 1.
+  stepper.hidden = false;
+  table.classList.add("stepping");
+  var hash = /^#step-(\d+)$/.exec(window.location.hash);
+  go(hash ? Number(hash[1]) - 1 : 0);
+}());
