@@ -76,6 +76,15 @@ void LabSession::show(const Table& table, const std::string& name) {
   report_.add_table(table, path);
 }
 
+void LabSession::stepper(const std::string& kind, const std::string& caption, const TraceOutput& tracer,
+                         nlohmann::ordered_json extra) {
+  flush_free_text();
+  extra["header"] = tracer.header();
+  extra["lines"] = tracer.lines();
+  extra["trace"] = tracer.records();
+  report_.add_stepper(kind, caption, extra);
+}
+
 void LabSession::figure(const std::string& path, const std::string& caption) {
   flush_free_text();
   out_ << "  Figure: " << path << "\n\n";

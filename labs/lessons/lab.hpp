@@ -13,6 +13,7 @@
 #include "output/lab_report.hpp"
 #include "output/step_pause.hpp"
 #include "output/table.hpp"
+#include "output/trace_printers.hpp"
 
 namespace numlab::cli {
 
@@ -34,6 +35,10 @@ class LabSession {
   void show(const Table& table, const std::string& name);
   // A figure the lab has written (SVG or PNG): named in the output, embedded in the report.
   void figure(const std::string& path, const std::string& caption);
+  // A traced solve the report lets the reader step through (LabReport::add_stepper): the tracer's
+  // records and printed lines, with `extra` members (gepp's "start"); placed after the output so far.
+  void stepper(const std::string& kind, const std::string& caption, const TraceOutput& tracer,
+               nlohmann::ordered_json extra = nlohmann::ordered_json::object());
   // Writes FOLDER/report.html (whole or not at all) and returns its path.
   std::string finish();
 

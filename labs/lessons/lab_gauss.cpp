@@ -69,6 +69,9 @@ void trace_a_small_system(LabSession& session) {
   print_augmented(session.out(), A, b);
   EliminationTracer tracer(&session.out(), nullptr);
   const DynamicResult result = run_linear_method("gepp", A, b, {}, {&tracer, nullptr});
+  nlohmann::ordered_json start = nlohmann::ordered_json::array();
+  for (int i = 0; i < 3; ++i) start.push_back({A(i, 0), A(i, 1), A(i, 2), b(i)});
+  session.stepper("gepp", "GEPP on the 3x3 system", tracer, {{"start", start}});
   session.say(fmt::format("Solution x = ({:.12g}, {:.12g}, {:.12g}), exact (2, 3, -1); growth factor {:.3g}.",
                           result.x(0), result.x(1), result.x(2), result.growth_factor));
   show_the_factors(session, A, b);

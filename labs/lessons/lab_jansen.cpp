@@ -89,6 +89,7 @@ void solve_at_the_seed_angle(LabSession& session, const mechanisms::JansenLeg& l
   const NonlinearRun run =
       run_nonlinear_method("newton", dynamic, Eigen::VectorXd(JansenClosure::seed_estimates()), settings, &tracer);
   session.out() << "  " << run.termination << "\n\n";
+  session.stepper("newton", "Newton on seed 000's eight equations", tracer);
   const auto joints = leg.joints(JansenClosure::seed_crank_angle, JansenClosure::Vector(run.x));
   const auto exact = leg.closed_form_joints(JansenClosure::seed_crank_angle);
   double distance = 0.0;

@@ -63,6 +63,7 @@ void show_quadratic_convergence(LabSession& session) {
   const NonlinearRun run =
       run_nonlinear_method("newton", *problem.system, problem.standard_start, lab_settings(false), &tracer);
   session.out() << "  " << run.termination << "\n\n";
+  session.stepper("newton", "Newton on Rosenbrock's system", tracer);
 }
 
 void show_jacobian_checks(LabSession& session) {
@@ -256,8 +257,11 @@ void show_sequential(LabSession& session) {
   nonlinear::NewtonOptions options;
   options.residual_tolerance = 1e-12;
   const auto full = nonlinear::newton_solve(closure, JansenClosure::seed_estimates(), options);
-  const auto sequential =
-      nonlinear::sequential_newton(dynamic, blocks, start, {options, nonlinear::LinearMethod::inverse2x2});
+  nonlinear::SequentialNewton solver(dynamic, blocks, {options, nonlinear::LinearMethod::inverse2x2});
+  NewtonTracer tracer(&session.out(), nullptr);
+  solver.set_observer(&tracer);
+  const auto sequential = solver.solve(start);
+  session.stepper("newton", "Sequential Newton on seed 000's four blocks", tracer);
   std::string per_block;
   for (std::size_t b = 0; b < sequential.blocks.size(); ++b) {
     per_block += fmt::format("{}{}", b == 0 ? "" : (b + 1 == sequential.blocks.size() ? " and " : ", "),

@@ -35,6 +35,7 @@ DynamicResult traced_sweeps(LabSession& session, const std::string& method, cons
     session.out() << fmt::format("  {:>6}  {:>12.4e}  {:>16.4e}\n", rows[k]["sweep"].get<int>(),
                                  rows[k]["step_inf"].get<double>(), rows[k]["residual_inf"].get<double>());
   }
+  session.stepper("sweeps", method + "'s sweeps", tracer);
   session.say(fmt::format("{}: {} after {} sweeps; ||b - A x||_inf = {:.3g}.", method, to_string(result.status),
                           result.iterations, result.residual_norm));
   return result;

@@ -5,6 +5,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "output/html/stepper_css.hpp"
+#include "output/html/stepper_js.hpp"
+
 namespace numlab::cli {
 
 namespace {
@@ -84,8 +87,23 @@ void LabReport::add_figure(const std::string& path, const std::string& caption) 
   figures_.push_back(path);
 }
 
+void LabReport::add_stepper(const std::string& kind, const std::string& caption, const nlohmann::ordered_json& data) {
+  // "</" is written "<\/" (the same string in JSON), so no value can end the <script> element.
+  std::string json;
+  for (const char c : data.dump()) {
+    if (c == '/' && !json.empty() && json.back() == '<') json += '\\';
+    json += c;
+  }
+  body_ += "<div class=\"stepper\" data-kind=\"" + html_escape(kind) + "\" data-caption=\"" + html_escape(caption) +
+           "\">\n<script type=\"application/json\">" + json + "</script>\n</div>\n";
+  has_steppers_ = true;
+}
+
 std::string LabReport::html() const {
-  return html_page("numlab lab " + title_, "<p><em>" + html_escape(summary_) + "</em></p>\n" + body_);
+  const std::string summary = "<p><em>" + html_escape(summary_) + "</em></p>\n";
+  if (!has_steppers_) return html_page("numlab lab " + title_, summary + body_);
+  const std::string script = "<script>\n" + std::string(html::stepper_js) + "</script>\n";
+  return html_page("numlab lab " + title_, summary + body_ + script, std::string(html::stepper_css));
 }
 
 }  // namespace numlab::cli

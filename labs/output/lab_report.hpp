@@ -3,6 +3,7 @@
 // lab produced them, in one self-contained file (SVG figures inlined, PNG figures as data URIs,
 // styles inline), so it reads offline in any browser.
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ class LabReport {
   void add_preformatted(const std::string& text);
   // Reads the figure file now (it must exist) and embeds it.
   void add_figure(const std::string& path, const std::string& caption);
+  // A traced solve the reader steps through in the browser (html/stepper.js): `kind` (gepp, sweeps,
+  // newton) says how a record is drawn; `data` holds "trace" (the records, as --trace --format json
+  // prints them), "lines" (the text --trace prints for each), "header", and for gepp "start", [A | b].
+  // The page embeds it as JSON; without scripts the stepper stays hidden and the printed trace reads.
+  void add_stepper(const std::string& kind, const std::string& caption, const nlohmann::ordered_json& data);
 
   // The figure files embedded so far, as given to add_figure.
   const std::vector<std::string>& figures() const { return figures_; }
@@ -33,6 +39,7 @@ class LabReport {
   std::string summary_;
   std::string body_;
   std::vector<std::string> figures_;
+  bool has_steppers_ = false;
 };
 
 }  // namespace numlab::cli

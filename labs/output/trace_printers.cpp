@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <sstream>
+
 namespace numlab::cli {
 
 namespace {
@@ -35,6 +37,16 @@ std::string describe(const linalg::EliminationRecord& record, bool last_column) 
 
 }  // namespace
 
+StepControl TraceOutput::print_record(const std::string& header, const std::string& text) {
+  if (header_.empty()) header_ = header;
+  lines_.push_back(text);
+  if (text_out_ == nullptr) return StepControl::proceed;
+  if (!header_printed_) *text_out_ << header;
+  header_printed_ = true;
+  *text_out_ << text << '\n';
+  return pause_after_record();
+}
+
 void print_augmented(std::ostream& out, const Eigen::MatrixXd& M, const Eigen::VectorXd& c) {
   for (Eigen::Index i = 0; i < M.rows(); ++i) {
     std::string line = "    ";
@@ -59,22 +71,26 @@ StepControl EliminationTracer::on_step(const linalg::GaussElimination<Eigen::Dyn
   }
   if (show_matrix) entry["augmented"] = rows_of(state.reduced_matrix(), state.reduced_rhs());
   records_.push_back(entry);
-  if (text_out_ == nullptr) return StepControl::proceed;
-  *text_out_ << describe(record, record.column + 1 == state.size()) << '\n';
-  if (show_matrix) print_augmented(*text_out_, state.reduced_matrix(), state.reduced_rhs());
-  return pause_after_record();
+  std::ostringstream text;
+  text << describe(record, record.column + 1 == state.size());
+  if (show_matrix) {
+    text << '\n';
+    print_augmented(text, state.reduced_matrix(), state.reduced_rhs());
+  }
+  std::string printed = text.str();
+  if (printed.ends_with('\n')) printed.pop_back();
+  return print_record("", printed);
 }
 
-StepControl SweepTracer::on_step(const linalg::GaussSeidel<Eigen::Dynamic>&, const linalg::SweepRecord& record) {
+StepControl SweepTracer::on_step(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) {
   if (stopped()) return StepControl::stop;
-  records_.push_back({{"sweep", record.sweep}, {"step_inf", record.step_norm}, {"residual_inf", record.residual_norm}});
-  if (text_out_ == nullptr) return StepControl::proceed;
-  if (!header_printed_) {
-    *text_out_ << fmt::format("  {:>6}  {:>12}  {:>16}\n", "sweep", "||dx||_inf", "||b - A x||_inf");
-    header_printed_ = true;
-  }
-  *text_out_ << fmt::format("  {:>6}  {:>12.4e}  {:>16.4e}\n", record.sweep, record.step_norm, record.residual_norm);
-  return pause_after_record();
+  nlohmann::ordered_json entry = {{"sweep", record.sweep}, {"step_inf", record.step_norm},
+                                  {"residual_inf", record.residual_norm}};
+  // The iterate after the sweep, for systems small enough to print (as the augmented matrix of GEPP's).
+  if (state.x().size() <= max_traced_matrix_size) entry["x"] = std::vector<double>(state.x().begin(), state.x().end());
+  records_.push_back(entry);
+  return print_record(fmt::format("  {:>6}  {:>12}  {:>16}\n", "sweep", "||dx||_inf", "||b - A x||_inf"),
+                      fmt::format("  {:>6}  {:>12.4e}  {:>16.4e}", record.sweep, record.step_norm, record.residual_norm));
 }
 
 StepControl NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int block) {
@@ -94,25 +110,22 @@ StepControl NewtonTracer::on_record(const nonlinear::NewtonRecord& record, int b
   entry["damping"] = record.damping;
   const bool chord = record.jacobian_refactored != nonlinear::NewtonRecord::every_iteration;
   if (chord) entry["jacobian"] = record.jacobian_refactored == 1 ? "refactored" : "reused";
-  entry["time_s"] = record.elapsed_s - paused_since_start();
+  const double time_s = record.elapsed_s - paused_since_start();
+  entry["time_s"] = time_s;
   records_.push_back(entry);
-  if (text_out_ == nullptr) return StepControl::proceed;
-  if (!header_printed_) {
-    if (sequential) *text_out_ << fmt::format("  {:>5}", "block");
-    *text_out_ << fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>9}  {:>7}  {:>10}", "k", "||f||_inf",
-                              "||f||_2", "||dx||_inf", "linear solve", "inner its", "lambda", "time (s)")
-               << (chord ? fmt::format("  {:>10}", "J") : "") << '\n';
-    header_printed_ = true;
-  }
-  if (sequential) *text_out_ << fmt::format("  {:>5}", block + 1);
-  *text_out_ << fmt::format("  {:>4}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>14}  {:>9}  {:>7.4g}  {:>10.3e}",
-                            record.iteration, record.residual_norm, record.residual_2norm, record.step_norm,
-                            has_linear_solve ? std::string(to_string(record.linear_status)) : "-",
-                            has_linear_solve ? std::to_string(record.linear_iterations) : "-", record.damping,
-                            record.elapsed_s - paused_since_start())
-             << (chord ? fmt::format("  {:>10}", record.jacobian_refactored == 1 ? "refactored" : "reused") : "")
-             << '\n';
-  return pause_after_record();
+  const std::string header =
+      (sequential ? fmt::format("  {:>5}", "block") : std::string()) +
+      fmt::format("  {:>4}  {:>11}  {:>11}  {:>11}  {:>14}  {:>9}  {:>7}  {:>10}", "k", "||f||_inf", "||f||_2",
+                  "||dx||_inf", "linear solve", "inner its", "lambda", "time (s)") +
+      (chord ? fmt::format("  {:>10}", "J") : "") + '\n';
+  const std::string text =
+      (sequential ? fmt::format("  {:>5}", block + 1) : std::string()) +
+      fmt::format("  {:>4}  {:>11.4e}  {:>11.4e}  {:>11.4e}  {:>14}  {:>9}  {:>7.4g}  {:>10.3e}", record.iteration,
+                  record.residual_norm, record.residual_2norm, record.step_norm,
+                  has_linear_solve ? std::string(to_string(record.linear_status)) : "-",
+                  has_linear_solve ? std::to_string(record.linear_iterations) : "-", record.damping, time_s) +
+      (chord ? fmt::format("  {:>10}", record.jacobian_refactored == 1 ? "refactored" : "reused") : "");
+  return print_record(header, text);
 }
 
 }  // namespace numlab::cli

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "output/step_pause.hpp"
 
@@ -26,6 +28,10 @@ class TraceOutput {
   TraceOutput(std::ostream* text_out, StepPause* pause)
       : text_out_(text_out), pause_(pause), waited_at_start_(pause ? pause->seconds_waited() : 0.0) {}
   const nlohmann::ordered_json& records() const { return records_; }
+  // The text printed for each record (one entry per record, lines joined by '\n'), and the column
+  // header printed before the first (empty when there is none): what a lab report's stepper shows.
+  const std::vector<std::string>& lines() const { return lines_; }
+  const std::string& header() const { return header_; }
 
  protected:
   // After the user stopped: nothing more is recorded or printed, and the stepper is told to stop.
@@ -34,11 +40,16 @@ class TraceOutput {
   StepControl pause_after_record() const { return pause_ != nullptr ? pause_->after_step() : StepControl::proceed; }
   // Seconds paused at --step since this tracer was made: taken off the times it prints.
   double paused_since_start() const { return pause_ != nullptr ? pause_->seconds_waited() - waited_at_start_ : 0.0; }
+  // Keeps `text` as the record's printed text and prints it (with the header first, once) when
+  // text goes somewhere; then pauses as after_record. `header` ends with '\n' or is empty.
+  StepControl print_record(const std::string& header, const std::string& text);
   std::ostream* text_out_;
   StepPause* pause_;
   double waited_at_start_;
   bool header_printed_ = false;
   nlohmann::ordered_json records_ = nlohmann::ordered_json::array();
+  std::vector<std::string> lines_;
+  std::string header_;
 };
 
 // Matrices larger than this are summarised in traces rather than printed whole.
