@@ -64,7 +64,7 @@ Eigen::Matrix2d partial_of(const LinkageModel& model, const Constraint& c, const
       break;
     }
     case ConstraintKind::actuator: {
-      const Eigen::Vector2d g = actuator_gradient(p(0), p(1));
+      const Eigen::Vector2d g = actuator_gradient(p(0), p(1), c.length);
       d.row(0) = pick(g, -g, Eigen::Vector2d::Zero()).transpose();
       break;
     }

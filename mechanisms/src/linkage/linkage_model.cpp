@@ -105,6 +105,7 @@ Constraint driver_constraint(const LinkageDescription& d) {
   } else if (driver.kind == DriverKind::actuator) {
     c.kind = ConstraintKind::actuator;
     c.joints = {driver.from, driver.joint, -1};
+    c.length = driver.reference;  // the scale below which its direction is rounding (linkage_rows.hpp)
     c.name = "actuator " + pair_name(d, driver.from, driver.joint);
   } else if (driver.kind == DriverKind::motor) {
     c.kind = ConstraintKind::motor;
@@ -319,7 +320,7 @@ void LinkageModel::for_each_partial(const Eigen::VectorXd& q, double t, Put put)
         break;
       }
       case ConstraintKind::actuator: {
-        const Eigen::RowVector2d g = detail::actuator_gradient(p(c.joints[0]), p(c.joints[1])).transpose();
+        const Eigen::RowVector2d g = detail::actuator_gradient(p(c.joints[0]), p(c.joints[1]), c.length).transpose();
         put(row, c.joints[0], g);
         put(row, c.joints[1], Eigen::RowVector2d(-g));
         break;
@@ -393,7 +394,7 @@ void LinkageModel::acceleration_rhs(const Eigen::VectorXd& q, const Eigen::Vecto
     } else if (c.kind == ConstraintKind::slider_on_line) {
       gamma(row) = -detail::line_slot_second(p(a), p(b), p(e), velocity(a), velocity(b), velocity(e));
     } else if (c.kind == ConstraintKind::actuator) {
-      gamma(row) = -detail::actuator_second(p(a), p(b), velocity(a), velocity(b));
+      gamma(row) = -detail::actuator_second(p(a), p(b), velocity(a), velocity(b), c.length);
     } else if (c.kind == ConstraintKind::motor) {
       gamma(row) = -detail::motor_second(p(a), p(b), p(e), velocity(a), velocity(b), velocity(e), t, c.length);
     }

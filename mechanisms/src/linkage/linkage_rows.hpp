@@ -42,19 +42,22 @@ inline double line_slot_second(const Eigen::Vector2d& a, const Eigen::Vector2d& 
   return side2 / L - 2.0 * side1 * L1 / (L * L) + side * (2.0 * L1 * L1 - L * L2) / (L * L * L);
 }
 
-// An actuator between P and Q at length s:  f = |P - Q| - s. At |P - Q| = 0 the gradient is taken
-// as zero (the row is singular there: J says so, never a NaN).
-inline Eigen::Vector2d actuator_gradient(const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+// An actuator between P and Q at length s:  f = |P - Q| - s, gradient (P - Q)/|P - Q|. At zero length
+// the direction is undefined, and below sqrt(eps) of the actuator's reference length `scale` rounding
+// decides it: there the gradient is taken as zero, so that J is singular and says so (a named
+// failure, never a NaN or a direction made of rounding errors).
+inline constexpr double actuator_shortest = 1.5e-8;  // ~ sqrt(eps), relative to the reference length
+inline Eigen::Vector2d actuator_gradient(const Eigen::Vector2d& p, const Eigen::Vector2d& q, double scale) {
   const Eigen::Vector2d d = p - q;
   const double length = d.norm();
-  return length > 0.0 ? Eigen::Vector2d(d / length) : Eigen::Vector2d::Zero();
+  return length > actuator_shortest * scale ? Eigen::Vector2d(d / length) : Eigen::Vector2d::Zero();
 }
 // d^2 |d| / dt^2 with no accelerations: (|d'|^2 - (d . d' / |d|)^2) / |d|.
 inline double actuator_second(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& vp,
-                              const Eigen::Vector2d& vq) {
+                              const Eigen::Vector2d& vq, double scale) {
   const Eigen::Vector2d d = p - q, dd = vp - vq;
   const double length = d.norm();
-  if (!(length > 0.0)) return 0.0;
+  if (!(length > actuator_shortest * scale)) return 0.0;
   const double along = d.dot(dd) / length;
   return (dd.squaredNorm() - along * along) / length;
 }

@@ -37,7 +37,8 @@ struct Constraint {
   std::array<int, 3> joints{-1, -1, -1};  // distance: i, j; body_point: b0, b1, c; slider_line and
                                           // slider_travel: j; crank: pivot, joint; slider_on_line: A, B, C;
                                           // actuator: P, Q; motor: A (pivot), B (from), C (joint)
-  double length = 0.0;                    // distance: L; crank: r; motor: l, the row's length scale
+  double length = 0.0;                    // distance: L; crank: r; motor: l, the row's length scale;
+                                          // actuator: its reference length (the scale of its zero length)
   Eigen::Vector2d coefficients = Eigen::Vector2d::Zero();  // body_point: (a, b)
   Eigen::Vector2d point = Eigen::Vector2d::Zero();         // slider: P
   Eigen::Vector2d direction = Eigen::Vector2d::UnitX();    // slider: u (unit)
