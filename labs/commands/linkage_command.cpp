@@ -13,6 +13,7 @@
 
 #include "parsing/argument_parsing.hpp"
 #include "methods/data_dir.hpp"
+#include "output/driving_chart.hpp"
 #include "output/linkage_report.hpp"
 #include "numlab/mechanisms/linkage/crank_analysis.hpp"
 #include "numlab/mechanisms/linkage/link_motion.hpp"
@@ -163,6 +164,51 @@ std::optional<LinkageOutput> chosen_output(const LinkageDescription& d, const st
   return output;
 }
 
+// What the scenes highlight: --path's joints (each a moving joint, else bad input), else the file's
+// trace, else nothing chosen (every path drawn).
+LinkageSceneOptions scene_options(const LinkageModel& model, const LinkageRun& run) {
+  const LinkageDescription& d = model.description();
+  LinkageSceneOptions options;
+  options.velocity_arrows = run.arrows;
+  std::string moving;
+  for (const int j : model.moving()) moving += (moving.empty() ? "" : ", ") + d.joints[static_cast<std::size_t>(j)].name;
+  for (const std::string& name : run.paths) {
+    const int joint = d.joint_index(name);
+    const std::string shown = printable(std::string_view(name).substr(0, 40));
+    if (joint < 0) throw std::invalid_argument("--path '" + shown + "': not a joint of " + d.name + "; name a moving joint (" + moving + ")");
+    if (d.joints[static_cast<std::size_t>(joint)].ground) {
+      throw std::invalid_argument("--path " + shown + ": a ground joint has no path; name a moving joint (" + moving + ")");
+    }
+    if (std::find(options.paths.begin(), options.paths.end(), joint) == options.paths.end()) options.paths.push_back(joint);
+  }
+  options.paths_from = "--path";
+  if (options.paths.empty() && !d.trace.empty()) options.paths = d.trace, options.paths_from = "the file's trace";
+  return options;
+}
+
+// The pose --svg draws: --draw-at's, which must be a pose of the sweep that assembled (else bad
+// input), or the best-conditioned pose (linkage_scene.hpp). The reason goes to the caption.
+std::size_t drawn_pose(const LinkageModel& model, const LinkageSweep& sweep, const LinkageRun& run, std::string& reason) {
+  if (!run.draw_at) {
+    const std::size_t best = *best_conditioned_pose(model, sweep);
+    reason = fmt::format("the sweep's best-conditioned pose, kappa(J) {:.3g}", sweep.poses[best].condition);
+    return best;
+  }
+  const auto pose = pose_at(sweep, *run.draw_at);
+  const auto& poses = sweep.poses;
+  if (!pose) {
+    throw std::invalid_argument(fmt::format("--draw-at {:g}: not a pose of the sweep, whose poses run from {:g} to {:g}{}",
+                                            *run.draw_at, poses.front().driver, poses.back().driver,
+                                            poses.size() > 1 ? fmt::format(" in steps of {:g}", poses[1].driver - poses[0].driver) : ""));
+  }
+  if (poses[*pose].outcome.status != Status::converged) {
+    throw std::invalid_argument(fmt::format("--draw-at {:g}: the linkage did not assemble there ({})", *run.draw_at,
+                                            to_string(poses[*pose].outcome.status)));
+  }
+  reason = "--draw-at";
+  return *pose;
+}
+
 }  // namespace
 
 int run_linkage(const LinkageRun& run) {
@@ -175,6 +221,10 @@ int run_linkage(const LinkageRun& run) {
     return exit_success;
   }
   const std::optional<LinkageOutput> output = chosen_output(model.description(), run.output);
+  LinkageSceneOptions scene = scene_options(model, run);
+  if (!run.chart.empty()) {
+    if (const std::string problem = driving_chart_problem(model, output); !problem.empty()) throw std::invalid_argument(problem);
+  }
   if (run.speed_rad_s && !model.crank_driven()) {
     throw std::invalid_argument("--speed gives a crank's speed; " + model.description().name + " is driven by a slider");
   }
@@ -217,13 +267,13 @@ int run_linkage(const LinkageRun& run) {
   const bool drawable = std::any_of(sweep.poses.begin(), sweep.poses.end(),
                                     [](const LinkagePose& p) { return p.outcome.status == Status::converged; });
   if (drawable) {
-    std::size_t first = 0;
-    while (sweep.poses[first].outcome.status != Status::converged) ++first;
-    if (!run.svg.empty()) write_file_atomically(run.svg, linkage_pose_svg(model, sweep, first, run.arrows));
-    if (!run.animate.empty()) write_file_atomically(run.animate, linkage_animation_svg(model, sweep, 4.0));
+    const std::size_t pose = drawn_pose(model, sweep, run, scene.pose_reason);
+    if (!run.svg.empty()) write_file_atomically(run.svg, linkage_pose_svg(model, sweep, pose, scene));
+    if (!run.animate.empty()) write_file_atomically(run.animate, linkage_animation_svg(model, sweep, 4.0, scene));
   } else if (!run.svg.empty() || !run.animate.empty()) {
     std::cerr << "numlab: no pose assembled, so no scene was drawn\n";
   }
+  if (!run.chart.empty()) draw_driving_chart(chart_files(run.chart), model, sweep, output);
   if (run.common.format == Format::json) {
     std::cout << linkage_json(report, run.common.trace ? &tracer.rows() : nullptr).dump(2) << '\n';
   } else if (run.common.format == Format::csv) {

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "commands/common_options.hpp"
 
@@ -28,6 +29,9 @@ struct LinkageRun {
   std::optional<double> speed_rad_s;  // --speed: the crank's speed, rad/s
   CommonOptions common;
   std::string svg, animate;        // already placed inside --out
+  std::optional<double> draw_at;   // --draw-at: the pose --svg draws, a driver value of the sweep
+  std::vector<std::string> paths;  // --path: joints whose paths the scenes highlight (else the file's trace)
+  std::string chart;               // --chart: the driving torque and mechanical advantage (inside --out)
 };
 
 // The description file a mechanism name stands for: NAME as a path when such a file exists, else

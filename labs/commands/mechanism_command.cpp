@@ -25,6 +25,7 @@
 #include "parsing/speed_argument.hpp"
 #include "commands/crank_sweep_csv.hpp"
 #include "commands/crank_sweep_tracer.hpp"
+#include "output/chart.hpp"
 #include "output/table.hpp"
 
 namespace numlab::cli {
@@ -172,6 +173,14 @@ MechanismCommand::MechanismCommand(CLI::App& app) {
                                             "ratio and mechanical advantage the CSV and JSON give (default: the file's output)");
   command_->add_option("--speed", speed_, "A description file: the crank's constant speed, e.g. 120rpm or 12.5rad/s: "
                                           "link rates per second too");
+  command_->add_option("--draw-at", draw_at_, "A description file: the pose --svg draws, a driver value of the sweep "
+                                              "(default: the best-conditioned pose)")
+      ->check(CLI::Validator([](std::string& text) { return finite_number_problem(text); }, "VALUE"));
+  command_->add_option("--path", paths_, "A description file: the moving joints whose paths --svg and --animate "
+                                         "highlight (repeat or comma-separate; default: the file's trace)")
+      ->delimiter(',');
+  command_->add_option("--chart", chart_, "A description file: chart the driving torque and the mechanical advantage "
+                                          "over the sweep (FILE.svg or FILE.png, drawn by gnuplot)");
   add_common_options(*command_, common_);
 }
 
@@ -230,17 +239,22 @@ std::string MechanismCommand::linkage_file() const {
 
 // Each flag given only where it applies, each file flag with a name.
 void MechanismCommand::check_flags(const CommonOptions& common, bool from_file) const {
-  for (const auto* flag : {"--explain", "--check-jacobian", "--arrows", "--strict", "--at-crossing", "--analyse", "--output", "--speed"}) {
+  for (const auto* flag : {"--explain", "--check-jacobian", "--arrows", "--strict", "--at-crossing", "--analyse", "--output", "--speed",
+                           "--draw-at", "--path", "--chart"}) {
     require_applies(given(*command_, flag), from_file, flag, "a linkage description file or shipped model");
   }
+  require_applies(given(*command_, "--draw-at"), !svg_.empty(), "--draw-at", "--svg FILE");
+  require_applies(given(*command_, "--path"), !svg_.empty() || !animate_.empty(), "--path", "--svg FILE or --animate FILE");
+  require_applies(given(*command_, "--chart"), !sweep_.empty(), "--chart", "--sweep (it charts the sweep)");
+  if (given(*command_, "--chart") && chart_.empty()) throw std::invalid_argument("--chart needs a file name");
   require_applies(given(*command_, "--arrows"), svg_.empty() == false, "--arrows", "--svg FILE");
   require_applies(given(*command_, "--beest"), !from_file, "--beest", "numlab mechanism jansen and jansen10");
   require_applies(given(*command_, "--linear"), solver_ == "full", "--linear", "--solver full");
   require_applies(given(common, "--tol"), solver_ != "analytic", "--tol", "the iterative solvers (not analytic)");
   require_applies(given(common, "--max-iter"), solver_ != "analytic", "--max-iter", "the iterative solvers (not analytic)");
   require_applies(given(*command_, "--beest-animated"), !beest_.empty(), "--beest-animated", "--beest FILE");
-  require_applies(given(common, "--out"), !svg_.empty() || !animate_.empty() || !beest_.empty(), "--out",
-                  "--svg, --animate or --beest (the folder for the files they name)");
+  require_applies(given(common, "--out"), !svg_.empty() || !animate_.empty() || !beest_.empty() || !chart_.empty(), "--out",
+                  "--svg, --animate, --beest or --chart (the folder for the files they name)");
   for (const auto& [flag, value] : {std::pair{"--svg", &svg_}, std::pair{"--animate", &animate_}, std::pair{"--beest", &beest_}}) {
     if (given(*command_, flag) && value->empty()) throw std::invalid_argument(std::string(flag) + " needs a file name");
   }
@@ -254,7 +268,7 @@ void MechanismCommand::check_flags(const CommonOptions& common, bool from_file) 
 // --explain: the derived model of a description file, no solve.
 int MechanismCommand::explain(const CommonOptions& common, const std::string& file) const {
   for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--strict",
-                           "--at-crossing", "--output", "--speed"}) {
+                           "--at-crossing", "--output", "--speed", "--draw-at", "--path", "--chart"}) {
     require_applies(given(*command_, flag), false, flag, "a solve, not --explain");
   }
   for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
@@ -271,7 +285,7 @@ int MechanismCommand::explain(const CommonOptions& common, const std::string& fi
 // --analyse: a four-bar's or slider-crank's analysis from the model, no sweep asked for.
 int MechanismCommand::analyse(const CommonOptions& common, const std::string& file) const {
   for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--at-crossing",
-                           "--speed"}) {
+                           "--speed", "--draw-at", "--path", "--chart"}) {
     require_applies(given(*command_, flag), false, flag, "a solve, not --analyse");
   }
   for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
@@ -289,10 +303,15 @@ int MechanismCommand::analyse(const CommonOptions& common, const std::string& fi
 
 // The output files inside --out, checked writable (and not the description file) before any work.
 MechanismCommand::OutputPaths MechanismCommand::checked_outputs(const CommonOptions& common, const std::string& file) const {
-  const OutputPaths paths{output_path(common, svg_), output_path(common, animate_), output_path(common, beest_)};
+  const OutputPaths paths{output_path(common, svg_), output_path(common, animate_), output_path(common, beest_),
+                          output_path(common, chart_)};
   std::vector<PlannedFile> outputs;
   for (const auto& [path, flag] : {std::pair{paths.svg, "--svg"}, std::pair{paths.animate, "--animate"}, std::pair{paths.beest, "--beest"}}) {
     if (!path.empty()) outputs.push_back({path, flag});
+  }
+  if (!paths.chart.empty()) {
+    const auto chart = planned_files(chart_files(paths.chart), "--chart");
+    outputs.insert(outputs.end(), chart.begin(), chart.end());
   }
   check_outputs(outputs, !file.empty() ? std::vector<std::string>{file} : std::vector<std::string>{});
   return paths;
@@ -317,6 +336,9 @@ int MechanismCommand::sweep_file(const CommonOptions& common, const SweepRange&,
   run.common = common;
   run.svg = paths.svg;
   run.animate = paths.animate;
+  run.draw_at = draw_at_;
+  run.paths = paths_;
+  run.chart = paths.chart;
   return run_linkage(run);
 }
 

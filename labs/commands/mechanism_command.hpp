@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "commands/common_options.hpp"
 
@@ -20,9 +21,10 @@ class MechanismCommand {
   int run() const;
 
  private:
-  // The files --svg, --animate and --beest name, inside --out (empty: not asked for).
+  // The files --svg, --animate, --beest and --chart name, inside --out (empty: not asked for).
   struct OutputPaths {
     std::string svg, animate, beest;
+    std::string chart;  // --chart's
   };
   std::string linkage_file() const;
   void check_flags(const CommonOptions& common, bool from_file) const;
@@ -59,6 +61,9 @@ class MechanismCommand {
   bool analyse_ = false;
   std::string output_;
   std::string speed_;
+  std::optional<double> draw_at_;    // --draw-at: the pose --svg draws
+  std::vector<std::string> paths_;   // --path: the joints whose paths the scenes highlight
+  std::string chart_;                // --chart: the driving torque and mechanical advantage
 };
 
 // "START:STOP:STEP" in degrees; throws std::invalid_argument naming the problem.

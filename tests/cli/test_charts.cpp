@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "run_numlab.hpp"
@@ -135,4 +136,116 @@ TEST_CASE("A chart's script redraws the chart by hand, at its own name", "[cli][
   CHECK(std::system(("cd / && gnuplot " + folder + "/c.svg.gp >/dev/null 2>&1").c_str()) == 0);
   CHECK(read_all(folder + "/c.svg") == drawn);
   std::filesystem::remove_all(folder);
+}
+
+namespace {
+
+// The shipped four-bar with, as asked, its rocker Q-B as the output and loads (a torque of -10 on the
+// rocker, 2 kg at B), written into `folder`.
+std::string four_bar_file(const std::string& folder, bool loads, bool output) {
+  std::string text = read_all(std::string(NUMLAB_MODELS_DIR) + "/four-bar.toml");
+  if (output) text.replace(text.find("[ground]"), 8, "output = \"Q-B\"\n\n[ground]");
+  if (loads) text += "\n[[load]]\nlink = \"Q-B\"\ntorque = -10.0\n\n[[load]]\njoint = \"B\"\nmass = 2.0\n";
+  const std::string file = folder + "/four-bar-loaded.toml";
+  std::ofstream(file) << text;
+  return file;
+}
+
+// The lines of a text, blank ones included.
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t begin = 0;
+  for (std::size_t end = text.find('\n'); end != std::string::npos; begin = end + 1, end = text.find('\n', begin)) {
+    lines.push_back(text.substr(begin, end - begin));
+  }
+  return lines;
+}
+
+// The comma-separated cells of a line.
+std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> cells(1);
+  for (const char c : line) {
+    if (c == ',') cells.emplace_back();
+    else cells.back().push_back(c);
+  }
+  return cells;
+}
+
+}  // namespace
+
+TEST_CASE("mechanism --chart: the driving torque and the mechanical advantage are the CSV's, the chart whole", "[cli][chart][mechanism]") {
+  const std::string folder = temporary_folder(), files = temporary_folder();
+  const std::string file = four_bar_file(files, true, true);
+  const ProgramRun run = run_numlab("mechanism " + file + " --sweep 0:355:5 --chart " + folder + "/torque.svg --format csv");
+  REQUIRE(run.exit_code == 0);
+  CHECK(names_in(folder) == std::vector<std::string>{"torque.svg", "torque.svg.data.csv", "torque.svg.gp"});
+  CHECK_THAT(read_all(folder + "/torque.svg"), Contains("</svg>"));
+  CHECK_THAT(read_all(folder + "/torque.svg.gp"), Contains("driving torque and mechanical advantage"));
+  // The report's CSV: its columns by name.
+  const auto report = lines_of(run.out);
+  const auto header = cells_of(report[0]);
+  auto column = [&](const std::string& name) {
+    const auto at = std::find(header.begin(), header.end(), name);
+    REQUIRE(at != header.end());
+    return static_cast<std::size_t>(at - header.begin());
+  };
+  const std::size_t crank = column("crank_deg"), torque = column("driver_torque"), advantage = column("mechanical_advantage_Q-B");
+  // The chart's data: one row per pose in the same order, a blank line where a pole breaks the curve;
+  // the same digits, an empty cell where the CSV says inf.
+  const auto data = lines_of(read_all(folder + "/torque.svg.data.csv"));
+  REQUIRE(data[0] == "driver,driver_torque,statics,mechanical_advantage");
+  std::size_t pose = 1, breaks = 0;
+  for (std::size_t k = 1; k < data.size(); ++k) {
+    if (data[k].empty()) {
+      ++breaks;
+      continue;
+    }
+    REQUIRE(pose < report.size());
+    const auto chart = cells_of(data[k]), csv = cells_of(report[pose++]);
+    INFO("chart: " << data[k] << "\ncsv: " << report[pose - 1]);
+    CHECK(chart[0] == csv[crank]);
+    CHECK(chart[1] == (csv[torque] == "inf" ? "" : csv[torque]));
+    CHECK(chart[2] == "equilibrium");
+    CHECK(chart[3] == (csv[advantage] == "inf" || csv[advantage] == "-inf" ? "" : csv[advantage]));
+  }
+  CHECK(pose == report.size());
+  CHECK(pose == 73);
+  // The rocker stands still twice a turn (its toggles): the advantage's two poles break the curve.
+  CHECK(breaks == 2);
+  std::filesystem::remove_all(folder);
+  std::filesystem::remove_all(files);
+}
+
+TEST_CASE("mechanism --chart without loads charts the mechanical advantage only, without an output too it is refused",
+          "[cli][chart][mechanism]") {
+  const std::string folder = temporary_folder(), files = temporary_folder();
+  const std::string unloaded = four_bar_file(files, false, true);
+  REQUIRE(run_numlab("mechanism " + unloaded + " --sweep 0:355:5 --chart " + folder + "/ma.svg").exit_code == 0);
+  CHECK_THAT(read_all(folder + "/ma.svg.gp"), Contains("mechanical advantage only (no [[load]] in the file: no driving torque)"));
+  CHECK_THAT(read_all(folder + "/ma.svg"), Contains("</svg>"));
+  require_bad_input("mechanism four-bar --sweep 0:355:5 --chart " + folder + "/none.svg",
+                    "--chart draws the driving torque and the mechanical advantage, but four-bar has no [[load]] and no output");
+  require_bad_input("mechanism four-bar --crank 30 --output Q-B --chart " + folder + "/one.svg",
+                    "--chart applies only to --sweep (it charts the sweep)");
+  CHECK(names_in(folder) == std::vector<std::string>{"ma.svg", "ma.svg.data.csv", "ma.svg.gp"});
+  std::filesystem::remove_all(folder);
+  std::filesystem::remove_all(files);
+}
+
+TEST_CASE("mechanism --chart when gnuplot fails or leaves the chart truncated: no chart, its data and script, exit 2",
+          "[cli][chart][mechanism]") {
+  const std::string files = temporary_folder();
+  const std::string file = four_bar_file(files, true, true);
+  for (const auto& [body, problem] : {std::pair<std::string, std::string>{"echo 'line 9: all points y value undefined!'; exit 1",
+                                                                          "gnuplot exited with status 1: line 9: all points y value undefined!"},
+                                      {"printf '<svg>' > \"$out\"", "gnuplot wrote a truncated SVG, without its closing </svg>"}}) {
+    INFO(body);
+    const FakeGnuplot failing(body);
+    const std::string folder = temporary_folder();
+    require_bad_input("mechanism " + file + " --sweep 0:355:5 --chart " + folder + "/torque.svg",
+                      "cannot write '" + folder + "/torque.svg': " + problem);
+    CHECK(names_in(folder) == std::vector<std::string>{"torque.svg.data.csv", "torque.svg.gp"});
+    std::filesystem::remove_all(folder);
+  }
+  std::filesystem::remove_all(files);
 }
