@@ -18,8 +18,11 @@ std::optional<double> number_in(const nlohmann::json& entry, const char* field) 
   return found->get<double>();
 }
 
-nlohmann::json number_or_null(const std::optional<double>& value) {
-  return value ? nlohmann::json(*value) : nlohmann::json();
+// A number of a trace entry as it was sent (a whole number stays whole), or null.
+nlohmann::json sent_number(const nlohmann::json& entry, const char* field) {
+  if (!entry.is_object()) return nullptr;
+  const auto found = entry.find(field);
+  return found != entry.end() && found->is_number() ? *found : nlohmann::json();
 }
 
 // A list of numbers of a trace entry, as sent, or null when it is not one.
@@ -82,7 +85,7 @@ TraceComparison pivot_comparison(const std::string& inputs, const nlohmann::json
   comparison.numlab_total = rows.size();
   for (std::size_t k = 0; k < kept(trace.size(), parting); ++k) {
     comparison.yours.push_back(
-        {{"pivot_row", number_or_null(number_in(trace[k], "pivot_row"))}, {"pivot", number_or_null(number_in(trace[k], "pivot"))}});
+        {{"pivot_row", sent_number(trace[k], "pivot_row")}, {"pivot", sent_number(trace[k], "pivot")}});
   }
   comparison.context = nlohmann::json::array();
   for (std::size_t k = 0; k < kept(rows.size(), parting); ++k) {
@@ -150,7 +153,7 @@ TraceComparison sweep_comparison(const std::string& inputs, const nlohmann::json
   comparison.yours_total = trace.size();
   comparison.numlab_total = xs.size();
   for (std::size_t s = 0; s < kept(trace.size(), parting); ++s) {
-    comparison.yours.push_back({{"x", numbers_in(trace[s], "x")}, {"update_inf", number_or_null(number_in(trace[s], "update_inf"))}});
+    comparison.yours.push_back({{"x", numbers_in(trace[s], "x")}, {"update_inf", sent_number(trace[s], "update_inf")}});
   }
   for (std::size_t s = 0; s < kept(xs.size(), parting); ++s) {
     comparison.numlab.push_back({{"x", vector_json(xs[s])}, {"update_inf", updates[s]}});

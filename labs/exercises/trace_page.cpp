@@ -40,21 +40,26 @@ std::string step_cells(const TraceComparison& comparison, const nlohmann::json& 
   std::string cells;
   for (const std::string& field : comparison.fields) {
     const bool parts = k == comparison.parting && field == comparison.parting_field;
-    const std::string text = k < steps.size() ? cell_text(steps[k].value(field, nlohmann::json())) : "";
-    cells += fmt::format("<td class=\"{}{}\">{}</td>", side, parts ? " differs" : "", html_escape(text));
+    const nlohmann::json value = k < steps.size() ? steps[k].value(field, nlohmann::json()) : nlohmann::json();
+    const std::string text = k < steps.size() ? cell_text(value) : "";
+    cells += fmt::format("<td class=\"{}{}{}\">{}</td>", side, value.is_array() ? " list" : "", parts ? " differs" : "",
+                         html_escape(text));
   }
   return cells;
 }
 
-// The static view: one row per step, yours beside numlab's, the parting row marked.
+// The static view: one row per step, yours beside numlab's, the parting row marked. The protocol's
+// number of the step is a column of its own where it is not the step's (GEPP's columns count from 0).
 std::string steps_table(const TraceComparison& comparison) {
   const std::size_t fields = comparison.fields.size();
+  const bool numbered = comparison.first_number != 1;
   std::string table = fmt::format(
       "<table id=\"trace-table\">\n<caption>Your trace (left) beside numlab's (right), one row per {}</caption>\n"
-      "<thead><tr><th rowspan=\"2\" scope=\"col\">step</th><th rowspan=\"2\" scope=\"col\">{}</th>"
+      "<thead><tr><th rowspan=\"2\" scope=\"col\">{}</th>{}"
       "<th colspan=\"{}\" scope=\"colgroup\" class=\"yours\">yours</th><th colspan=\"{}\" scope=\"colgroup\" "
       "class=\"numlab\">numlab's</th><th rowspan=\"2\" scope=\"col\"></th></tr>\n<tr>",
-      comparison.step_name, comparison.step_name, fields, fields);
+      comparison.step_name, numbered ? "step" : comparison.step_name,
+      numbered ? "<th rowspan=\"2\" scope=\"col\">" + html_escape(comparison.step_name) + "</th>" : "", fields, fields);
   for (int side = 0; side < 2; ++side) {
     for (const std::string& field : comparison.fields) table += "<th scope=\"col\">" + html_escape(heading(field)) + "</th>";
   }
@@ -62,8 +67,10 @@ std::string steps_table(const TraceComparison& comparison) {
   const std::size_t rows = std::max(comparison.yours.size(), comparison.numlab.size());
   for (std::size_t k = 0; k < rows; ++k) {
     const char* where = k < comparison.parting ? "same" : k == comparison.parting ? "parting" : "after";
-    table += fmt::format("<tr id=\"step-{}\" class=\"{}\"><th scope=\"row\">{}</th><td>{}</td>{}{}<td class=\"mark\">{}</td></tr>\n",
-                         k + 1, where, k + 1, static_cast<long long>(k) + comparison.first_number,
+    const std::string number =
+        numbered ? fmt::format("<td>{}</td>", static_cast<long long>(k) + comparison.first_number) : "";
+    table += fmt::format("<tr id=\"step-{}\" class=\"{}\"><th scope=\"row\">{}</th>{}{}{}<td class=\"mark\">{}</td></tr>\n",
+                         k + 1, where, k + 1, number,
                          step_cells(comparison, comparison.yours, k, "yours"),
                          step_cells(comparison, comparison.numlab, k, "numlab"),
                          k == comparison.parting ? "← they part here" : "");
