@@ -68,9 +68,8 @@ double allowed_distance(const LinkageModel& model, double t, const Eigen::Vector
          64.0 * std::numeric_limits<double>::epsilon() * scale * conditioning.condition;
 }
 
-// The crank angles of the check: a whole turn about the reference, 5 degrees apart (poses that do
-// not assemble included: both paths must fail alike there).
-constexpr double half_turn = 180.0, step_deg = 5.0;
+// The driver values of the check (driver_range()): a whole turn about the reference, 5 degrees apart
+// (poses that do not assemble included: both paths must fail alike there), or a cylinder's stroke.
 
 }  // namespace
 
@@ -84,7 +83,8 @@ TEST_CASE("the fast path solves every shipped model as the generic solvers do, p
       LinkageFastSolver fast(solver);
       // Starting points: the generic sweep's poses (an observer keeps it on the generic path).
       const double reference = model.driver_to_user(solver.reference_driver());
-      const LinkageSweep poses = linkage_sweep(solver, reference - half_turn, reference + half_turn, step_deg,
+      const DriverRange range = driver_range(name);
+      const LinkageSweep poses = linkage_sweep(solver, reference - range.half, reference + range.half, range.step,
                                                [](const LinkagePose&) { return numlab::StepControl::proceed; });
       int compared = 0, failures = 0;
       for (std::size_t k = 0; k + 1 < poses.poses.size(); ++k) {
@@ -131,9 +131,10 @@ TEST_CASE("a sweep on the fast path reports what the generic sweep reports", "[l
       INFO(name << ", --solver " << kind);
       const LinkageSolver solver(model, options_for(kind));
       const double reference = model.driver_to_user(solver.reference_driver());
-      const double from = reference - half_turn, to = reference + half_turn;
-      const LinkageSweep generic = linkage_sweep(solver, from, to, step_deg, [](const LinkagePose&) { return numlab::StepControl::proceed; });
-      const LinkageSweep fast = linkage_sweep(solver, from, to, step_deg);  // no observer: the fast path
+      const DriverRange range = driver_range(name);
+      const double from = reference - range.half, to = reference + range.half;
+      const LinkageSweep generic = linkage_sweep(solver, from, to, range.step, [](const LinkagePose&) { return numlab::StepControl::proceed; });
+      const LinkageSweep fast = linkage_sweep(solver, from, to, range.step);  // no observer: the fast path
       REQUIRE(fast.poses.size() == generic.poses.size());
       CHECK(fast.status == generic.status);
       CHECK(fast.branch_kept == generic.branch_kept);

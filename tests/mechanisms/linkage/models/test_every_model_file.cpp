@@ -21,6 +21,8 @@ namespace {
 // stencil reaches 3 x 0.05 rad = 8.6 deg to either side.
 std::vector<double> poses_for(const std::string& name) {
   if (name == "mustang") return {-20.0, 0.0, 30.0};
+  if (name == "hydraulic-boom") return {1.2, 1.6, 2.0};  // the cylinder's length, m
+  if (name == "watt-straight-line") return {-15.0, 0.0, 15.0};  // a rocker: it swings, it does not turn
   return {0.0, 100.0, 230.0};
 }
 
