@@ -75,6 +75,54 @@
         make("th", { scope: "col", text: "|a_ik|" }), make("th", { scope: "col", text: "" }))), body);
   }
 
+  // 3b. Newton's ||f|| or Gauss-Seidel's update per step, both traces on a log scale, drawn up to
+  // step k (the axes fixed by every step, so the curves grow as one steps on).
+  var plotted = data.fields.indexOf("residual_inf") >= 0 ? "residual_inf" : data.fields.indexOf("update_inf") >= 0 ? "update_inf" : null;
+  var SVG = "http://www.w3.org/2000/svg";
+  function series(steps_) {
+    return steps_.map(function (step) { return step && typeof step[plotted] === "number" && step[plotted] > 0 ? step[plotted] : null; });
+  }
+  function plot(k) {
+    if (!plotted) return null;
+    var both = [series(data.yours), series(data.numlab)];
+    var logs = [];
+    both.forEach(function (values) { values.forEach(function (v) { if (v !== null) logs.push(Math.log10(v)); }); });
+    if (logs.length === 0) return null;
+    var low = Math.floor(Math.min.apply(null, logs)), high = Math.max(Math.ceil(Math.max.apply(null, logs)), low + 1);
+    var width = 460, height = 200, left = 56, right = 12, top = 22, bottom = 30;
+    var x = function (i) { return left + (steps > 1 ? i / (steps - 1) : 0.5) * (width - left - right); };
+    var y = function (v) { return top + (high - v) / (high - low) * (height - top - bottom); };
+    var svg = document.createElementNS(SVG, "svg");
+    svg.setAttribute("viewBox", "0 0 " + width + " " + height);
+    svg.setAttribute("id", "trace-plot");
+    svg.setAttribute("role", "img");
+    var title = (names[plotted] || plotted) + " per " + data.step_name + ", log scale, steps 1 to " + (k + 1);
+    svg.setAttribute("aria-label", title + ": yours and numlab's");
+    function add(tag, attributes, text) {
+      var node = document.createElementNS(SVG, tag);
+      Object.keys(attributes).forEach(function (key) { node.setAttribute(key, attributes[key]); });
+      if (text !== undefined) node.textContent = text;
+      svg.appendChild(node);
+      return node;
+    }
+    add("text", { x: left, y: 14, "class": "plot-title" }, title);
+    var every = Math.max(1, Math.ceil((high - low) / 6));
+    for (var e = low; e <= high; e += every) {
+      add("line", { x1: left, x2: width - right, y1: y(e), y2: y(e), "class": "plot-grid" });
+      add("text", { x: left - 4, y: y(e) + 4, "class": "plot-tick" }, "1e" + e);
+    }
+    add("line", { x1: x(data.parting), x2: x(data.parting), y1: top, y2: height - bottom, "class": "plot-parting" });
+    add("text", { x: x(data.parting) + 3, y: height - bottom - 4, "class": "plot-tick plot-left" }, "they part");
+    [["yours", both[0]], ["numlab", both[1]]].forEach(function (pair) {
+      var points = [];
+      for (var i = 0; i <= k && i < pair[1].length; i++) if (pair[1][i] !== null) points.push(x(i) + "," + y(Math.log10(pair[1][i])));
+      add("polyline", { points: points.join(" "), "class": "plot-" + pair[0], "data-points": String(points.length) });
+    });
+    add("text", { x: width - right, y: 14, "class": "plot-tick plot-yours" }, "yours —");
+    add("text", { x: width - right, y: 28, "class": "plot-tick plot-numlab" }, "numlab's —");
+    return svg;
+  }
+
   function replace(id, node) {
     var box = element(id);
     while (box.firstChild) box.removeChild(box.firstChild);
@@ -98,7 +146,7 @@
       : k < data.parting ? "Your " + data.step_name + " agrees with numlab's here."
       : "The traces parted at step " + (data.parting + 1) + ": from there each follows its own earlier steps.";
     replace("step-values", values(k));
-    replace("step-context", context(k));
+    replace("step-context", context(k) || plot(k));
     var old = table.querySelector("tr.current");
     if (old) { old.classList.remove("current"); old.removeAttribute("aria-current"); }
     var row = element("step-" + (k + 1));

@@ -72,6 +72,13 @@ def check_step(page, trace, k, steps):
         assert label == name, f"step {k + 1}: row {label!r}, expected {name!r}"
         same(mine, a, f"step {k + 1} {name} (yours)")
         same(theirs, b, f"step {k + 1} {name} (numlab's)")
+    # Newton's ||f|| (Gauss-Seidel's update) drawn for both traces up to this step.
+    plotted = next((f for f in ("residual_inf", "update_inf") if f in trace["fields"]), None)
+    if plotted:
+        for side in ("yours", "numlab"):
+            drawn = page.eval(f"document.querySelector('#trace-plot polyline.plot-{side}').dataset.points")
+            expected = sum(1 for step in trace[side][:k + 1] if isinstance(step.get(plotted), (int, float)) and step[plotted] > 0)
+            assert drawn == str(expected), f"step {k + 1}: {drawn} points of {side} drawn, {expected} expected"
 
 
 def main(out_dir, numlab, mutant):
@@ -103,6 +110,7 @@ def main(out_dir, numlab, mutant):
             check_step(page, trace, k, steps)
         page.press("ArrowRight")  # past the last step: stays
         check_step(page, trace, steps - 1, steps)
+        page.screenshot(f"{shot}-last.png")
         page.press("ArrowLeft")
         check_step(page, trace, steps - 2, steps)
         page.press("Home")

@@ -166,9 +166,10 @@ TEST_CASE("results.json carries the comparison, the page embeds the same numbers
   CHECK(page.find(check.trace->sentence) != std::string::npos);
   // The stepper is hidden until its script shows it; nothing is loaded from elsewhere.
   CHECK(page.find("<section id=\"stepper\" aria-label=\"Step through both traces\" hidden>") != std::string::npos);
-  CHECK(page.find("http://") == std::string::npos);
-  CHECK(page.find("https://") == std::string::npos);
   CHECK(page.find(" src=") == std::string::npos);
+  CHECK(page.find("href=\"http") == std::string::npos);
+  CHECK(page.find("url(") == std::string::npos);
+  CHECK(page.find("@import") == std::string::npos);
   CHECK(page.ends_with("</html>\n"));
   // report.html links to it and names the parting step.
   const std::string report = numlab::exercises::results_html(numlab::exercises::gepp_exercise(), results, "solution");
