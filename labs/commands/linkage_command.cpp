@@ -23,6 +23,8 @@
 #include "numlab/nonlinear/jacobian_check.hpp"
 #include "output/table.hpp"
 #include "scenes/linkage_scene.hpp"
+#include "linkage_page/file_page_data.hpp"
+#include "linkage_page/linkage_page_html.hpp"
 
 namespace numlab::cli {
 
@@ -270,8 +272,19 @@ int run_linkage(const LinkageRun& run) {
     const std::size_t pose = drawn_pose(model, sweep, run, scene.pose_reason);
     if (!run.svg.empty()) write_file_atomically(run.svg, linkage_pose_svg(model, sweep, pose, scene));
     if (!run.animate.empty()) write_file_atomically(run.animate, linkage_animation_svg(model, sweep, 4.0, scene));
-  } else if (!run.svg.empty() || !run.animate.empty()) {
+    if (!run.html.empty()) {  // the page's picture without scripts: --svg's, with the velocity arrows
+      LinkageSceneOptions still = scene;
+      still.velocity_arrows = true;
+      write_file_atomically(run.html, linkage_page_html(file_page_data(report, run.name.empty() ? run.file : run.name),
+                                                        linkage_pose_svg(model, sweep, pose, still),
+                                                        "one pose drawn by numlab (the page without scripts)"));
+    }
+  } else if (!run.svg.empty() || !run.animate.empty() || !run.html.empty()) {
     std::cerr << "numlab: no pose assembled, so no scene was drawn\n";
+    if (!run.html.empty()) {
+      write_file_atomically(run.html, linkage_page_html(file_page_data(report, run.name.empty() ? run.file : run.name), "",
+                                                        "no pose assembled"));
+    }
   }
   if (!run.chart.empty()) draw_driving_chart(chart_files(run.chart), model, sweep, output);
   if (run.common.format == Format::json) {

@@ -29,6 +29,8 @@ struct LinkageRun {
   std::optional<double> speed_rad_s;  // --speed: the crank's speed, rad/s
   CommonOptions common;
   std::string svg, animate;        // already placed inside --out
+  std::string html;                // --html: the linkage page (inside --out)
+  std::string name;                // the name given on the command line, for the page
   std::optional<double> draw_at;   // --draw-at: the pose --svg draws, a driver value of the sweep
   std::vector<std::string> paths;  // --path: joints whose paths the scenes highlight (else the file's trace)
   std::string chart;               // --chart: the driving torque and mechanical advantage (inside --out)

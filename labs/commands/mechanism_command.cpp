@@ -23,8 +23,10 @@
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
 #include "numlab/printable_text.hpp"
 #include "parsing/speed_argument.hpp"
-#include "commands/crank_sweep_csv.hpp"
 #include "commands/crank_sweep_tracer.hpp"
+#include "linkage_page/builtin_csv.hpp"
+#include "linkage_page/builtin_page_data.hpp"
+#include "linkage_page/linkage_page_html.hpp"
 #include "output/chart.hpp"
 #include "output/table.hpp"
 
@@ -34,19 +36,6 @@ namespace {
 
 using mechanisms::JansenModel;
 using Tracer = CrankSweepTracer<mechanisms::JansenSweepStepper>;
-
-// |dF / d theta_i| at a pose, from the 8-equation model's rates (the 10-equation model's joints are
-// the same, so its 8 angles are read off them).
-double foot_speed(JansenModel model, const mechanisms::JansenPose& pose) {
-  const mechanisms::JansenLeg leg;
-  const Eigen::VectorXd eight =
-      model == JansenModel::eight_equations
-          ? pose.angles
-          : mechanisms::jansen_angles_of(JansenModel::eight_equations, pose.joints,
-                                         Eigen::VectorXd(mechanisms::JansenClosure::seed_estimates()));
-  const auto rates = leg.rates(pose.crank_deg * std::numbers::pi / 180.0, mechanisms::JansenAngles(eight));
-  return rates.status == Status::converged ? rates.foot_speed : std::numeric_limits<double>::quiet_NaN();
-}
 
 nlohmann::ordered_json json_of(const std::string& name, const std::string& solver, JansenModel model,
                                const mechanisms::JansenSweep& sweep, const Tracer* tracer, double time_s) {
@@ -61,7 +50,7 @@ nlohmann::ordered_json json_of(const std::string& name, const std::string& solve
     out["poses"].push_back({{"crank_deg", pose.crank_deg},
                             {"angles", angles},
                             {"joints", joints},
-                            {"foot_speed", number_or_null(foot_speed(model, pose))},
+                            {"foot_speed", number_or_null(jansen_foot_speed(model, pose))},
                             {"iterations", pose.outcome.iterations},
                             {"residual_inf", pose.outcome.residual_norm},
                             {"status", std::string(to_string(pose.outcome.status))},
@@ -107,7 +96,7 @@ void print_text(std::ostream& out, const std::string& name, const std::string& s
     const auto& pose = sweep.poses[i];
     const auto& foot = pose.joints[static_cast<std::size_t>(mechanisms::JansenJoint::F)];
     table.add_row({fmt::format("{:g}", pose.crank_deg), fmt::format("{:.6f}", foot.x()), fmt::format("{:.6f}", foot.y()),
-                   fmt::format("{:.4f}", foot_speed(model, pose)), std::to_string(pose.outcome.iterations), scientific(pose.outcome.residual_norm),
+                   fmt::format("{:.4f}", jansen_foot_speed(model, pose)), std::to_string(pose.outcome.iterations), scientific(pose.outcome.residual_norm),
                    std::string(to_string(pose.outcome.status))});
   }
   table.print(out);
@@ -154,6 +143,8 @@ MechanismCommand::MechanismCommand(CLI::App& app) {
       ->check(CLI::IsMember({"gepp", "gauss-seidel", "gsl-lu", "eigen-lu"}));
   command_->add_option("--svg", svg_, "Draw the first pose and the foot path to this SVG file");
   command_->add_option("--animate", animate_, "Write an animated SVG of the sweep to this file");
+  command_->add_option("--html", html_, "Write a page with the scene and a crank slider that scrubs the sweep's poses "
+                                        "(needs --sweep)");
   command_->add_option("--beest", beest_, "Draw seed 000's four-legged beest from the sweep (a full turn)");
   command_->add_flag("--beest-animated{4.0}", beest_seconds_, "Animate the beest");
   command_->add_flag("--explain", explain_, "A description file: print the derived model (unknowns, equations, "
@@ -198,8 +189,7 @@ void print_jansen_report(const CommonOptions& common, const std::string& name, c
   if (common.format == Format::json) {
     std::cout << json_of(name, solver, model, sweep, common.trace ? &tracer : nullptr, time_s).dump(2) << '\n';
   } else if (common.format == Format::csv) {
-    print_crank_sweep_csv(std::cout, sweep.poses, mechanisms::jansen_angle_names(model), mechanisms::jansen_joint_names,
-                          "foot_speed", 10, [&](const mechanisms::JansenPose& pose) { return foot_speed(model, pose); });
+    print_jansen_csv(std::cout, model, sweep);
   } else {
     print_text(std::cout, name, solver, model, sweep, time_s);
   }
@@ -253,9 +243,12 @@ void MechanismCommand::check_flags(const CommonOptions& common, bool from_file) 
   require_applies(given(common, "--tol"), solver_ != "analytic", "--tol", "the iterative solvers (not analytic)");
   require_applies(given(common, "--max-iter"), solver_ != "analytic", "--max-iter", "the iterative solvers (not analytic)");
   require_applies(given(*command_, "--beest-animated"), !beest_.empty(), "--beest-animated", "--beest FILE");
-  require_applies(given(common, "--out"), !svg_.empty() || !animate_.empty() || !beest_.empty() || !chart_.empty(), "--out",
-                  "--svg, --animate, --beest or --chart (the folder for the files they name)");
-  for (const auto& [flag, value] : {std::pair{"--svg", &svg_}, std::pair{"--animate", &animate_}, std::pair{"--beest", &beest_}}) {
+  require_applies(given(common, "--out"), !svg_.empty() || !animate_.empty() || !beest_.empty() || !html_.empty() || !chart_.empty(),
+                  "--out", "--svg, --animate, --beest, --html or --chart (the folder for the files they name)");
+  require_applies(given(*command_, "--html"), !sweep_.empty(), "--html", "--sweep START:STOP:STEP (a page scrubs a sweep; "
+                                                                        "one pose is --svg's)");
+  for (const auto& [flag, value] : {std::pair{"--svg", &svg_}, std::pair{"--animate", &animate_}, std::pair{"--beest", &beest_},
+                                    std::pair{"--html", &html_}}) {
     if (given(*command_, flag) && value->empty()) throw std::invalid_argument(std::string(flag) + " needs a file name");
   }
   if (explain_ && analyse_) throw std::invalid_argument("--explain and --analyse each print a report and stop: give one");
@@ -268,7 +261,7 @@ void MechanismCommand::check_flags(const CommonOptions& common, bool from_file) 
 // --explain: the derived model of a description file, no solve.
 int MechanismCommand::explain(const CommonOptions& common, const std::string& file) const {
   for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--strict",
-                           "--at-crossing", "--output", "--speed", "--draw-at", "--path", "--chart"}) {
+                           "--at-crossing", "--output", "--speed", "--html", "--draw-at", "--path", "--chart"}) {
     require_applies(given(*command_, flag), false, flag, "a solve, not --explain");
   }
   for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
@@ -285,7 +278,7 @@ int MechanismCommand::explain(const CommonOptions& common, const std::string& fi
 // --analyse: a four-bar's or slider-crank's analysis from the model, no sweep asked for.
 int MechanismCommand::analyse(const CommonOptions& common, const std::string& file) const {
   for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--at-crossing",
-                           "--speed", "--draw-at", "--path", "--chart"}) {
+                           "--speed", "--html", "--draw-at", "--path", "--chart"}) {
     require_applies(given(*command_, flag), false, flag, "a solve, not --analyse");
   }
   for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
@@ -304,9 +297,10 @@ int MechanismCommand::analyse(const CommonOptions& common, const std::string& fi
 // The output files inside --out, checked writable (and not the description file) before any work.
 MechanismCommand::OutputPaths MechanismCommand::checked_outputs(const CommonOptions& common, const std::string& file) const {
   const OutputPaths paths{output_path(common, svg_), output_path(common, animate_), output_path(common, beest_),
-                          output_path(common, chart_)};
+                          output_path(common, html_), output_path(common, chart_)};
   std::vector<PlannedFile> outputs;
-  for (const auto& [path, flag] : {std::pair{paths.svg, "--svg"}, std::pair{paths.animate, "--animate"}, std::pair{paths.beest, "--beest"}}) {
+  for (const auto& [path, flag] : {std::pair{paths.svg, "--svg"}, std::pair{paths.animate, "--animate"}, std::pair{paths.beest, "--beest"},
+                                   std::pair{paths.html, "--html"}}) {
     if (!path.empty()) outputs.push_back({path, flag});
   }
   if (!paths.chart.empty()) {
@@ -336,9 +330,11 @@ int MechanismCommand::sweep_file(const CommonOptions& common, const SweepRange&,
   run.common = common;
   run.svg = paths.svg;
   run.animate = paths.animate;
+  run.html = paths.html;
   run.draw_at = draw_at_;
   run.paths = paths_;
   run.chart = paths.chart;
+  run.name = name_;
   return run_linkage(run);
 }
 
@@ -346,7 +342,7 @@ int MechanismCommand::sweep_file(const CommonOptions& common, const SweepRange&,
 int MechanismCommand::sweep_mustang(const CommonOptions& common, const SweepRange& range, const OutputPaths& paths,
                                     const std::string&) const {
   if (!beest_.empty()) throw std::invalid_argument("--beest draws the Jansen leg's beest, not the mustang");
-  return run_mustang({range.start, range.stop, range.step, solver_, linear_, common, paths.svg, paths.animate});
+  return run_mustang({range.start, range.stop, range.step, solver_, linear_, common, paths.svg, paths.animate, paths.html});
 }
 
 // The Jansen leg (8 or 10 equations): sweep, write the files, print the report.
@@ -382,6 +378,11 @@ int MechanismCommand::sweep_jansen(const CommonOptions& common, const SweepRange
     if (!paths.svg.empty()) write_file_atomically(paths.svg, jansen_pose_svg(sweep, 0));
     if (!paths.animate.empty()) write_file_atomically(paths.animate, jansen_animation_svg(sweep, 4.0));
     if (!paths.beest.empty()) write_file_atomically(paths.beest, beest_svg(sweep, beest_seconds_));
+    if (!paths.html.empty()) {
+      const auto data = jansen_page_data(name_, model, sweep, "numlab mechanism " + name_ + " --format csv");
+      write_file_atomically(paths.html, linkage_page_html(data, jansen_pose_svg(sweep, 0),
+                                                          "the leg at the sweep's first pose (the page without scripts)"));
+    }
   }
   print_jansen_report(common, name_, solver_, model, sweep, tracer, time_s);
   return exit_code_for(sweep.status);

@@ -21,9 +21,9 @@ class MechanismCommand {
   int run() const;
 
  private:
-  // The files --svg, --animate, --beest and --chart name, inside --out (empty: not asked for).
+  // The files --svg, --animate, --beest, --html and --chart name, inside --out (empty: not asked for).
   struct OutputPaths {
-    std::string svg, animate, beest;
+    std::string svg, animate, beest, html;
     std::string chart;  // --chart's
   };
   std::string linkage_file() const;
@@ -52,6 +52,7 @@ class MechanismCommand {
   std::string svg_;
   std::string animate_;
   std::string beest_;
+  std::string html_;  // --html: the linkage page with a crank slider
   double beest_seconds_ = 0.0;
   bool explain_ = false;
   bool check_jacobian_ = false;

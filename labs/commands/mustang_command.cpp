@@ -9,7 +9,9 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "commands/crank_sweep_csv.hpp"
+#include "linkage_page/builtin_csv.hpp"
+#include "linkage_page/builtin_page_data.hpp"
+#include "linkage_page/linkage_page_html.hpp"
 #include "commands/crank_sweep_tracer.hpp"
 #include "numlab/mechanisms/crank_angle.hpp"
 #include "scenes/mustang_scene.hpp"
@@ -200,14 +202,18 @@ int run_mustang(const MustangRequest& request) {
   if (!sweep.poses.empty()) {
     if (!request.svg.empty()) write_file_atomically(request.svg, mustang_pose_svg(sweep, 0));
     if (!request.animate.empty()) write_file_atomically(request.animate, mustang_animation_svg(sweep, 0.08 * static_cast<double>(sweep.poses.size())));
+    if (!request.html.empty()) {
+      const auto data = mustang_page_data(sweep, request.start, request.stop, "numlab mechanism mustang --format csv");
+      write_file_atomically(request.html, linkage_page_html(data, mustang_pose_svg(sweep, 0),
+                                                            "the linkage at the sweep's first pose (the page without scripts)"));
+    }
   }
   if (request.common.format == Format::json) {
     std::cout << json_of(request, sweep, tracer, time_s).dump(2) << '\n';
   } else {
     if (request.common.trace && !request.common.step) print_trace(std::cerr, tracer.attempts());
     if (request.common.format == Format::csv) {
-      print_crank_sweep_csv(std::cout, sweep.poses, mechanisms::mustang_angle_names, mechanisms::mustang_joint_names,
-                            "condition", 6, [](const mechanisms::MustangPose& pose) { return pose.condition; });
+      print_mustang_csv(std::cout, sweep);
     } else {
       print_text(std::cout, request, sweep, time_s);
     }

@@ -13,6 +13,7 @@ struct MustangRequest {
   std::string solver, linear;
   const CommonOptions& common;
   std::string svg, animate;
+  std::string html{};  // --html: the linkage page (inside --out)
 };
 
 // Prints the result (text, CSV or JSON) and returns the exit code: 0, or 1 when a limit (or a

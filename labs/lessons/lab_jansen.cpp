@@ -13,6 +13,8 @@
 #include "output/files.hpp"
 #include "output/format.hpp"
 #include "scenes/jansen_scene.hpp"
+#include "linkage_page/builtin_page_data.hpp"
+#include "linkage_page/linkage_page_html.hpp"
 #include "lessons/lab.hpp"
 #include "lessons/lab_sentences.hpp"
 #include "methods/nonlinear_methods.hpp"
@@ -190,6 +192,13 @@ void show_the_scene(LabSession& session, const mechanisms::JansenSweep& cycle) {
   const std::string animated = saved_file(session, "leg-animated.svg", jansen_animation_svg(cycle, 4.0));
   session.figure(still, "the leg at crank angle 0, with the foot's path over the cycle");
   session.figure(animated, "one crank cycle, animated (4 s per turn)");
+  saved_file(session, "leg.html",
+             linkage_page_html(jansen_page_data("jansen", JansenModel::eight_equations, cycle,
+                                                "lab jansen's cycle: full Newton, tolerance 1e-10, 0:359:1"),
+                               jansen_pose_svg(cycle, 0), "the leg at crank angle 0 (the page without scripts)"));
+  session.say("leg.html, beside this report, is the cycle to drag: a crank slider scrubs its 360 poses, redrawing "
+              "the leg with every joint's velocity, and reads out each pose's numbers (iterations, kappa(J), the "
+              "transmission angles).");
 }
 
 // Step 1 of lab jansen-sequential: the block lower-triangular Jacobian, in words.

@@ -13,6 +13,8 @@
 #include "lessons/lab.hpp"
 #include "lessons/lab_sentences.hpp"
 #include "scenes/mustang_scene.hpp"
+#include "linkage_page/builtin_page_data.hpp"
+#include "linkage_page/linkage_page_html.hpp"
 #include "numlab/mechanisms/crank_angle.hpp"
 #include "numlab/mechanisms/mustang_seed_method.hpp"
 #include "numlab/mechanisms/mustang_sweep.hpp"
@@ -238,6 +240,13 @@ void show_the_scenes(LabSession& session) {
   const std::string moving = write_lab_file(session, "mustang-animated.svg", mustang_animation_svg(scene, 8.0));
   session.figure(still, "the roof linkage at 45 deg, the three major links heavy, with the path of the roof tip P12");
   session.figure(moving, "the sweep over the assembly range, animated forth and back");
+  const MustangSweep range = fixed_sweep("full", -90.0, 90.0, 0.5);
+  write_lab_file(session, "mustang.html",
+                 linkage_page_html(mustang_page_data(range, -90.0, 90.0, "lab mustang's sweep: full Newton, -90:90:0.5"),
+                                   mustang_pose_svg(scene, at45), "the roof linkage at 45 deg (the page without scripts)"));
+  session.say("mustang.html, beside this report, is the sweep to drag: a slider scrubs its poses between the two "
+              "assembly limits (marked), redrawing the linkage with every joint's velocity and reading out each "
+              "pose's numbers.");
 }
 
 // Step 7: every solver timed over the range, as ratios to full Newton.

@@ -1,0 +1,220 @@
+"""The linkage page in headless Chromium, for every shipped model (tests/browser/browser.py drives it).
+
+Usage: test_linkage_page_browser.py OUT_DIR NUMLAB MODELS_DIR
+
+For each page (pages.py: the built-in jansen, jansen10, mustang, every file in MODELS_DIR, the
+four-bar with loads at 60 rpm):
+ 1. the slider scrubbed to poses across the sweep (first, thirds, last, and a pose that did not
+    assemble if any): the readout's joint coordinates, velocities, driver value and status equal
+    the CSV row's (the full value in data-value exactly, the text to its 8 digits), and the drawn
+    joint circles stand at the CSV's x, -y;
+ 2. the keys on the slider (ArrowRight, Home, End) and the buttons (previous, first, next) move one
+    pose, or to the ends;
+ 3. no console error or uncaught exception; a screenshot per page (OUT_DIR/NAME.png).
+Then on particular pages: the Jansen cycle's frame time over 200 slider moves (median under 16 ms:
+the input event handled, style and layout done), the page with scripts off (the static SVG and the
+table of 360 rows), printed (no controls), with reduced motion (Play's rate says so); Play at the
+real crank speed of --speed 60rpm; the Mustang's limit marks take the slider to the limit poses.
+Last, the pages the labs jansen and mustang write beside their report (leg.html, mustang.html):
+they open without errors and their readout shows their own embedded numbers.
+"""
+
+import json
+import math
+import pathlib
+import subprocess
+import sys
+
+HERE = pathlib.Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(HERE.parent / "browser"))
+from browser import Browser  # noqa: E402
+from pages import make_pages  # noqa: E402
+
+
+def shown_cells(page):
+    """Every readout cell with a column: {column: (text, data-value)}."""
+    return page.eval("Object.fromEntries([...document.querySelectorAll('#readout [data-col]')]"
+                     ".map(e => [e.getAttribute('data-col'), [e.textContent, e.getAttribute('data-value')]]))")
+
+
+def last_digit(text):
+    """Half a unit in the last digit the text shows (e.g. 0.005 for '12.34', 5e-9 for '1.5e-8')."""
+    mantissa, _, exponent = text.lower().partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    return 0.5 * 10.0 ** (-decimals + (int(exponent) if exponent else 0)) * (1 + 1e-9)
+
+
+def check_pose(page, case, i):
+    """The readout and the drawing at pose i against the CSV's row i."""
+    assert page.eval("numlabLinkage.shown()") == i, (case.name, i, page.eval("numlabLinkage.shown()"))
+    row = dict(zip(case.header, case.rows[i]))
+    cells = shown_cells(page)
+    checked = 0
+    for column, (text, value) in cells.items():
+        if column not in row:
+            continue  # a column the page adds (the built-ins' velocities): checked against differences elsewhere
+        cell = row[column]
+        try:
+            number = float(cell)
+        except ValueError:
+            assert text == cell and value == cell, f"{case.name} pose {i}: {column} shows {text!r}, the CSV {cell!r}"
+            checked += 1
+            continue
+        if not math.isfinite(number):
+            assert value == "", f"{case.name} pose {i}: {column} is {cell} in the CSV, {value!r} on the page"
+        else:
+            assert float(value) == number, f"{case.name} pose {i}: {column} data-value {value}, the CSV {cell}"
+            assert abs(float(text) - number) <= last_digit(text), f"{case.name} pose {i}: {column} shows {text}, the CSV {cell}"
+        checked += 1
+    joints = [c[2:] for c in case.header if c.startswith("x_")]
+    assert all(f"x_{j}" in cells and f"y_{j}" in cells for j in joints), f"{case.name}: a joint missing from the readout"
+    if row.get("status") == "converged":
+        drawn = page.eval("Object.fromEntries([...document.querySelectorAll('#scene circle.joint')]"
+                          ".map(c => [c.getAttribute('data-joint'), [+c.getAttribute('cx'), +c.getAttribute('cy')]]))")
+        for j in joints:
+            x, y = float(row[f"x_{j}"]), float(row[f"y_{j}"])
+            assert drawn[j][0] == x and drawn[j][1] == -y, f"{case.name} pose {i}: {j} drawn at {drawn[j]}, the CSV ({x}, {y})"
+    return checked
+
+
+def scrub(page, case):
+    n = len(case.rows)
+    statuses = case.column("status")
+    poses = {0, n // 3, n // 2, 2 * n // 3, n - 1}
+    failed = [k for k, s in enumerate(statuses) if s != "converged"]
+    if failed:
+        poses.add(failed[len(failed) // 2])
+    checked = 0
+    for i in sorted(poses):
+        page.set_range("#pose-slider", i)
+        checked += check_pose(page, case, i)
+        if statuses[i] != "converged":
+            assert "not assembled" in page.text("#scene-pose"), page.text("#scene-pose")
+    # Keys on the slider, then the buttons.
+    page.set_range("#pose-slider", n // 2)
+    page.press("ArrowRight", "#pose-slider")
+    checked += check_pose(page, case, n // 2 + 1)
+    page.press("Home", "#pose-slider")
+    checked += check_pose(page, case, 0)
+    page.press("End", "#pose-slider")
+    checked += check_pose(page, case, n - 1)
+    page.click("#pose-previous")
+    checked += check_pose(page, case, n - 2)
+    page.click("#pose-first")
+    checked += check_pose(page, case, 0)
+    page.click("#pose-next")
+    checked += check_pose(page, case, 1)
+    return checked
+
+
+FRAME_TIME = """(async () => {
+  const slider = document.getElementById('pose-slider'), scene = document.getElementById('scene');
+  const n = +slider.max + 1, work = [], frames = [];
+  for (let k = 0; k < 200; ++k) {
+    const t0 = performance.now();
+    slider.value = String((k * 7 + 1) % n);
+    slider.dispatchEvent(new Event('input', {bubbles: true}));
+    scene.getBoundingClientRect();
+    document.body.offsetHeight;  // style and layout now, as the frame would
+    const t1 = performance.now();
+    await new Promise(done => requestAnimationFrame(() => done()));
+    work.push(t1 - t0);
+    frames.push(performance.now() - t0);
+  }
+  const median = a => { const s = a.slice().sort((x, y) => x - y); return (s[99] + s[100]) / 2; };
+  const p95 = a => a.slice().sort((x, y) => x - y)[189];
+  return {moves: work.length, median_ms: median(work), p95_ms: p95(work), max_ms: Math.max(...work),
+          median_to_next_frame_ms: median(frames)};
+})()"""
+
+
+def sleep_js(ms):
+    return f"new Promise(done => setTimeout(done, {ms}))"
+
+
+def main(out_dir, numlab, models_dir):
+    out = pathlib.Path(out_dir)
+    cases = make_pages(numlab, models_dir, out / "pages")
+    by_name = {case.name: case for case in cases}
+    total = 0
+    with Browser(out, width=1300, height=1000) as browser:
+        for case in cases:
+            page = browser.open(case.page)
+            assert page.eval("getComputedStyle(document.getElementById('static-scene')).display") == "none", case.name
+            total += scrub(page, case)
+            page.set_range("#pose-slider", len(case.rows) // 3)
+            page.eval("window.scrollTo(0, 0)")
+            page.screenshot(case.page.stem + ".png")
+            page.check_no_errors()
+        # The Jansen cycle: frame time, scripts off, print, reduced motion.
+        jansen = by_name["jansen"]
+        page = browser.open(jansen.page)
+        timing = page.eval(FRAME_TIME)
+        (out / "frame_time.json").write_text(json.dumps(timing, indent=2) + "\n")
+        print(f"jansen, 360 poses: {timing['moves']} slider moves, update + style + layout median "
+              f"{timing['median_ms']:.2f} ms, 95th percentile {timing['p95_ms']:.2f} ms, max {timing['max_ms']:.2f} ms; "
+              f"to the next frame median {timing['median_to_next_frame_ms']:.2f} ms")
+        assert timing["median_ms"] < 16, timing
+        page.check_no_errors()
+        page = browser.open(jansen.page, scripts=False)
+        assert page.eval("getComputedStyle(document.getElementById('static-scene')).display") != "none"
+        assert page.exists("#static-scene svg") and not page.exists("#pose-slider")
+        assert page.eval("document.querySelectorAll('#pose-table tbody tr').length") == 360
+        page.screenshot("jansen-no-scripts.png")
+        page = browser.open(jansen.page, media="print")
+        assert page.eval("getComputedStyle(document.querySelector('.controls')).display") == "none"
+        assert page.eval("getComputedStyle(document.getElementById('scene')).display") != "none"
+        page.screenshot("jansen-print.png")
+        page.check_no_errors()
+        page = browser.open(jansen.page, reduced_motion="reduce")
+        assert "reduced motion" in page.text("#play-rate"), page.text("#play-rate")
+        page.check_no_errors()
+        # Play at --speed 60rpm: 360 deg/s, 1-degree poses: about 90 poses in 250 ms.
+        loads = by_name["four-bar-loads"]
+        page = browser.open(loads.page)
+        assert "6.28319 rad/s (60 rpm)" in page.text("#play-rate"), page.text("#play-rate")
+        assert "driver_torque" in shown_cells(page)
+        page.click("#pose-first")
+        moved = page.eval("(async () => { document.getElementById('pose-play').click(); const t0 = performance.now();"
+                          f" await {sleep_js(250)}; document.getElementById('pose-play').click();"
+                          " return [numlabLinkage.shown(), performance.now() - t0]; })()")
+        expected = 360 * moved[1] / 1000
+        assert 0.5 * expected <= moved[0] <= 1.5 * expected + 2, (moved, expected)
+        print(f"play at 60 rpm: {moved[0]} poses in {moved[1]:.0f} ms (the crank's speed gives {expected:.0f})")
+        page.check_no_errors()
+        # The Mustang's limits: two marks; each "go to" shows the pose nearest the limit.
+        mustang = by_name["mustang"]
+        page = browser.open(mustang.page)
+        assert page.eval("document.querySelectorAll('.marks .tick.limit').length") == 2
+        page.click("#mark-list li.limit:first-child button")
+        assert page.eval("numlabLinkage.shown()") == 0
+        page.click("#mark-list li.limit:last-child button")
+        assert page.eval("numlabLinkage.shown()") == len(mustang.rows) - 1
+        page.eval("window.scrollTo(0, 0)")
+        page.screenshot("mustang-at-upper-limit.png")
+        page.check_no_errors()
+        # The labs' pages.
+        for lab, name in (("jansen", "leg.html"), ("mustang", "mustang.html")):
+            folder = out / "labs"
+            run = subprocess.run([numlab, "lab", lab, "--out", str(folder)], capture_output=True, text=True)
+            assert run.returncode == 0, f"lab {lab}: exit {run.returncode}: {run.stderr}"
+            path = folder / f"lab-{lab}" / name
+            assert name in (folder / f"lab-{lab}" / "report.html").read_text(), f"lab {lab}: the report does not name {name}"
+            page = browser.open(path)
+            data = page.eval("numlabLinkage.data.columns")
+            for i in (0, len(data["crank_deg"]) // 2, len(data["crank_deg"]) - 1):
+                page.set_range("#pose-slider", i)
+                cells = shown_cells(page)
+                joint = "F" if lab == "jansen" else "P12"
+                for column in ("crank_deg", f"x_{joint}", f"vx_{joint}", "condition"):
+                    assert data[column][i] is not None and float(cells[column][1]) == data[column][i], \
+                        (lab, column, i, cells[column], data[column][i])
+            page.eval("window.scrollTo(0, 0)")
+            page.screenshot(f"lab-{lab}-{name}.png")
+            page.check_no_errors()
+    print(f"{len(cases)} pages scrubbed in Chromium: {total} shown numbers and words equal to the CSV's, no page errors")
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:4])
