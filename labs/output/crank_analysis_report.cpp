@@ -84,7 +84,7 @@ void print_crank_analysis(std::ostream& out, const LinkageModel& model, const Cr
     out << fmt::format("structure          slider-crank: crank {} {:g}, rod {} {:g}, offset {:g}\n", a.crank_name, a.crank,
                        a.coupler_name, a.coupler, a.ground);
   } else {
-    out << fmt::format("structure          crank-driven: crank {} {:g}; {} (so no classification and no closed forms: the "
+    out << fmt::format("structure          crank-driven: crank link \"{}\" {:g}; {} (so no classification and no closed forms: the "
                        "output's toggles from its velocity ratio alone)\n",
                        a.crank_name, a.crank, a.not_analysed);
   }

@@ -365,3 +365,116 @@ TEST_CASE("Any crank-driven mechanism: the output's toggles by Brent on its velo
     CHECK(r.not_analysed == "not a four-bar: 2 sliders; name an output (--output or the file's output) for its toggles and time ratio");
   }
 }
+
+namespace {
+
+// A Whitworth quick-return as text: the crank O2-A (r) about O2 = (0, d), the slotted link O4-B (R)
+// about O4 = (0, 0) with the block at A in its slot, the rod B-C (l) and the ram C on the line y = 0
+// through O4; every length times `scale`, the reference pose at crank `reference_deg`.
+std::string whitworth_text(double r, double d, double R, double l, double scale, double reference_deg) {
+  const double t = reference_deg * pi / 180.0, ax = r * std::cos(t), ay = d + r * std::sin(t), s = std::hypot(ax, ay);
+  const double bx = R * ax / s, by = R * ay / s, cx = bx + std::sqrt(l * l - by * by);
+  return fmt::format(
+      "[linkage]\nname = \"w\"\noutput = \"C\"\n[ground]\nO2 = [0.0, {:.17g}]\nO4 = [0.0, 0.0]\n[joints]\nA = [{:.17g}, {:.17g}]\n"
+      "B = [{:.17g}, {:.17g}]\nC = [{:.17g}, 0.0]\n[[link]]\njoints = [\"O2\", \"A\"]\nlength = {:.17g}\n[[link]]\n"
+      "joints = [\"O4\", \"B\"]\nlength = {:.17g}\n[[link]]\njoints = [\"B\", \"C\"]\nlength = {:.17g}\n[[slider]]\njoint = \"A\"\n"
+      "line = [\"O4\", \"B\"]\n[[slider]]\njoint = \"C\"\nthrough = [0.0, 0.0]\nangle = 0.0\n[driver]\ntype = \"crank\"\n"
+      "pivot = \"O2\"\njoint = \"A\"\nangle = {:.17g}\n",
+      d * scale, ax * scale, ay * scale, bx * scale, by * scale, cx * scale, r * scale, R * scale, l * scale, reference_deg);
+}
+
+// An inverted slider-crank (the crank-shaper): the crank O-A (r) about O = (0, 0), the rocker B-C (L)
+// about B = d (cos g, sin g), the block at A sliding along B-C; every length times `scale`.
+std::string crank_shaper_text(double r, double d, double g_deg, double L, double scale, double reference_deg) {
+  const double t = reference_deg * pi / 180.0, g = g_deg * pi / 180.0;
+  const double ax = r * std::cos(t), ay = r * std::sin(t), bx = d * std::cos(g), by = d * std::sin(g);
+  const double s = std::hypot(ax - bx, ay - by), cx = bx + L * (ax - bx) / s, cy = by + L * (ay - by) / s;
+  return fmt::format(
+      "[linkage]\nname = \"cs\"\noutput = \"rocker\"\n[ground]\nO = [0.0, 0.0]\nB = [{:.17g}, {:.17g}]\n[joints]\n"
+      "A = [{:.17g}, {:.17g}]\nC = [{:.17g}, {:.17g}]\n[[link]]\njoints = [\"O\", \"A\"]\nlength = {:.17g}\n[[link]]\n"
+      "name = \"rocker\"\njoints = [\"B\", \"C\"]\nlength = {:.17g}\n[[slider]]\njoint = \"A\"\nline = [\"B\", \"C\"]\n"
+      "[driver]\ntype = \"crank\"\npivot = \"O\"\njoint = \"A\"\nangle = {:.17g}\n",
+      bx * scale, by * scale, ax * scale, ay * scale, cx * scale, cy * scale, r * scale, L * scale, reference_deg);
+}
+
+// Whitworth, r > d: the ram's line passes through O4, so C stands still exactly when the slot lies
+// along it (C_x = R cos phi + sqrt(l^2 - R^2 sin^2 phi) has C_x' = -R sin phi (1 + R cos phi / q) = 0
+// only at sin phi = 0): A on y = 0, r sin theta = -d, theta = -beta and 180 + beta, beta = asin(d / r).
+// Crank growing, the ram goes out from the first (C = R + l) ... the strokes 180 + 2 beta (A above
+// O4: the slot turns slowly) and 180 - 2 beta; C at l + R and l - R.
+void check_whitworth(const CrankAnalysis& a, double r, double d, double R, double l, double scale) {
+  const double beta = std::asin(d / r) * to_deg;
+  CHECK(a.kind == "crank-driven");
+  CHECK(a.crank_turns_fully);
+  CHECK(a.output == "C");
+  REQUIRE(a.output_toggles.size() == 2);
+  INFO("found " << a.output_toggles[0].crank_deg << ", " << a.output_toggles[1].crank_deg << "; closed form " << 180 + beta
+                << ", " << 360 - beta);
+  CHECK(gap_deg(a.output_toggles[0].crank_deg, 180.0 + beta) < 1e-7);
+  CHECK(gap_deg(a.output_toggles[1].crank_deg, -beta) < 1e-7);
+  CHECK(std::abs(a.output_toggles[0].output_value - (l - R) * scale) < 1e-9 * l * scale);
+  CHECK(std::abs(a.output_toggles[1].output_value - (l + R) * scale) < 1e-9 * l * scale);
+  CHECK(std::abs(a.slow_stroke_deg - (180.0 + 2.0 * beta)) < 2e-7);
+  CHECK(std::abs(a.quick_stroke_deg - (180.0 - 2.0 * beta)) < 2e-7);
+  CHECK(a.slow_stroke_start == 1);  // from -beta (C = l + R) over the top to 180 + beta (C = l - R)
+  CHECK(std::abs(a.time_ratio - (180.0 + 2.0 * beta) / (180.0 - 2.0 * beta)) < 1e-8);
+}
+
+// Crank-shaper, r < d: the rocker B-A stands still where it is tangent to the crank circle, BA
+// perpendicular to OA: the crank at the direction of OB -+ gamma, gamma = acos(r / d). The crank
+// turns 2 gamma on B's side (the quick stroke) and 360 - 2 gamma = 180 + 2 asin(r / d) away from B
+// (the slow one); the rocker's angle there is the direction of BO -+ asin(r / d).
+void check_crank_shaper(const CrankAnalysis& a, double r, double d, double g_deg) {
+  const double gamma = std::acos(r / d) * to_deg, swing = std::asin(r / d) * to_deg;
+  CHECK(a.kind == "crank-driven");
+  CHECK(a.crank_turns_fully);
+  CHECK(a.output_is_angle);
+  REQUIRE(a.output_toggles.size() == 2);
+  const double lo = g_deg - gamma, hi = g_deg + gamma;  // the toggles, in either order once wrapped
+  INFO("found " << a.output_toggles[0].crank_deg << ", " << a.output_toggles[1].crank_deg << "; closed form " << lo << ", " << hi);
+  CHECK(std::min(gap_deg(a.output_toggles[0].crank_deg, lo), gap_deg(a.output_toggles[0].crank_deg, hi)) < 1e-7);
+  CHECK(std::min(gap_deg(a.output_toggles[1].crank_deg, lo), gap_deg(a.output_toggles[1].crank_deg, hi)) < 1e-7);
+  for (const Toggle& t : a.output_toggles) {
+    const bool at_lo = gap_deg(t.crank_deg, lo) < 1e-6;
+    CHECK(gap_deg(t.output_value, g_deg + 180.0 + (at_lo ? swing : -swing)) < 1e-7);
+  }
+  CHECK(std::abs(a.slow_stroke_deg - (180.0 + 2.0 * swing)) < 2e-7);
+  CHECK(std::abs(a.slow_stroke_deg - (360.0 - 2.0 * gamma)) < 2e-7);
+  CHECK(std::abs(a.time_ratio - (180.0 - gamma) / gamma) < 1e-8);
+  // The slow stroke starts at the toggle from which the crank, growing, turns away from B.
+  const double start = a.output_toggles[static_cast<std::size_t>(a.slow_stroke_start)].crank_deg;
+  CHECK(gap_deg(start, hi) < 1e-6);
+}
+
+}  // namespace
+
+TEST_CASE("A Whitworth quick-return's ram toggles and time ratio match (180 + 2 beta) / (180 - 2 beta)", "[crank-analysis]") {
+  SECTION("the shipped whitworth.toml: r = 100, |O2 O4| = 45 mm, slot 160, rod 450") {
+    const LinkageModel model = model_file("whitworth");
+    const LinkageSolver solver(model, {});
+    const CrankAnalysis a = analyse_crank_mechanism(solver);  // the file's output, C
+    check_whitworth(a, 100, 45, 160, 450, 1.0);
+    CHECK(a.time_ratio == Approx(1.845565648).epsilon(1e-9));  // beta = 26.7437 deg
+  }
+  for (double scale : {1e-3, 1e3}) {
+    for (double reference : {30.0, 250.0}) {
+      INFO("scale " << scale << ", reference " << reference);
+      check_whitworth(analyse_text(whitworth_text(100, 70, 160, 450, scale, reference)), 100, 70, 160, 450, scale);
+    }
+  }
+}
+
+TEST_CASE("A crank-shaper's rocker toggles where it is tangent to the crank circle: slow stroke 180 + 2 asin(r / d)", "[crank-analysis]") {
+  SECTION("the shipped inverted-slider-crank.toml: r = 40, B 100 mm below O") {
+    const LinkageModel model = model_file("inverted-slider-crank");
+    const LinkageSolver solver(model, {});
+    const CrankAnalysis a = analyse_crank_mechanism(solver);  // the file's output, the rocker
+    check_crank_shaper(a, 40, 100, -90);
+    CHECK(a.time_ratio == Approx(1.709952782).epsilon(1e-9));
+  }
+  for (double scale : {1e-3, 1e3}) {
+    INFO("scale " << scale);
+    check_crank_shaper(analyse_text(crank_shaper_text(60, 100, -70, 220, scale, 10.0)), 60, 100, -70);
+    check_crank_shaper(analyse_text(crank_shaper_text(30, 100, 35, 220, scale, 200.0)), 30, 100, 35);
+  }
+}
