@@ -220,9 +220,11 @@ int SolveLinearCommand::run() const {
   // 1. Every flag checked against the method before any work (docs/cli.md, "Which flags apply where").
   const CommonOptions common = checked_common_options(common_, "solve linear");
   const bool elimination = method_.starts_with("gepp"), iterative = method_.starts_with("gauss-seidel");
+  const bool closed_form = method_ == "inverse2x2";
   const std::string hand_written = "the hand-written methods (gepp, gepp-no-pivot, gauss-seidel, gauss-seidel-plain)";
-  require_applies(given(common, "--trace"), elimination || iterative, "--trace", hand_written);
-  require_applies(given(common, "--step"), elimination || iterative, "--step", hand_written);
+  const std::string traced = "the hand-written methods (gepp, gepp-no-pivot, gauss-seidel, gauss-seidel-plain, inverse2x2)";
+  require_applies(given(common, "--trace"), elimination || iterative || closed_form, "--trace", traced);
+  require_applies(given(common, "--step"), elimination || iterative || closed_form, "--step", traced);
   require_applies(given(common, "--tol"), elimination || iterative, "--tol", hand_written);
   require_applies(given(common, "--max-iter"), iterative, "--max-iter", "gauss-seidel and gauss-seidel-plain");
   require_applies(given(*command_, "--seed"), !generate_.empty(), "--seed", "--generate");
@@ -236,9 +238,11 @@ int SolveLinearCommand::run() const {
   StepPause pause(common.step);
   EliminationTracer elimination_tracer(trace_stream, &pause);
   SweepTracer sweep_tracer(trace_stream, &pause);
+  ClosedFormTracer closed_form_tracer(trace_stream, &pause);
   LinearTracers tracers;
-  if (common.trace) tracers = {&elimination_tracer, &sweep_tracer};
+  if (common.trace) tracers = {&elimination_tracer, &sweep_tracer, &closed_form_tracer};
   const auto& records = [&]() -> const nlohmann::ordered_json& {
+    if (closed_form) return closed_form_tracer.records();
     return iterative ? sweep_tracer.records() : elimination_tracer.records();
   };
 

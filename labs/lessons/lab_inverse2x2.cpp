@@ -27,6 +27,12 @@ void show_the_closed_form(LabSession& session, const Eigen::Matrix2d& A) {
                           closed.determinant, closed.inverse(0, 0), closed.inverse(0, 1), closed.inverse(1, 0),
                           closed.inverse(1, 1), closed.condition_number,
                           (A * closed.inverse - Eigen::Matrix2d::Identity()).cwiseAbs().maxCoeff()));
+  // The same closed form solving A x = b, b = A (1, 1), traced (numlab solve linear --method inverse2x2 --trace).
+  const Eigen::Vector2d b = A * Eigen::Vector2d::Ones();
+  session.out() << fmt::format("  A x = b with b = A (1, 1) = ({:g}, {:g}), traced:\n", b(0), b(1));
+  ClosedFormTracer tracer(&session.out(), nullptr);
+  run_linear_method("inverse2x2", A, b, {}, {nullptr, nullptr, &tracer});
+  session.stepper("closed-form", "the closed form on A x = b", tracer);
 }
 
 // Step 2: a singularity test judged by the scale of A, not by |det A| alone.

@@ -41,12 +41,17 @@ DynamicResult run_gauss_seidel(const Eigen::MatrixXd& A, const Eigen::VectorXd& 
   return iteration.result();
 }
 
-DynamicResult run_closed_form(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
+DynamicResult run_closed_form(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                              linalg::ClosedForm2x2::Observer* observer) {
   if (A.rows() != 2 || A.cols() != 2 || b.size() != 2) {
     throw std::invalid_argument("inverse2x2 needs a 2x2 system, got " + std::to_string(A.rows()) + "x" +
                                 std::to_string(A.cols()));
   }
-  const linalg::LinearResult<2> fixed = linalg::solve2x2(A, b);
+  // Traced: the stepper, whose one step is solve2x2's closed form, with its observer.
+  linalg::ClosedForm2x2 stepper;
+  stepper.set_observer(observer);
+  const linalg::LinearResult<2> fixed =
+      observer == nullptr ? linalg::solve2x2(A, b) : stepper.solve(Eigen::Matrix2d(A), Eigen::Vector2d(b));
   DynamicResult result;
   result.x = fixed.x;
   result.status = fixed.status;
@@ -92,8 +97,8 @@ const std::vector<LinearMethodEntry>& linear_methods() {
          return run_gauss_seidel(A, b, System::plain, s, t);
        }},
       {newton_name(LinearMethod::inverse2x2), "2x2 closed-form inverse (hand-written; n = 2 only)",
-       [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings&, LinearTracers) {
-         return run_closed_form(A, b);
+       [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings&, LinearTracers t) {
+         return run_closed_form(A, b, t.closed_form);
        }},
       {newton_name(LinearMethod::gsl_lu), "GSL LU with partial pivoting (gsl_linalg_LU_decomp / LU_solve)",
        [](const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const LinearSettings&, LinearTracers) {

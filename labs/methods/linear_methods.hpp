@@ -8,6 +8,7 @@
 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
+#include "numlab/linalg/inverse2x2.hpp"
 
 namespace numlab::cli {
 
@@ -18,10 +19,11 @@ struct LinearSettings {
   std::optional<int> max_iterations;  // gauss-seidel: sweep limit
 };
 
-// Observers that receive the steps of the hand-written methods (either may be null).
+// Observers that receive the steps of the hand-written methods (any may be null).
 struct LinearTracers {
   linalg::GaussElimination<Eigen::Dynamic>::Observer* elimination = nullptr;
   linalg::GaussSeidel<Eigen::Dynamic>::Observer* sweeps = nullptr;
+  linalg::ClosedForm2x2::Observer* closed_form = nullptr;
 };
 
 // gepp, gepp-no-pivot, gauss-seidel, gauss-seidel-plain, inverse2x2, gsl-lu, gsl-qr, eigen-lu.

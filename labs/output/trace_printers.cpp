@@ -82,6 +82,34 @@ StepControl EliminationTracer::on_step(const linalg::GaussElimination<Eigen::Dyn
   return print_record("", printed);
 }
 
+StepControl ClosedFormTracer::on_step(const linalg::ClosedForm2x2& state, const linalg::ClosedFormRecord& record) {
+  if (stopped()) return StepControl::stop;
+  const Eigen::Matrix2d& A = state.matrix();
+  const Eigen::Vector2d& b = state.rhs();
+  const bool singular = state.status() == Status::singular;
+  // 1. The determinant, judged by the scale of A (kappa_2).
+  records_.push_back({{"event", "determinant"},
+                      {"augmented", {{A(0, 0), A(0, 1), b(0)}, {A(1, 0), A(1, 1), b(1)}}},
+                      {"determinant", record.determinant},
+                      {"condition_number", record.condition_number}});
+  std::string text = fmt::format("det A = a d - b c = {:.6g} * {:.6g} - {:.6g} * {:.6g} = {:.6g}; kappa_2(A) = {:.4g}",
+                                 A(0, 0), A(1, 1), A(0, 1), A(1, 0), record.determinant, record.condition_number);
+  if (singular) text += "; singular to working precision (kappa_2 >= 1/eps): no inverse";
+  const StepControl control = print_record("", text);
+  if (control == StepControl::stop || singular) return control;
+  // 2. The inverse: the adjugate over the determinant.
+  const Eigen::Matrix2d inverse = linalg::inverse2x2(A).inverse;
+  records_.push_back({{"event", "inverse"}, {"inverse", {{inverse(0, 0), inverse(0, 1)}, {inverse(1, 0), inverse(1, 1)}}}});
+  const std::string matrix_lines = fmt::format("    {:>11.4g}{:>11.4g}\n    {:>11.4g}{:>11.4g}", inverse(0, 0),
+                                               inverse(0, 1), inverse(1, 0), inverse(1, 1));
+  if (print_record("", fmt::format("A^-1 = (1 / det A) [d -b; -c a] =\n{}", matrix_lines)) == StepControl::stop) {
+    return StepControl::stop;
+  }
+  // 3. The solution.
+  records_.push_back({{"event", "solution"}, {"x", {state.x()(0), state.x()(1)}}});
+  return print_record("", fmt::format("x = A^-1 b = ({:.10g}, {:.10g})", state.x()(0), state.x()(1)));
+}
+
 StepControl SweepTracer::on_step(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) {
   if (stopped()) return StepControl::stop;
   nlohmann::ordered_json entry = {{"sweep", record.sweep}, {"step_inf", record.step_norm},

@@ -12,6 +12,7 @@
 
 #include "numlab/linalg/gauss_elimination.hpp"
 #include "numlab/linalg/gauss_seidel.hpp"
+#include "numlab/linalg/inverse2x2.hpp"
 #include "numlab/nonlinear/dogleg.hpp"
 #include "numlab/nonlinear/dynamic_adapter.hpp"
 #include "numlab/nonlinear/gsl_multiroot.hpp"
@@ -69,6 +70,14 @@ class SweepTracer : public linalg::GaussSeidel<Eigen::Dynamic>::Observer, public
  public:
   using TraceOutput::TraceOutput;
   StepControl on_step(const linalg::GaussSeidel<Eigen::Dynamic>& state, const linalg::SweepRecord& record) override;
+};
+
+// The 2x2 closed form in three records: det A = a d - b c with kappa_2(A) (and the verdict singular),
+// then A^-1 = (1/det A) [d -b; -c a], then x = A^-1 b.
+class ClosedFormTracer : public linalg::ClosedForm2x2::Observer, public TraceOutput {
+ public:
+  using TraceOutput::TraceOutput;
+  StepControl on_step(const linalg::ClosedForm2x2& state, const linalg::ClosedFormRecord& record) override;
 };
 
 // Newton on a DynamicSystem with its linear method chosen at run time (solve nonlinear --method newton).

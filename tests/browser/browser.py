@@ -61,6 +61,7 @@ class Page:
         self.browser = browser
         self.session = session_id
         self.errors = []  # one line per console error or uncaught exception
+        self.scripts = True
 
     def send(self, method, params=None):
         return self.browser.send(method, params, session=self.session)
@@ -77,6 +78,7 @@ class Page:
     def disable_scripts(self, disabled=True):
         """JavaScript off (or on again) for the next navigation: what a reader without scripts sees."""
         self.send("Emulation.setScriptExecutionDisabled", {"value": disabled})
+        self.scripts = not disabled
 
     def emulate_media(self, media="", reduced_motion=None):
         """CSS media type ('print', 'screen' or '' for none) and prefers-reduced-motion ('reduce' or None)."""
@@ -151,6 +153,9 @@ class Page:
     # 4. Errors.
     def check_no_errors(self):
         """Raises BrowserError listing every console error and uncaught exception seen so far."""
+        # A round trip through the page's event loop first: what the last action raised has been
+        # reported (in order, on the same pipe) before this answer comes. (No timers without scripts.)
+        self.eval("new Promise((resolve) => setTimeout(resolve, 0))" if self.scripts else "0")
         self.browser.drain_events()
         if self.errors:
             raise BrowserError("the page reported errors:\n  " + "\n  ".join(self.errors))

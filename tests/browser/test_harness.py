@@ -57,6 +57,7 @@ def main(out_dir):
         assert quiet.exists("#static") and not quiet.exists("#scripted")
         quiet.press("ArrowRight")
         assert quiet.text("#count") == "0"
+        quiet.check_no_errors()
 
         # 4. A wait for something that never comes times out, and the browser is gone after it.
         browser.timeout = 1.0

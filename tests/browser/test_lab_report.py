@@ -28,7 +28,7 @@ import time
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from browser import Browser  # noqa: E402
 
-STEPPER = re.compile(r'<div class="stepper" data-kind="([a-z]+)" data-caption="([^"]*)">\n'
+STEPPER = re.compile(r'<div class="stepper" data-kind="([a-z-]+)" data-caption="([^"]*)">\n'
                      r'<script type="application/json">(.*?)</script>', re.S)
 
 
@@ -135,7 +135,22 @@ def check_newton(data, k, shown):
     assert shown["points"] == k + 1
 
 
-CHECKS = {"gepp": check_gepp, "sweeps": check_sweeps, "newton": check_newton}
+def check_closed_form(data, k, shown):
+    record, first = data["trace"][k], data["trace"][0]
+    assert shown["event"] == record["event"]
+    close(shown["det"], first["determinant"], 6, "det A")
+    close(shown["kappa"], first["condition_number"], 6, "kappa_2(A)")
+    if record["event"] == "solution":
+        values = shown["x"].split()
+        assert len(values) == 2
+        for text, value in zip(values, record["x"]):
+            close(text, value, 6, "x")
+    # det A is a d - b c of the matrix shown first, computed here.
+    (a, b, _), (c, d, _) = first["augmented"]
+    assert abs(first["determinant"] - (a * d - b * c)) <= 1e-15 * max(abs(a * d), abs(b * c))
+
+
+CHECKS = {"gepp": check_gepp, "sweeps": check_sweeps, "newton": check_newton, "closed-form": check_closed_form}
 
 
 def check_step(page, index, kind, data, k):
@@ -177,6 +192,16 @@ def step_through(page, index, kind, data, out, lab):
         assert page.eval(f"document.querySelector('{root} [data-action=previous]').disabled")
     middle = count // 2
     act(lambda: page.set_range(f"{root} input[type=range]", middle), middle)
+    if count - 1 - middle >= 3:
+        # Play advances one step each 0.7 s, and pauses on a second press where it is (before the end).
+        page.click(f"{root} [data-action=play]")
+        time.sleep(1.6)
+        page.click(f"{root} [data-action=play]")
+        now = int(page.eval(f"document.querySelector('{root}').dataset.step"))
+        assert middle < now <= min(middle + 3, count - 1), f"play moved from step {middle + 1} to {now + 1}"
+        assert page.eval(f"document.querySelector('{root} [data-action=play]').getAttribute('aria-label')") == "Play"
+        check_step(page, index, kind, data, now)
+        act(lambda: page.set_range(f"{root} input[type=range]", middle), middle)
     page.eval(f"document.querySelector('{root}').scrollIntoView({{block: 'start'}})")
     page.screenshot(f"{lab}-stepper{index + 1}-middle.png")
     # Every control is a labelled button or slider (keyboard and screen readers).

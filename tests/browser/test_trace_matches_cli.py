@@ -1,7 +1,7 @@
 """The traces a lab report embeds for its steppers are the CLI's own: page and terminal cannot disagree.
 
 Usage: test_trace_matches_cli.py OUT_DIR NUMLAB
-Runs labs gauss, seidel and newton, takes each embedded stepper's JSON, runs the same solve with
+Runs labs gauss, seidel, inverse2x2 and newton, takes each embedded stepper's JSON, runs the same solve with
 `numlab solve ... --trace --format json` and `--trace` (text), and checks that the embedded "trace"
 equals the CLI's "trace" record for record (every number bit for bit; only Newton's time_s, a
 clock reading, is left out) and that the embedded "header" and "lines" are the text --trace prints
@@ -14,7 +14,7 @@ import re
 import subprocess
 import sys
 
-STEPPER = re.compile(r'<div class="stepper" data-kind="([a-z]+)" data-caption="[^"]*">\n'
+STEPPER = re.compile(r'<div class="stepper" data-kind="([a-z-]+)" data-caption="[^"]*">\n'
                      r'<script type="application/json">(.*?)</script>', re.S)
 
 
@@ -72,7 +72,13 @@ def main(out_dir, numlab):
     compare("lab seidel, normal equations", normal,
             ["solve", "linear", "--method", "gauss-seidel", "--generate", "gs-diverge:3", "--max-iter", "1000"], numlab)
 
-    # 3. Lab newton: Rosenbrock from its standard start, tolerance 1e-10, at most 100 iterations.
+    # 3. Lab inverse2x2: the closed form on A = [4 3; 6 3], b = A (1, 1), as an augmented matrix file.
+    (closed,) = embedded(numlab, out, "inverse2x2")
+    matrix = out / "inverse2x2.txt"
+    matrix.write_text("".join(" ".join(repr(v) for v in row) + "\n" for row in closed["trace"][0]["augmented"]))
+    compare("lab inverse2x2, step 1", closed, ["solve", "linear", "--method", "inverse2x2", "--matrix", str(matrix)], numlab)
+
+    # 4. Lab newton: Rosenbrock from its standard start, tolerance 1e-10, at most 100 iterations.
     rosenbrock = embedded(numlab, out, "newton")[0]
     compare("lab newton, Rosenbrock", rosenbrock,
             ["solve", "nonlinear", "--problem", "rosenbrock", "--method", "newton", "--tol", "1e-10", "--max-iter", "100"],

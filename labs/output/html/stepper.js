@@ -57,14 +57,14 @@
     return svg;
   }
 
-  // 3. A matrix as a table: `rows` of numbers, the last column the right-hand side.
+  // 3. A matrix as a table: `rows` of numbers, the last column the right-hand side (unless mark.noRhs).
   function matrixTable(rows, mark) {
     const table = el('table', { class: 'stepper-matrix' });
     rows.forEach((row, i) => {
       const tr = el('tr', { class: mark.rows.includes(i) ? 'touched' : '' });
       row.forEach((value, j) => {
         const td = el('td', {}, num(value));
-        if (j === row.length - 1) td.classList.add('rhs');
+        if (j === row.length - 1 && !mark.noRhs) td.classList.add('rhs');
         if (i === mark.pivot && j === mark.pivot) td.classList.add('pivot');
         tr.append(td);
       });
@@ -118,6 +118,18 @@
       if (after && data.start) readout(view, 'growth factor so far', 'growth', num(largest / scale));
       if (after) view.append(matrixTable(after, mark));
       else view.append(el('p', {}, 'The matrix is too large to show (more than 12 rows).'));
+    },
+
+    // The 2x2 closed form: det A judged by kappa_2, then A^-1 = adj(A) / det A, then x = A^-1 b.
+    'closed-form'(data, k, view) {
+      const record = data.trace[k];
+      const start = data.trace[0];
+      readout(view, 'event', 'event', record.event);
+      readout(view, 'det A', 'det', num(start.determinant));
+      readout(view, 'kappa_2(A)', 'kappa', num(start.condition_number));
+      if (record.event === 'determinant') view.append(matrixTable(record.augmented, { rows: [], pivot: -1 }));
+      if (record.event === 'inverse') view.append(matrixTable(record.inverse, { rows: [0, 1], pivot: -1, noRhs: true }));
+      if (record.event === 'solution') readout(view, 'x', 'x', record.x.map(num).join('  '));
     },
 
     // Gauss-Seidel: one record per sweep, the residual history drawn as it grows.

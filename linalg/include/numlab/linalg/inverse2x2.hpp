@@ -123,6 +123,8 @@ class ClosedForm2x2 {
   bool stopped() const { return false; }
   int iterations() const { return iterations_; }  // 0 until the step, then 1
   const Eigen::Vector2d& x() const { return x_; }
+  const Eigen::Matrix2d& matrix() const { return A_; }  // A, as start() loaded it
+  const Eigen::Vector2d& rhs() const { return b_; }     // b
 
   // For a caller that has already checked A and b are finite (Newton's inner solve): the same
   // closed form and singular test, without the input screens, kappa or the residual (not
