@@ -112,7 +112,9 @@
       add("text", { x: left - 4, y: y(e) + 4, "class": "plot-tick" }, "1e" + e);
     }
     add("line", { x1: x(data.parting), x2: x(data.parting), y1: top, y2: height - bottom, "class": "plot-parting" });
-    add("text", { x: x(data.parting) + 3, y: height - bottom - 4, "class": "plot-tick plot-left" }, "they part");
+    var late = x(data.parting) > width * 0.6;  // the label on the side of the line with room for it
+    add("text", { x: x(data.parting) + (late ? -3 : 3), y: height - bottom - 4, "class": "plot-tick" + (late ? " plot-right" : " plot-left") },
+      "they part");
     [["yours", both[0]], ["numlab", both[1]]].forEach(function (pair) {
       var points = [];
       for (var i = 0; i <= k && i < pair[1].length; i++) if (pair[1][i] !== null) points.push(x(i) + "," + y(Math.log10(pair[1][i])));
