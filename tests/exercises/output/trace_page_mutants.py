@@ -12,10 +12,13 @@ the diagonal; for Gauss-Seidel by a Jacobi sweep and a Gauss-Seidel sweep (numpy
 x0; for Newton by the Python reference solution run on the same request (its trace against the
 mutant's). report.html links the page. Then the reference solution is checked into the same folder:
 no trace check fails, so trace.html is removed and neither results.json nor report.html mention it.
+Last, `exercise grade` of a class of two (the no-pivoting mutant, the reference) writes trace.html
+for the first only, embedding her results.json's trace.
 """
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -162,6 +165,29 @@ def main(numlab, out_dir):
         if code != 0 or os.path.exists(page_path) or any("trace" in t for t in results["tests"]) or \
                 "trace.html" in open(os.path.join(out, "report.html"), encoding="utf-8").read():
             fail(f"{mutant}: after the reference passed (exit {code}), trace.html or a mention of it is left")
+    # `exercise grade` writes the page per student too: the no-pivoting mutant gets one, the reference none.
+    submissions = os.path.join(out_dir, "class")
+    for student, source in (("ada", os.path.join(out_dir, "gepp", "no_pivoting.py")),
+                            ("bob", os.path.join(REFERENCES, "gepp.py"))):
+        os.makedirs(os.path.join(submissions, student), exist_ok=True)
+        with open(source, encoding="utf-8") as f, open(os.path.join(submissions, student, "solution.py"), "w") as g:
+            g.write(f.read())
+    graded = os.path.join(out_dir, "graded")
+    shutil.rmtree(graded, ignore_errors=True)
+    run = subprocess.run([numlab, "exercise", "grade", "gepp", "--submissions", submissions, "--out", graded, "--jobs", "1"],
+                         capture_output=True, text=True, timeout=600, env=dict(os.environ, PATH=os.path.dirname(sys.executable)
+                                                                                + os.pathsep + os.environ.get("PATH", "")))
+    ada = os.path.join(graded, "ada")
+    if run.returncode != 1 or not os.path.isfile(os.path.join(ada, "trace.html")) or \
+            os.path.exists(os.path.join(graded, "bob", "trace.html")):
+        fail(f"grade: exit {run.returncode}; ada's trace.html {os.path.isfile(os.path.join(ada, 'trace.html'))}, "
+             f"bob's {os.path.exists(os.path.join(graded, 'bob', 'trace.html'))} (expected only ada's)\n{run.stderr}")
+    else:
+        results = json.load(open(os.path.join(ada, "results.json"), encoding="utf-8"))
+        test = next(t for t in results["tests"] if "trace" in t)
+        data = embedded(open(os.path.join(ada, "trace.html"), encoding="utf-8").read())
+        if data is None or data.pop("check", None) != test["name"] or data != test["trace"]:
+            fail("grade: ada's trace.html does not embed her results.json's trace")
     if problems:
         sys.exit(f"{len(problems)} problems")
     print("trace pages: 3 mutants, each parting where numpy or the Python reference says")
