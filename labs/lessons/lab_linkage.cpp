@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "bench/timing.hpp"
 #include "output/exit_codes.hpp"
@@ -19,10 +20,12 @@
 #include "lessons/lab.hpp"
 #include "lessons/linkage_cycle.hpp"
 #include "lessons/linkage_sentences.hpp"
+#include "numlab/mechanisms/closed_forms/whitworth.hpp"
 #include "numlab/mechanisms/crank_angle.hpp"
 #include "numlab/mechanisms/jansen10_closure.hpp"
 #include "numlab/mechanisms/jansen_solvers.hpp"
 #include "numlab/linalg/matrix_file.hpp"
+#include "numlab/mechanisms/linkage/crank_analysis.hpp"
 #include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_statics.hpp"
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
@@ -417,6 +420,65 @@ bool show_driving_torque(LabSession& session) {
   return solved && !rows.empty();
 }
 
+// Step 9: whitworth.toml's ram toggles and time ratio by --analyse's root finding, beside the closed
+// form of closed_forms/whitworth.hpp (the ram's line through O4: A crossing O4's level).
+bool show_quick_return(LabSession& session) {
+  const LinkageModel model(read_linkage_description(models_dir() + "/whitworth.toml"));
+  const LinkageSolver solver(model, LinkageSolverOptions{});
+  const CrankAnalysis found = analyse_crank_mechanism(solver);  // the file's output: the ram C
+  if (!found.crank_turns_fully || found.output_toggles.size() != 2) {
+    session.say("whitworth.toml: the analysis found no two toggles of a full turn: " + found.classification + ".");
+    return false;
+  }
+  // 1. The closed form from the file's own numbers.
+  const auto& d = model.description();
+  if (d.joint_index("O2") < 0 || d.joint_index("O4") < 0) {
+    session.say("whitworth.toml has no pivots O2 and O4: no closed form to compare with.");
+    return false;
+  }
+  const auto at = [&](const char* name) { return d.joints[static_cast<std::size_t>(d.joint_index(name))].position; };
+  closed_forms::Whitworth whitworth;
+  whitworth.O2 = at("O2"), whitworth.O4 = at("O4"), whitworth.crank = found.crank, whitworth.ram_height = at("O4").y();
+  const closed_forms::QuickReturn exact = closed_forms::whitworth_quick_return(whitworth);
+  // 2. Each toggle found beside the closed form's nearer one.
+  Table toggles({"toggle", "crank by Brent (deg)", "closed form (deg)", "difference (deg)", found.output + "'s travel"});
+  QuickReturnSummary summary{found.output, found.slow_stroke_deg, found.quick_stroke_deg, found.time_ratio, exact.time_ratio,
+                             0.0, 0.0, 0.0, "sin theta = (y_O4 - y_O2) / r"};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Toggle& t = found.output_toggles[k];
+    const auto gap = [&](double rad) { return std::abs(std::remainder(t.crank_deg - rad / degrees, 360.0)); };
+    const double closed = std::remainder(gap(exact.toggle_1) < gap(exact.toggle_2) ? exact.toggle_1 : exact.toggle_2, 2.0 * std::numbers::pi) / degrees;
+    const double difference = std::min(gap(exact.toggle_1), gap(exact.toggle_2));
+    summary.toggle_difference = std::max(summary.toggle_difference, difference);
+    toggles.add_row({std::to_string(k + 1), fmt::format("{:.9f}", t.crank_deg), fmt::format("{:.9f}", closed < 0.0 ? closed + 360.0 : closed),
+                     scientific(difference), fmt::format("{:.6g}", t.output_value)});
+  }
+  session.show(toggles, "quick-return-toggles");
+  // 3. The strokes and the time ratio.
+  const std::size_t start = static_cast<std::size_t>(found.slow_stroke_start);
+  summary.slow_from = found.output_toggles[start].output_value, summary.slow_to = found.output_toggles[1 - start].output_value;
+  const double turn = std::abs(std::remainder(exact.toggle_2 - exact.toggle_1, 2.0 * std::numbers::pi)) / degrees;  // the shorter way
+  Table strokes({"quantity", "by Brent", "closed form", "difference"});
+  for (const auto& [name, value, closed] : {std::tuple{"slow stroke (deg of crank)", found.slow_stroke_deg, 360.0 - turn},
+                                            std::tuple{"quick stroke (deg of crank)", found.quick_stroke_deg, turn},
+                                            std::tuple{"time ratio", found.time_ratio, exact.time_ratio}}) {
+    strokes.add_row({name, fmt::format("{:.9f}", value), fmt::format("{:.9f}", closed), scientific(std::abs(value - closed))});
+  }
+  session.show(strokes, "quick-return-strokes");
+  session.say(quick_return_sentence(summary));
+  // 4. The mechanism at the slow stroke's start, the ram's path over a turn.
+  const double from = found.output_toggles[start].crank_deg;
+  const LinkageSweep sweep = linkage_sweep(solver, from, from + 359.0, 1.0);
+  if (sweep.status == Status::converged) {
+    const std::string path = lab_file(session, "whitworth-toml.svg", linkage_pose_svg(model, sweep, 0, true));
+    session.figure(path, fmt::format("whitworth.toml at crank {:.4f} deg, where the slow stroke starts: {} at {:.6g}, joint "
+                                     "paths over the turn dashed",
+                                     from, found.output, summary.slow_from));
+  }
+  return summary.toggle_difference < 1e-6 && std::abs(found.time_ratio - exact.time_ratio) < 1e-8 &&
+         sweep.status == Status::converged;
+}
+
 int run_linkage_lab(LabSession& session) {
   const std::string file = "jansen.toml";
   const LinkageModel model(read_linkage_description(models_dir() + "/" + file));
@@ -493,10 +555,22 @@ int run_linkage_lab(LabSession& session) {
                           "differenced from positions solved at theta +- 1e-4 rad.")) return {};
   const bool torque_agrees = show_driving_torque(session);
 
+  if (!session.begin_step("A quick-return: the ram's toggles and time ratio by root finding",
+                          "whitworth.toml, a shaper's Whitworth drive: the crank O2-A is longer than the distance from "
+                          "O2 to the slotted link's pivot O4, so the slotted link turns fully, slowly while A is on the "
+                          "longer arc of the crank circle, beyond O4's level, and fast on the shorter, and a rod drives the "
+                          "ram C. The ram stands still where its "
+                          "velocity ratio dx_C/dtheta changes sign: numlab mechanism whitworth --analyse sweeps the crank "
+                          "a turn in 1-degree steps, brackets each sign change and refines it by Brent's method (GSL) on "
+                          "the ratio at poses solved to rounding, to 1e-10 rad. The closed form: with the ram's line "
+                          "through O4, C stands still exactly when the slot lies along that line, when A crosses O4's "
+                          "level.")) return {};
+  const bool quick_return_found = show_quick_return(session);
+
   const bool cycles_converged = std::all_of(cycle_rows.begin(), cycle_rows.end(),
                                             [](const CycleRow& r) { return r.status == Status::converged; });
   return cycles_converged && sweep.status == Status::converged && derivatives_solved && limit_found && crossing_followed &&
-                 torque_agrees
+                 torque_agrees && quick_return_found
              ? exit_success
              : exit_method_failed;
 }

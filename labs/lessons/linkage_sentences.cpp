@@ -176,4 +176,17 @@ std::string driving_torque_sentence(const std::vector<DrivingTorqueRow>& rows) {
                      rows.size(), work, potential, low, high, at);
 }
 
+std::string quick_return_sentence(const QuickReturnSummary& q) {
+  // 1. The two strokes in crank degrees, and their ratio.
+  std::string text = fmt::format("With the crank turning steadily the way its angle grows, {0}'s forward (slow) stroke, from "
+                                 "{1:.6g} to {2:.6g}, takes {3:.4f} deg of crank and the return {4:.4f} deg: "
+                                 "ratio {3:.4f} / {4:.4f} = {5:.4f}, so {0} comes back {5:.4f} times faster than it goes. ",
+                                 q.output, q.slow_from, q.slow_to, q.slow_deg, q.quick_deg, q.time_ratio);
+  // 2. The root finding against the closed form.
+  text += fmt::format("Brent's toggles on the velocity ratio are the closed form's ({}) to {:.2g} deg, and the time "
+                      "ratio is its {:.4f} to {:.2g}.",
+                      q.closed_form, q.toggle_difference, q.closed_form_ratio, std::abs(q.time_ratio - q.closed_form_ratio));
+  return text;
+}
+
 }  // namespace numlab::cli

@@ -97,4 +97,19 @@ struct DrivingTorqueRow {
 // How far the three agree (relative to the loads' terms), and the torque's range over the rows.
 std::string driving_torque_sentence(const std::vector<DrivingTorqueRow>& rows);
 
+// Step 9: a quick-return's output toggles and time ratio by root finding, beside the closed form.
+struct QuickReturnSummary {
+  std::string output;            // the output's name ("C": the ram)
+  double slow_deg = 0.0;         // crank degrees of the slow stroke, between the toggles found by Brent
+  double quick_deg = 0.0;        // of the quick stroke (360 - slow)
+  double time_ratio = 0.0;       // slow / quick
+  double closed_form_ratio = 0.0;
+  double toggle_difference = 0.0;  // deg: the largest |Brent - closed form| over the two toggles
+  double slow_from = 0.0, slow_to = 0.0;  // the output's travel where the slow stroke starts and ends
+  std::string closed_form;       // the closed form in words: "sin theta = (y_O4 - y_O2) / r"
+};
+// The strokes in crank degrees, the ratio and what it means (the return that much faster at a
+// steady crank speed), and how far the root finding is from the closed form.
+std::string quick_return_sentence(const QuickReturnSummary& q);
+
 }  // namespace numlab::cli

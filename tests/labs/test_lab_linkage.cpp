@@ -243,6 +243,42 @@ TEST_CASE("Linkage lab: every sentence is made from the tables the same run save
     check_rounded(number_after(text, "central difference of the loads' potential to "), potential, 2);
     CHECK_THAT(text, Contains(fmt::format("runs from {:.4g} to {:.4g} N x length unit", low, high)));
   }
+
+  {  // step 9: the quick-return's toggles and strokes against the closed form; the sentence from the tables
+    const auto toggles = lab.table("step9-quick-return-toggles.csv");
+    const auto strokes = lab.table("step9-quick-return-strokes.csv");
+    REQUIRE(toggles.size() == 3);
+    REQUIRE(strokes.size() == 4);
+    const std::size_t brent = column(toggles, "crank by Brent (deg)"), travel = column(toggles, "C's travel");
+    // whitworth.toml: r = 100, O2 45 above O4, the ram's line through O4: toggles where A crosses y = 0,
+    // theta = -beta and 180 + beta, beta = asin(0.45); strokes 180 -+ 2 beta; C at 450 -+ 160.
+    const double beta = std::asin(0.45) * 180.0 / std::acos(-1.0);
+    double worst = 0.0;
+    for (std::size_t r = 1; r < 3; ++r) {
+      const double found = number(toggles[r][brent]);
+      CHECK(std::min(std::abs(std::remainder(found + beta, 360.0)), std::abs(std::remainder(found - 180.0 - beta, 360.0))) < 1e-8);
+      CHECK(std::abs(number(toggles[r][column(toggles, "closed form (deg)")]) - found) < 1e-8);
+      worst = std::max(worst, number(toggles[r][column(toggles, "difference (deg)")]));
+      CHECK(std::min(std::abs(number(toggles[r][travel]) - 290.0), std::abs(number(toggles[r][travel]) - 610.0)) < 1e-3);
+    }
+    const auto& slow = row_named(strokes, "slow stroke (deg of crank)");
+    const auto& quick = row_named(strokes, "quick stroke (deg of crank)");
+    const auto& ratio = row_named(strokes, "time ratio");
+    const std::size_t by = column(strokes, "by Brent"), closed = column(strokes, "closed form");
+    CHECK(std::abs(number(slow[closed]) - (180.0 + 2.0 * beta)) < 1e-8);
+    CHECK(std::abs(number(quick[closed]) - (180.0 - 2.0 * beta)) < 1e-8);
+    CHECK(std::abs(number(ratio[closed]) - (180.0 + 2.0 * beta) / (180.0 - 2.0 * beta)) < 1e-8);
+    CHECK(std::abs(number(ratio[by]) - number(slow[by]) / number(quick[by])) < 1e-8);
+    // The slow stroke starts at the toggle from which the crank, growing, turns more than 180 deg to the other.
+    const double t1 = number(toggles[1][brent]), t2 = number(toggles[2][brent]);
+    const bool from_first = std::fmod(t2 - t1 + 360.0, 360.0) >= 180.0;
+    CHECK_THAT(text, Contains(fmt::format("C's forward (slow) stroke, from {} to {}", toggles[from_first ? 1 : 2][travel],
+                                          toggles[from_first ? 2 : 1][travel])));
+    CHECK_THAT(text, Contains(fmt::format("takes {:.4f} deg of crank and the return {:.4f} deg", number(slow[by]), number(quick[by]))));
+    CHECK_THAT(text, Contains(fmt::format("= {0:.4f}, so C comes back {0:.4f} times faster", number(ratio[by]))));
+    check_rounded(number_after(text, "the closed form's (sin theta = (y_O4 - y_O2) / r) to "), worst, 2);
+    CHECK_THAT(text, Contains(fmt::format("and the time ratio is its {:.4f} to", number(ratio[closed]))));
+  }
 }
 
 TEST_CASE("Linkage sentences: a Newton block, a slower sequential solve, a limit that is no fold", "[labs][sentences]") {
@@ -265,6 +301,12 @@ TEST_CASE("Linkage sentences: a Newton block, a slower sequential solve, a limit
              Contains("kappa(J) grows like d^-1.00") && Contains("not the square-root law"));
   approach.rows = {{1.0, 10.0, 100.0, 1.0}, {0.1, 10.0 / std::sqrt(10.0), 100.0 * std::sqrt(10.0), std::sqrt(10.0)}};
   CHECK_THAT(limit_approach_sentence(approach, 1.0, 0.1), Contains("d^-0.50") && Contains("within 0.1 of the square-root law"));
+  // A quick-return twice as slow out as back: the ratio and its meaning from the strokes.
+  const QuickReturnSummary quick{"ram", 240.0, 120.0, 2.0, 2.0 + 3e-12, 4e-13, 100.0, 400.0, "the closed form"};
+  CHECK_THAT(quick_return_sentence(quick), Contains("ram's forward (slow) stroke, from 100 to 400") &&
+                                               Contains("takes 240.0000 deg of crank and the return 120.0000 deg") &&
+                                               Contains("ratio 240.0000 / 120.0000 = 2.0000, so ram comes back 2.0000 times faster") &&
+                                               Contains("(the closed form) to 4e-13 deg") && Contains("its 2.0000 to 3e-12."));
   // No row at the distances asked for: no exponents claimed.
   CHECK_THAT(limit_approach_sentence(approach, 2.0, 0.2), !Contains("grows like"));
 }
