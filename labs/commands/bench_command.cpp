@@ -11,6 +11,7 @@
 #include "bench/bench_linear.hpp"
 #include "bench/bench_linkage_scaling.hpp"
 #include "bench/bench_mustang.hpp"
+#include "bench/bench_quick_return.hpp"
 #include "bench/bench_robustness.hpp"
 
 namespace numlab::cli {
@@ -18,9 +19,10 @@ namespace numlab::cli {
 BenchCommand::BenchCommand(CLI::App& app) {
   command_ = app.add_subcommand("bench", "Measure speed: median of repeated in-process runs, as ratios");
   command_->add_option("what", what_,
-                       "What to measure: all (default), linear, jansen, mustang, fit, basins, robustness, linkage-scaling or grade "
-                       "(numlab exercise grade on 300 Python GEPP submissions)")
-      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang", "fit", "basins", "robustness", "linkage-scaling", "grade"}));
+                       "What to measure: all (default), linear, jansen, mustang, quick-return, fit, basins, robustness, "
+                       "linkage-scaling or grade (numlab exercise grade on 300 Python GEPP submissions)")
+      ->check(CLI::IsMember({"all", "linear", "jansen", "mustang", "quick-return", "fit", "basins", "robustness",
+                             "linkage-scaling", "grade"}));
   command_->add_option("--chart", chart_,
                        "Main chart (.svg or .png); default OUT/work-precision.svg (all) or OUT/bench-linear.svg");
   command_->add_option("--sizes", sizes_, "Sizes n, comma-separated")->delimiter(',')->check(CLI::Range(1, 4096));
@@ -44,6 +46,7 @@ int BenchCommand::run() const {
   if (what_ == "all") return run_bench_all(bench_options, chart, quick_);
   if (what_ == "jansen") return run_jansen_bench(bench_options, quick_);
   if (what_ == "mustang") return run_mustang_bench(bench_options, quick_);
+  if (what_ == "quick-return") return run_quick_return_bench(bench_options, quick_);
   if (what_ == "fit") return run_bench_fit(bench_options, chart, quick_);
   if (what_ == "basins") return run_basins_bench(bench_options, quick_);
   if (what_ == "robustness") return run_bench_robustness(bench_options, quick_);

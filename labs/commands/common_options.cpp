@@ -116,6 +116,7 @@ const std::vector<CommonFlagUse>& common_flag_table() {
       {"bench linear", true, true, false, false, false, false, true},
       {"bench jansen", true, false, false, false, true, false, false},
       {"bench mustang", true, false, false, false, true, false, false},
+      {"bench quick-return", true, false, false, false, true, false, false},
       {"bench fit", true, false, false, false, false, false, true},
       {"bench robustness", true, false, false, false, false, false, true},
       {"bench linkage-scaling", true, true, false, false, false, false, false},
