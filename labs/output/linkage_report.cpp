@@ -34,6 +34,12 @@ std::string driver_column(const LinkageModel& model) {
   return "travel";
 }
 
+// The driver in words: "crank" or "motor" (per radian of it), "travel" or "length" (per unit of it).
+std::string driver_word(const LinkageModel& model) {
+  constexpr const char* words[] = {"crank", "travel", "length", "motor"};
+  return words[static_cast<int>(model.driver_kind())];
+}
+
 bool converged(const LinkagePose& pose) { return pose.outcome.status == Status::converged; }
 
 bool kept(const LinkageSolver&, const LinkagePose& pose) { return pose.branch_kept; }
@@ -184,7 +190,7 @@ std::string output_summary(const LinkageReport& r) {
   }
   if (!std::isfinite(low)) return r.output->name + ": no assembled pose";
   return fmt::format("{}: velocity ratio {:.4g} .. {:.4g} per {}; mechanical advantage at least {:.4g} in size{}",
-                     r.output->name, low, high, r.model.crank_driven() ? "radian of crank" : "unit of travel", least,
+                     r.output->name, low, high, (r.model.crank_driven() ? "radian of " : "unit of ") + driver_word(r.model), least,
                      infinite > 0 ? fmt::format(" (infinite at {} pose{}: a toggle)", infinite, infinite == 1 ? "" : "s") : "");
 }
 
@@ -276,7 +282,7 @@ void print_explanation(std::ostream& out, const LinkageModel& model, Format form
                      model.description().title.empty() ? "" : ": " + model.description().title)
       << fmt::format("mobility           {} (Gruebler-Kutzbach {})\n", mobility.mobility, mobility.formula())
       << fmt::format("formulation        joint coordinates, the x and y of every moving joint; one equation per link,\n"
-                     "                   for each body one plus two per further joint, one per slider, two for the driver\n")
+                     "                   for each body one plus two per further joint, one per slider, two for a crank driver (one for any other)\n")
       << fmt::format("{:<19}{}\n", fmt::format("unknowns ({})", unknowns.size()), fmt::join(unknowns, " "))
       << fmt::format("equations ({})\n", equations.size());
   for (std::size_t r = 0; r < equations.size(); ++r) {
@@ -478,7 +484,7 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
       << fmt::format("status             {}\n", to_string(r.status))
       << fmt::format("poses              {}\n", r.sweep.poses.size());
   constexpr std::size_t shown = 8;
-  Table table({r.model.crank_driven() ? "crank (deg)" : "travel", "x_" + t, "y_" + t, "|v_" + t + "|", "kappa(J)",
+  Table table({driver_word(r.model) + (r.model.crank_driven() ? " (deg)" : ""), "x_" + t, "y_" + t, "|v_" + t + "|", "kappa(J)",
                "iterations", "||Phi||_inf", "status"});
   for (std::size_t i = 0; i < r.sweep.poses.size(); ++i) {
     if (r.sweep.poses.size() > shown && i == shown / 2) {
@@ -526,8 +532,8 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
                        r.jacobian->worst.agrees ? "agrees" : "DISAGREES " + nonlinear::describe_worst_entry(r.jacobian->worst));
   }
   out << fmt::format("time               {:.3g} s\n", r.time_s)
-      << (r.model.crank_driven() ? "velocities per radian of crank, accelerations per radian squared\n"
-                                 : "velocities per unit of slider travel\n");
+      << (r.model.crank_driven() ? "velocities per radian of " + driver_word(r.model) + ", accelerations per radian squared\n"
+                                 : "velocities per unit of " + std::string(r.model.driver_kind() == DriverKind::slider ? "slider travel" : "actuator length") + "\n");
 }
 
 }  // namespace numlab::cli

@@ -65,6 +65,23 @@ std::string scaled_four_bar(double scale) {
 }
 
 std::vector<std::pair<std::string, std::string>> linkage_inputs() {
+  // Issue 30 §1: an inverted slider-crank whose rocker B-C carries the block A in its slot (the
+  // slider's table is added below), and the same with a joint D that no link holds.
+  const auto inverted_slider_crank = [](const std::string& more_joints) {
+    return "[linkage]\nname = \"isc\"\n[ground]\nO = [0.0, 0.0]\nB = [3.0, 0.0]\n[joints]\nA = [0.5, 0.87]\nC = [-1.73, 1.64]\n" +
+           more_joints + "[[link]]\njoints = [\"O\", \"A\"]\nlength = 1.0\n[[link]]\nname = \"rocker\"\njoints = [\"B\", \"C\"]\nlength = 5.0\n";
+  };
+  const std::string isc = inverted_slider_crank(""), isc_with_d = inverted_slider_crank("D = [1.0, 1.0]\n");
+  const std::string isc_crank = "[driver]\ntype = \"crank\"\npivot = \"O\"\njoint = \"A\"\nangle = 60.0\n";
+  // A boom: the bar O-P-T (three points on one line) turned about O by an actuator from G (the driver, below).
+  const std::string boom = "[linkage]\nname = \"boom\"\n[ground]\nO = [0.0, 0.0]\nG = [1.0, 0.0]\n[joints]\nP = [0.88, 1.8]\n"
+                           "T = [1.32, 2.69]\n[[body]]\nname = \"boom\"\njoints = [\"O\", \"P\", \"T\"]\n"
+                           "local = [[0.0, 0.0], [2.0, 0.0], [3.0, 0.0]]\n";
+  // four_bar()'s crank, to be replaced by a motor at A between the crank and the coupler.
+  const std::string four_bar_crank = "type = \"crank\"\npivot = \"O\"\njoint = \"A\"\nangle = 30.0";
+  const std::string body = "\n[[body]]\nname = \"plate\"\njoints = [\"A\", \"B\", \"C\"]\n";
+  const std::string triangle_links =
+      "\n[[link]]\njoints = [\"A\", \"C\"]\nlength = 1.2\n\n[[link]]\njoints = [\"B\", \"C\"]\nlength = 3.7\n";
   const std::string body = "\n[[body]]\nname = \"plate\"\njoints = [\"A\", \"B\", \"C\"]\n";
   const std::string triangle_links =
       "\n[[link]]\njoints = [\"A\", \"C\"]\nlength = 1.2\n\n[[link]]\njoints = [\"B\", \"C\"]\nlength = 3.7\n";
@@ -145,6 +162,17 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
       {"lk-gravity-negative.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ngravity = -9.8"}}) +
                                        "\n[[load]]\njoint = \"B\"\nmass = 1.0\n"},
       {"lk-gravity-string.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ngravity = \"down\""}})},
+      // Issue 30 §1: a slider in a moving link's slot, an actuator, a motor, a bar of collinear points.
+      {"lk-slot.toml", isc + "[[slider]]\njoint = \"A\"\nline = [\"B\", \"C\"]\n" + isc_crank},
+      {"lk-slot-and-through.toml", isc_with_d + "[[slider]]\njoint = \"A\"\nline = [\"B\", \"C\"]\nthrough = [0.0, 0.0]\n" + isc_crank},
+      {"lk-slot-not-on-link.toml", isc_with_d + "[[slider]]\njoint = \"A\"\nline = [\"B\", \"D\"]\n" + isc_crank},
+      {"lk-slot-own-joint.toml", isc_with_d + "[[slider]]\njoint = \"C\"\nline = [\"B\", \"C\"]\n" + isc_crank},
+      {"lk-boom.toml", boom + "[driver]\ntype = \"actuator\"\njoints = [\"G\", \"P\"]\nlength = 1.8\n[[load]]\njoint = \"T\"\nmass = 10.0\n"},
+      {"lk-actuator-linked.toml", boom + "[driver]\ntype = \"actuator\"\njoints = [\"O\", \"P\"]\nlength = 1.8\n"},
+      {"lk-actuator-zero.toml", boom + "[driver]\ntype = \"actuator\"\njoints = [\"G\", \"P\"]\nlength = 0.0\n"},
+      {"lk-motor.toml", four_bar({{four_bar_crank, "type = \"motor\"\npivot = \"A\"\nfrom = \"O\"\njoint = \"B\"\nangle = -166.4"}})},
+      {"lk-motor-wrong-angle.toml", four_bar({{four_bar_crank, "type = \"motor\"\npivot = \"A\"\nfrom = \"O\"\njoint = \"B\"\nangle = 13.6"}})},
+      {"lk-motor-same-link.toml", four_bar({{four_bar_crank, "type = \"motor\"\npivot = \"A\"\nfrom = \"B\"\njoint = \"B\"\nangle = 10.0"}})},
       {"lk-deep-key.toml", deeply_nested("a", " = 1\n")},
       {"lk-deep-header.toml", deeply_nested("[a", "]\n")},
       // Titles with a C1 control (U+009B, a CSI), a direction override (U+202E), an isolate (U+2066).

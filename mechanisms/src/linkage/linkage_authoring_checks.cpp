@@ -79,6 +79,28 @@ void check_crank_angle(const LinkageDescription& d) {
                                : hint));
 }
 
+// A motor's angle against its joints' rough positions: the angle from pivot -> from to pivot -> joint.
+// Its row also vanishes half a turn away, so a wrong angle would pick the other root: an error.
+void check_motor_angle(const LinkageDescription& d) {
+  const DriverSpec& driver = d.driver;
+  const Eigen::Vector2d u = joint(d, driver.from).position - joint(d, driver.pivot).position;
+  const Eigen::Vector2d v = joint(d, driver.joint).position - joint(d, driver.pivot).position;
+  const double shift = joint_shift_fraction * std::min(joint_scale(d, driver.from), joint_scale(d, driver.joint));
+  if (u.norm() <= shift || v.norm() <= shift) return;  // no direction to compare with
+  const double rough = to_degrees(std::atan2(cross(u, v), u.dot(v)));
+  const double off = std::remainder(driver.reference - rough, 360.0);
+  if (std::abs(off) <= driver_angle_tolerance_deg) return;
+  const std::string hint = radians_hint(driver.reference, rough, 360.0);
+  throw LinkageFileError(
+      d.file, driver.reference_place,
+      fmt::format("the motor's angle = {:g} disagrees with the rough positions, which put {} -> {} at {:.1f}° from {} -> {}{}",
+                  driver.reference, joint(d, driver.pivot).name, joint(d, driver.joint).name, rough, joint(d, driver.pivot).name,
+                  joint(d, driver.from).name,
+                  hint.empty() ? fmt::format(" ({:.1f}° apart, more than {:g}°): fix the angle or the rough positions", std::abs(off),
+                                             driver_angle_tolerance_deg)
+                               : hint));
+}
+
 // A slider's line against its joint's rough position: the direction from `through` to the joint,
 // when the joint is off the line by more than a tenth of its shortest link.
 void check_slider_angle(const LinkageDescription& d, const SliderSpec& slider) {
@@ -199,6 +221,7 @@ double mechanism_size(const LinkageDescription& d) {
 
 void check_driver_angles(const LinkageDescription& description) {
   if (description.driver.kind == DriverKind::crank) authoring::check_crank_angle(description);
+  if (description.driver.kind == DriverKind::motor) authoring::check_motor_angle(description);
   for (const SliderSpec& slider : description.sliders) {
     if (!slider.on_link()) authoring::check_slider_angle(description, slider);  // a slot's line moves: no angle to check
   }
