@@ -133,6 +133,12 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
       {"lk-link-name-twice.toml", four_bar({{"[[link]]\njoints = [\"A\", \"B\"]", "[[link]]\nname = \"O-A\"\njoints = [\"A\", \"B\"]"}})},
       {"lk-output.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\noutput = \"rocker\""},
                                    {"[[link]]\njoints = [\"Q\", \"B\"]", "[[link]]\nname = \"rocker\"\njoints = [\"Q\", \"B\"]"}})},
+      // Issue 30 §4: the paths the drawing highlights ([linkage] trace), good and bad.
+      {"lk-trace.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ntrace = [\"B\"]"}})},
+      {"lk-trace-unknown.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ntrace = [\"X\"]"}})},
+      {"lk-trace-ground.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ntrace = [\"O\"]"}})},
+      {"lk-trace-not-list.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ntrace = \"B\""}})},
+      {"lk-trace-twice.toml", four_bar({{"name = \"four-bar\"", "name = \"four-bar\"\ntrace = [\"B\", \"B\"]"}})},
       {"lk-slider-driven.toml", "[linkage]\nname = \"s\"\n[ground]\nO = [0.0, 0.0]\n[joints]\nA = [0.9, 0.5]\nS = [2.9, 0.25]\n"
                                 "[[link]]\njoints = [\"O\", \"A\"]\nlength = 1.0\n[[link]]\njoints = [\"A\", \"S\"]\nlength = 2.0\n"
                                 "[[slider]]\njoint = \"S\"\nthrough = [0.0, 0.25]\n[driver]\ntype = \"slider\"\njoint = \"S\"\ntravel = 2.9\n"},
