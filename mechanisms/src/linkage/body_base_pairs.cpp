@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstddef>
+#include <cstdint>
 #include <numeric>
 #include <stdexcept>
 
@@ -47,7 +49,7 @@ std::vector<int> fixed_by_rows(const LinkageModel& model, const std::vector<int>
   // 2b. A body with one known joint gives its other joints a distance; with two, it places them.
   for (const BodySpec& body : d.bodies) {
     const auto held = std::count_if(body.joints.begin(), body.joints.end(), [&](int j) { return known(round, j); });
-    for (int joint : body.joints) rows[static_cast<std::size_t>(joint)] += static_cast<int>(std::min<long>(held, 2));
+    for (int joint : body.joints) rows[static_cast<std::size_t>(joint)] += static_cast<int>(std::min<std::ptrdiff_t>(held, 2));
   }
   std::vector<int> fixed;
   for (std::size_t j = 0; j < d.joints.size(); ++j) {
