@@ -58,21 +58,26 @@
     if (!here || !here.candidates) return null;
     var numlabRow = data.numlab[k] ? data.numlab[k].pivot_row : null;
     var yourRow = k <= data.parting && data.yours[k] ? data.yours[k].pivot_row : null;
+    // numlab's multiplier for each other row: l_i = a_ik / pivot (the row keeps it wherever the swap puts it)
+    var pivot = data.numlab[k] ? data.numlab[k].pivot : null;
     var body = make("tbody");
     here.candidates.forEach(function (a, j) {
       var i = here.first_row + j, marks = [];
       if (i === numlabRow) marks.push("numlab's pivot");
       if (i === yourRow) marks.push("your pivot");
       var cls = i === numlabRow ? "chosen-numlab" : i === yourRow ? "chosen-yours" : "";
+      var multiplier = i === numlabRow || pivot === null ? "\u2014" : String(a / pivot);
       body.appendChild(make("tr", { id: "candidate-" + i },
         make("th", { scope: "row", text: "row " + i }), make("td", { "class": cls, text: String(a) }),
-        make("td", { "class": cls, text: String(Math.abs(a)) }), make("td", { text: marks.join(", ") })));
+        make("td", { "class": cls, text: String(Math.abs(a)) }), make("td", { "class": "multiplier", text: multiplier }),
+        make("td", { text: marks.join(", ") })));
     });
     var caption = "numlab's column " + (k + data.first_number) + " before the swap: a_ik for i = " + here.first_row +
       " and below" + (k > data.parting ? " (numlab's matrix: yours differs after step " + (data.parting + 1) + ")" : "");
     return make("table", { id: "candidates" }, make("caption", { text: caption }),
       make("thead", {}, make("tr", {}, make("th", { scope: "col", text: "row" }), make("th", { scope: "col", text: "a_ik" }),
-        make("th", { scope: "col", text: "|a_ik|" }), make("th", { scope: "col", text: "" }))), body);
+        make("th", { scope: "col", text: "|a_ik|" }), make("th", { scope: "col", text: "numlab's l = a_ik / pivot" }),
+        make("th", { scope: "col", text: "" }))), body);
   }
 
   // 3b. Newton's ||f|| or Gauss-Seidel's update per step, both traces on a log scale, drawn up to

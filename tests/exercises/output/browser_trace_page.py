@@ -145,6 +145,16 @@ def main(out_dir, numlab, mutant):
             your_row = trace["yours"][parting]["pivot_row"]
             assert "numlab's pivot" in page.text(f"#candidate-{numlab_row}")
             assert "your pivot" in page.text(f"#candidate-{your_row}")
+            # numlab's multipliers: each other row's a_ik over numlab's pivot, none for the pivot row
+            pivot = trace["numlab"][parting]["pivot"]
+            context = trace["context"][parting]
+            for j, a in enumerate(context["candidates"]):
+                row = context["first_row"] + j
+                shown = page.text(f"#candidate-{row} td.multiplier")
+                if row == numlab_row:
+                    assert shown == "\u2014", f"row {row}: a multiplier {shown} for numlab's pivot row"
+                else:
+                    assert abs(float(shown) - a / pivot) <= 1e-15 * abs(a / pivot), f"row {row}: l = {shown}, a/pivot = {a / pivot}"
         page.check_no_errors()
 
         # 3. Reduced motion: no smooth scrolling (without the preference, smooth); the parting step's
