@@ -44,7 +44,7 @@
     };
     add('text', { x: left, y: 12, class: 'stepper-plot-title' }, title);
     const every = Math.max(1, Math.ceil((high - low) / 6));
-    for (let e = low; e <= high; e += every) {
+    for (let e = high; e >= low; e -= every) {  // from the top, so the highest decade is labelled
       add('line', { x1: left, x2: width - 10, y1: y(e), y2: y(e), class: 'stepper-grid' });
       add('text', { x: left - 4, y: y(e) + 4, class: 'stepper-tick' }, `1e${e}`);
     }
