@@ -10,6 +10,7 @@
 #include "linkage_page/linkage_page_data.hpp"
 #include "methods/data_dir.hpp"
 #include "numlab/mechanisms/jansen_leg.hpp"
+#include "numlab/mechanisms/linkage/linkage_blocks.hpp"
 #include "numlab/mechanisms/linkage/linkage_description.hpp"
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
@@ -53,8 +54,36 @@ std::vector<BuiltinPose> builtin_poses(const LinkageModel& model, const Poses& p
   return out;
 }
 
+// Where a dyad of the file's model changes side between two poses the built-in solved: its two
+// solutions met in between (a crossing of branches, J singular there), which the built-in's own
+// sweep does not report. A mark at the middle of the two poses.
+void add_crossing_marks(nlohmann::ordered_json& data, const LinkageModel& model, const mechanisms::LinkageSolver& solver,
+                        const std::vector<BuiltinPose>& poses) {
+  std::vector<int> before;
+  double previous = 0.0;
+  for (const BuiltinPose& pose : poses) {
+    if (!pose.solved) {
+      before.clear();
+      continue;
+    }
+    const double t = model.driver_from_user(pose.crank_deg);
+    const std::vector<int> side = solver.signature(model.unknowns(pose.joints), t);
+    for (std::size_t b = 0; b < side.size() && b < before.size(); ++b) {
+      if (!solver.blocks()[b].dyad() || side[b] == before[b] || side[b] == 0 || before[b] == 0) continue;
+      data["marks"].push_back(
+          {{"driver", 0.5 * (previous + pose.crank_deg)},
+           {"kind", "crossing"},
+           {"text", fmt::format("branch crossing between {:g} and {:g} deg: block {} ({}) changes side, its two "
+                                "solutions meet in between (read from the file's model at the built-in's joints)",
+                                previous, pose.crank_deg, b + 1, mechanisms::describe_block(model, solver.blocks()[b]))}});
+    }
+    before = side;
+    previous = pose.crank_deg;
+  }
+}
+
 // The columns the built-in's CSV lacks, from the file's model at its joints: vx_J, vy_J (zero at
-// ground joints), mu_J per dyad block, and condition when the CSV has none.
+// ground joints), mu_J per dyad block, and condition when the CSV has none; and the crossings.
 void add_file_model_columns(nlohmann::ordered_json& data, const LinkageModel& model, const std::vector<BuiltinPose>& poses) {
   const mechanisms::LinkageSolver solver(model, {});
   const auto& joints = model.description().joints;
@@ -85,6 +114,7 @@ void add_file_model_columns(nlohmann::ordered_json& data, const LinkageModel& mo
     add_page_column(data, "mu_" + names, mu[b]);
   }
   if (!data["columns"].contains("condition")) add_page_column(data, "condition", condition);
+  add_crossing_marks(data, model, solver, poses);
 }
 
 LinkageModel shipped_model(const std::string& file) {

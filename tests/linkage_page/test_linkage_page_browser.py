@@ -14,7 +14,7 @@ four-bar with loads at 60 rpm):
 Then on particular pages: the Jansen cycle's frame time over 200 slider moves (median under 16 ms:
 the input event handled, style and layout done), the page with scripts off (the static SVG and the
 table of 360 rows), printed (no controls), with reduced motion (Play's rate says so); Play at the
-real crank speed of --speed 60rpm; the Mustang's limit marks take the slider to the limit poses.
+real crank speed of --speed 60rpm; the Mustang's limit and kite-crossing marks take the slider there.
 Last, the pages the labs jansen and mustang write beside their report (leg.html, mustang.html):
 they open without errors and their readout shows their own embedded numbers.
 """
@@ -189,10 +189,15 @@ def main(out_dir, numlab, models_dir):
         assert page.eval("document.querySelectorAll('.marks .tick.limit').length") == 2
         page.click("#mark-list li.limit:first-child button")
         assert page.eval("numlabLinkage.shown()") == 0
-        page.click("#mark-list li.limit:last-child button")
+        page.click("#mark-list li.limit:nth-child(2) button")
         assert page.eval("numlabLinkage.shown()") == len(mustang.rows) - 1
         page.eval("window.scrollTo(0, 0)")
         page.screenshot("mustang-at-upper-limit.png")
+        assert page.eval("document.querySelectorAll('.marks .tick.crossing').length") == 1
+        page.click("#mark-list li.crossing button")
+        assert abs(float(mustang.rows[page.eval("numlabLinkage.shown()")][0]) - 43.15) <= 0.5
+        page.eval("window.scrollTo(0, 0)")
+        page.screenshot("mustang-at-kite-crossing.png")
         page.check_no_errors()
         # The labs' pages.
         for lab, name in (("jansen", "leg.html"), ("mustang", "mustang.html")):

@@ -8,8 +8,8 @@ four-bar with loads at 60 rpm:
     and the same words (status, branch_kept, statics), pose for pose;
  2. the velocities the page adds to the built-ins (from the files' joint-coordinate models) agree with
     5-point central differences of the CSV's own positions (per radian of crank);
- 3. the marks: the Mustang's two assembly limits just outside its first and last pose; the isosceles
-    slider-crank's branch crossings at 90 and 270 deg;
+ 3. the marks: the Mustang's two assembly limits just outside its first and last pose and its kite's
+    change point at 43.15 deg (built-in and file); the isosceles slider-crank's crossings at 90, 270 deg;
  4. self-contained: no URL the page would fetch (no src/href/url() to http, no @import);
     without scripts: the static SVG and a table row per pose;
  5. the Jansen cycle's page is under 2 MB. Prints every page's size.
@@ -115,6 +115,12 @@ def main(numlab, models_dir, out_dir):
     limits = sorted(m["driver"] for m in mustang.data()["marks"] if m["kind"] == "limit")
     first, last = float(mustang.rows[0][0]), float(mustang.rows[-1][0])
     assert len(limits) == 2 and first - 0.5 <= limits[0] <= first + 1e-9 and last - 1e-9 <= limits[1] <= last + 0.5, (limits, first, last)
+    # The kite's change point, 43.15 deg (test_mustang_file.cpp's bisection), lies between two of the
+    # built-in's 0.5-deg poses; the file's own sweep puts it there too.
+    kite = [m["driver"] for m in mustang.data()["marks"] if m["kind"] == "crossing"]
+    assert len(kite) == 1 and abs(kite[0] - 43.15) <= 0.25, kite
+    file_kite = [m["driver"] for m in by_name["mustang.toml"].data()["marks"] if m["kind"] == "crossing"]
+    assert len(file_kite) == 1 and abs(file_kite[0] - 43.15) <= 0.01, file_kite
     crossings = sorted(m["driver"] for m in by_name["isosceles-slider-crank.toml"].data()["marks"] if m["kind"] == "crossing")
     assert len(crossings) == 2 and abs(crossings[0] - 90) < 1e-3 and abs(crossings[1] - 270) < 1e-3, crossings
     loads = by_name["four-bar-loads"].data()
