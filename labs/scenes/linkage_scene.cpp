@@ -111,6 +111,7 @@ std::string coordinate(double value) { return fmt::format("{:.3f}", value); }
 std::string slider_guides(const Scene& scene, const Frame& frame) {
   std::string svg;
   for (const auto& slider : scene.model.description().sliders) {
+    if (slider.on_link()) continue;  // a slot moves with its link, which is drawn: no fixed line
     const double angle = slider.angle_deg * std::numbers::pi / 180.0;
     const Point u(std::cos(angle), std::sin(angle)), through = slider.through * scene.zoom;
     Point a, b;
@@ -234,6 +235,9 @@ std::string linkage(const Scene& scene, std::size_t first, double seconds) {
     const auto& slider = d.sliders[s];
     const bool driven = !crank && d.driver.slider == static_cast<int>(s);
     const Point& p = now[at(slider.joint)];
+    // A block in a slot lies along its link's line B -> C at this pose; on a fixed line, along it.
+    const Point along = slider.on_link() ? Point(now[at(slider.line_to)] - now[at(slider.line_from)]) : Point(1.0, 0.0);
+    const double turn_deg = slider.on_link() ? std::atan2(along.y(), along.x()) * 180.0 / std::numbers::pi : slider.angle_deg;
     auto place = [&](const JointPositions& f) { return fmt::format("{:.3f},{:.3f}", f[at(slider.joint)].x(), -f[at(slider.joint)].y()); };
     const std::string moving =
         seconds > 0.0 ? fmt::format("<animateTransform attributeName=\"transform\" type=\"translate\" dur=\"{:.3f}s\" "
@@ -243,7 +247,7 @@ std::string linkage(const Scene& scene, std::size_t first, double seconds) {
     svg += fmt::format("<g class=\"slider\" transform=\"translate({:.3f},{:.3f})\">{}<rect x=\"{:.3g}\" y=\"{:.3g}\" "
                        "width=\"{:.3g}\" height=\"{:.3g}\" transform=\"rotate({:.6g})\" fill=\"{}\" stroke=\"#222\" "
                        "stroke-width=\"{:.3g}\"/></g>\n",
-                       p.x(), -p.y(), moving, -4.0 * u, -2.5 * u, 8.0 * u, 5.0 * u, -slider.angle_deg,
+                       p.x(), -p.y(), moving, -4.0 * u, -2.5 * u, 8.0 * u, 5.0 * u, -turn_deg,
                        driven ? "#f1948a" : "#d5dbdb", 0.5 * u);
   }
   for (std::size_t j = 0; j < now.size(); ++j) {
@@ -296,6 +300,7 @@ LabelObstacles label_obstacles(const Scene& scene, const JointPositions& now, co
     for (const Point& p : frame) side = std::max(side, p.norm());
   }
   for (const auto& slider : d.sliders) {
+    if (slider.on_link()) continue;  // its line is its link's, already an obstacle
     const double angle = slider.angle_deg * std::numbers::pi / 180.0;
     const Point direction(std::cos(angle), std::sin(angle)), through = slider.through * scene.zoom;
     const Point middle = through + direction * direction.dot(now[at(slider.joint)] - through);
