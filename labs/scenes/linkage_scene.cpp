@@ -83,7 +83,12 @@ std::string title_of(const LinkageModel& model) {
 }
 
 std::string driver_text(const LinkageModel& model, double value) {
-  return model.crank_driven() ? fmt::format("crank {:g} deg", value) : fmt::format("slider travel {:g}", value);
+  switch (model.description().driver.kind) {
+    case mechanisms::DriverKind::crank: return fmt::format("crank {:g} deg", value);
+    case mechanisms::DriverKind::motor: return fmt::format("motor {:g} deg", value);
+    case mechanisms::DriverKind::actuator: return fmt::format("actuator length {:g}", value);
+    default: return fmt::format("slider travel {:g}", value);
+  }
 }
 
 std::size_t at(int joint) { return static_cast<std::size_t>(joint); }
@@ -183,6 +188,28 @@ std::vector<Point> ground_pivots(const Scene& scene) {
 
 // The linkage at frames[first]: bodies, links, slider blocks, joints; with seconds > 0 it moves
 // through every frame.
+// An actuator driver (a hydraulic cylinder from `from` to `joint`): a heavy barrel over the first
+// half of the current length and a thinner rod the whole way, both moving with the two joints.
+std::string actuator(const Scene& scene, std::size_t first, double seconds) {
+  const auto& driver = scene.model.description().driver;
+  if (driver.kind != mechanisms::DriverKind::actuator) return {};
+  const double u = scene.unit;
+  auto end = [&](const JointPositions& f, double share) { return Point(f[at(driver.from)] + share * (f[at(driver.joint)] - f[at(driver.from)])); };
+  std::string svg;
+  for (const double share : {1.0, 0.5}) {  // the rod, then the barrel over it
+    auto x = [&](const JointPositions& f) { return coordinate(end(f, share).x()); };
+    auto y = [&](const JointPositions& f) { return coordinate(-end(f, share).y()); };
+    const Point a = scene.frames[first][at(driver.from)], b = end(scene.frames[first], share);
+    svg += fmt::format("<line class=\"actuator\" x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"{}\" "
+                       "stroke-width=\"{:.3g}\" stroke-linecap=\"butt\">{}{}{}{}</line>\n",
+                       a.x(), -a.y(), b.x(), -b.y(), share < 1.0 ? crank_colour : "#7b8a8b", (share < 1.0 ? 3.5 : 1.4) * u,
+                       animate(scene, first, seconds, "x1", [&](const JointPositions& f) { return coordinate(f[at(driver.from)].x()); }),
+                       animate(scene, first, seconds, "y1", [&](const JointPositions& f) { return coordinate(-f[at(driver.from)].y()); }),
+                       animate(scene, first, seconds, "x2", x), animate(scene, first, seconds, "y2", y));
+  }
+  return svg;
+}
+
 std::string linkage(const Scene& scene, std::size_t first, double seconds) {
   const auto& d = scene.model.description();
   const auto& now = scene.frames[first];
@@ -231,6 +258,7 @@ std::string linkage(const Scene& scene, std::size_t first, double seconds) {
                        animate(scene, first, seconds, "x2", x_of(link.second)),
                        animate(scene, first, seconds, "y2", y_of(link.second)));
   }
+  svg += actuator(scene, first, seconds);
   for (std::size_t s = 0; s < d.sliders.size(); ++s) {
     const auto& slider = d.sliders[s];
     const bool driven = !crank && d.driver.slider == static_cast<int>(s);
@@ -295,6 +323,9 @@ LabelObstacles label_obstacles(const Scene& scene, const JointPositions& now, co
     }
   }
   obstacles.boxes = ground_boxes(ground_pivots(scene), u);
+  if (d.driver.kind == mechanisms::DriverKind::actuator) {
+    obstacles.segments.push_back({now[at(d.driver.from)], now[at(d.driver.joint)], 1.8 * u, false});
+  }
   double side = 0.0;
   for (const auto& frame : scene.frames) {
     for (const Point& p : frame) side = std::max(side, p.norm());
