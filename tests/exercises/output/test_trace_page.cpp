@@ -215,3 +215,31 @@ TEST_CASE("Newton: the sentence says which of ||f|| and ||dx|| parts, with both 
                                                            {4.0, 1e-3}, {1.0, 0.5}, 2, tolerances);
   CHECK(longer.sentence == "step 3 (iteration 3): your trace goes on to iteration 3; numlab's Newton stops after 2 (||f||_inf = 0.001)");
 }
+
+TEST_CASE("A long trace keeps its first 2000 steps (and the parting step beyond them), and the page says so") {
+  const numlab::exercises::NewtonTolerances tolerances{1e-6, 1e-12, 1e-12, 1e-10};
+  std::vector<double> residuals(2500), steps(2500);
+  for (std::size_t k = 0; k < residuals.size(); ++k) {
+    residuals[k] = 1.0 / static_cast<double>(k + 1);
+    steps[k] = 0.5;
+  }
+  std::vector<double> yours = residuals;
+  yours[2200] *= 2.0;  // parts at iteration 2201
+  const TraceComparison comparison =
+      numlab::exercises::newton_comparison("a long run", yours, steps, residuals, steps, 2200, tolerances);
+  CHECK(comparison.yours.size() == 2201);
+  CHECK(comparison.numlab.size() == 2201);
+  CHECK(comparison.yours_total == 2500);
+  CHECK(comparison.yours[2200]["residual_inf"] == yours[2200]);
+  const TraceComparison early =
+      numlab::exercises::newton_comparison("a long run", yours, steps, residuals, steps, 10, tolerances);
+  CHECK(early.yours.size() == numlab::exercises::kept_trace_steps);
+  CheckResult result;
+  result.name = "a long trace";
+  result.status = CheckStatus::fail;
+  result.trace = early;
+  const std::string page = numlab::exercises::trace_page_html(numlab::exercises::gepp_exercise(), result);
+  CHECK(page.find("Your trace has 2500 iterations; the first 2000 are shown.") != std::string::npos);
+  CHECK(page.find("numlab's has 2500 iterations; the first 2000 are shown.") != std::string::npos);
+  CHECK(occurrences(page, "<tr id=\"step-") == 2000);
+}
