@@ -58,13 +58,16 @@ std::vector<int> fixed_by_rows(const LinkageModel& model, const std::vector<int>
   return fixed;
 }
 
-// Step 3: the joints of the smallest blocks that need only known joints, in the model with the
-// pairs chosen so far. None when that model has no block order (it is not regular).
-std::vector<int> solved_by_newton(const LinkageModel& model, const std::vector<int>& round) {
-  const LinkageModel trial(model.description(), pairs_from(model.description(), round));
+// The smallest blocks of the model with `pairs` that need only known joints: their size (in joints)
+// and their joints. None (size SIZE_MAX) when that model has no block order (it is not regular).
+struct ReadyBlocks {
+  std::size_t size = SIZE_MAX;
+  std::vector<int> joints;
+};
+ReadyBlocks smallest_ready(const LinkageDescription& d, const std::vector<std::array<int, 2>>& pairs, const std::vector<int>& round) {
   std::vector<LinkageBlock> blocks;
   try {
-    blocks = linkage_blocks(trial);
+    blocks = linkage_blocks(LinkageModel(d, pairs));
   } catch (const std::invalid_argument&) {
     return {};
   }
@@ -72,15 +75,58 @@ std::vector<int> solved_by_newton(const LinkageModel& model, const std::vector<i
     return std::none_of(block.joints.begin(), block.joints.end(), [&](int j) { return known(round, j); }) &&
            std::all_of(block.known_joints.begin(), block.known_joints.end(), [&](int j) { return known(round, j); });
   };
-  std::size_t smallest = SIZE_MAX;
+  ReadyBlocks out;
   for (const LinkageBlock& block : blocks) {
-    if (ready(block)) smallest = std::min(smallest, block.joints.size());
+    if (ready(block)) out.size = std::min(out.size, block.joints.size());
   }
-  std::vector<int> solved;
   for (const LinkageBlock& block : blocks) {
-    if (ready(block) && block.joints.size() == smallest) solved.insert(solved.end(), block.joints.begin(), block.joints.end());
+    if (ready(block) && block.joints.size() == out.size) out.joints.insert(out.joints.end(), block.joints.begin(), block.joints.end());
   }
-  return solved;
+  return out;
+}
+
+// A body's joints (indices into its list) in the order of their names.
+std::vector<int> by_name(const LinkageDescription& d, const BodySpec& body) {
+  std::vector<int> order(body.joints.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto name = [&](int k) -> const std::string& { return d.joints[static_cast<std::size_t>(body.joints[static_cast<std::size_t>(k)])].name; };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return name(a) < name(b); });
+  return order;
+}
+
+// Step 3: the joints of the smallest blocks that need only known joints, in the model with the
+// pairs chosen so far. A body with a joint in them may have a pair that makes them smaller (a pair
+// from outside the block ties its rows to joints found later): each of its pairs is tried, one
+// body at a time, bodies and pairs in the order of their joints' names, and a smaller block kept.
+std::vector<int> solved_by_newton(const LinkageModel& model, const std::vector<int>& round) {
+  const LinkageDescription& d = model.description();
+  std::vector<std::array<int, 2>> pairs = pairs_from(d, round);
+  ReadyBlocks best = smallest_ready(d, pairs, round);
+  std::vector<std::size_t> bodies(d.bodies.size());
+  std::iota(bodies.begin(), bodies.end(), std::size_t{0});
+  const auto names = [&](std::size_t b) {
+    std::vector<std::string> list;
+    for (int j : d.bodies[b].joints) list.push_back(d.joints[static_cast<std::size_t>(j)].name);
+    std::sort(list.begin(), list.end());
+    return list;
+  };
+  std::stable_sort(bodies.begin(), bodies.end(), [&](std::size_t a, std::size_t b) { return names(a) < names(b); });
+  for (std::size_t b : bodies) {
+    const BodySpec& body = d.bodies[b];
+    const auto in_block = [&](int j) { return std::find(best.joints.begin(), best.joints.end(), j) != best.joints.end(); };
+    if (std::none_of(body.joints.begin(), body.joints.end(), in_block)) continue;
+    const std::vector<int> order = by_name(d, body);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      for (std::size_t k = i + 1; k < order.size(); ++k) {
+        std::vector<std::array<int, 2>> trial = pairs;
+        trial[b] = {std::min(order[i], order[k]), std::max(order[i], order[k])};
+        if (trial[b] == pairs[b]) continue;
+        ReadyBlocks tried = smallest_ready(d, trial, round);
+        if (tried.size < best.size) best = std::move(tried), pairs = std::move(trial);
+      }
+    }
+  }
+  return best.joints;
 }
 
 }  // namespace

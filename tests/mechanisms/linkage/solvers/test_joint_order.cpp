@@ -181,15 +181,31 @@ void require_same_poses(const NamedSweep& a, const NamedSweep& b, int unknowns, 
 }
 
 struct Case {
-  std::string name, path;
+  std::string name, text;
 };
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+// Stephenson III with a fourth joint a2 on T2 (a body point once d, e, f are found), named before
+// them: a pair chosen by name alone (a2, d) would tie a2 into the 6x6 block (an 8x8).
+std::string stephenson_with_a2() {
+  std::string text = text_of(model_path("stephenson-iii"));
+  text = replaced(text, "f = [1.2, 4.4]\n", "f = [1.2, 4.4]\na2 = [3.4192388155425117, 2.5636038969321073]\n");
+  return replaced(text, "joints = [\"d\", \"e\", \"f\"]\nlocal = [[0.0, 0.0], [2.1, 0.0], [-1.45, 1.0]]",
+                  "joints = [\"d\", \"e\", \"f\", \"a2\"]\nlocal = [[0.0, 0.0], [2.1, 0.0], [-1.45, 1.0], [1.0, -0.5]]");
+}
 
 std::vector<Case> cases_with_bodies() {
   std::vector<Case> out;
   for (const std::string& name : shipped_model_names()) {
-    if (!model_file(name).description().bodies.empty()) out.push_back({name, model_path(name)});
+    if (!model_file(name).description().bodies.empty()) out.push_back({name, text_of(model_path(name))});
   }
-  out.push_back({"skew-pantograph", pantograph_path()});
+  out.push_back({"skew-pantograph", text_of(pantograph_path())});
+  out.push_back({"stephenson-iii with a2", stephenson_with_a2()});
   return out;
 }
 
@@ -197,11 +213,11 @@ std::vector<Case> cases_with_bodies() {
 
 TEST_CASE("Joint order: every order of each body's joints and of the tables gives the same blocks", "[linkage-joint-order]") {
   const std::vector<Case> cases = cases_with_bodies();
-  REQUIRE(cases.size() >= 8);  // jansen, mustang, klann, chebyshev, hoeken, watt-i, stephenson-iii, the pantograph
+  REQUIRE(cases.size() >= 9);  // jansen, mustang, klann, chebyshev, hoeken, watt-i, stephenson-iii, the pantograph, a2
   for (const Case& c : cases) {
     INFO(c.name);
-    const std::string text = text_of(c.path);
-    const LinkageModel file(parse_linkage_description(text, c.path));
+    const std::string& text = c.text;
+    const LinkageModel file(parse_linkage_description(text, c.name + ".toml"));
     const std::vector<std::string> expected = block_summary(file);
     const std::multiset<std::size_t> sizes = block_sizes(file);
     std::vector<std::vector<std::vector<int>>> orders;  // per body, every order of its joints
@@ -240,8 +256,8 @@ TEST_CASE("Joint order: every order of each body's joints and of the tables give
 TEST_CASE("Joint order: the poses of a sweep do not depend on the order either", "[linkage-joint-order]") {
   for (const Case& c : cases_with_bodies()) {
     INFO(c.name);
-    const std::string text = text_of(c.path);
-    const LinkageModel file(parse_linkage_description(text, c.path));
+    const std::string& text = c.text;
+    const LinkageModel file(parse_linkage_description(text, c.name + ".toml"));
     // The analytic solver where every block has a closed form, and full Newton always.
     std::vector<std::string> solvers = {"full"};
     if (every_block_closed(file)) solvers.push_back("analytic");
@@ -326,4 +342,21 @@ TEST_CASE("Joint order: the skew pantograph's dyads, its closed form, and the fi
     CHECK((F - F_closed).norm() <= pose.closed_form_bound);
     CHECK((P - O - Eigen::Vector2d(tracer.real(), tracer.imag())).norm() <= 2.0 * std::abs(s) * pose.closed_form_bound);
   }
+}
+
+TEST_CASE("Joint order: a body point named before a Newton block's joints stays out of the block", "[linkage-joint-order]") {
+  const LinkageModel model(parse_linkage_description(stephenson_with_a2(), "stephenson-a2.toml"));
+  // a (crank), c (a point of T1), d, e, f (6x6), then a2 a point of T2 from two of d, e, f.
+  CHECK(block_sizes(model) == std::multiset<std::size_t>{2, 2, 6, 2});
+  const std::vector<int> rounds = known_rounds(model);
+  const auto round_of = [&](const char* name) { return rounds[static_cast<std::size_t>(model.description().joint_index(name))]; };
+  CHECK(round_of("d") == 3);
+  CHECK(round_of("e") == 3);
+  CHECK(round_of("f") == 3);
+  CHECK(round_of("a2") == 4);
+  const BodySpec& T2 = model.description().bodies[1];
+  const auto pair = model.base_pairs()[1];
+  const std::set<std::string> chosen = {name_of(model, T2.joints[static_cast<std::size_t>(pair[0])]),
+                                        name_of(model, T2.joints[static_cast<std::size_t>(pair[1])])};
+  CHECK(chosen == std::set<std::string>{"d", "e"});
 }

@@ -13,9 +13,11 @@
 //        - two rows fix it from known joints: the rows of the other items (links, sliders, the
 //          driver) that read it and known joints only, and one distance per body that holds it with
 //          exactly one known joint (a dyad, or the crank, or a driven slider);
-//   3. when no joint becomes known so, the blocks of the model with the pairs chosen so far
-//      (linkage_blocks.hpp) that need only known joints are solved by Newton: their joints become
-//      known in the next round, and step 2 goes on from there;
+//   3. when no joint becomes known so, the smallest blocks of the model with the pairs chosen so
+//      far (linkage_blocks.hpp) that need only known joints are solved by Newton: their joints
+//      become known in the next round, and step 2 goes on from there. A body with a joint in them
+//      first tries each of its pairs (one body at a time, in the order of the joints' names) and
+//      keeps one that makes them smaller: a pair from outside the block would tie a later joint in;
 //   4. each body's base pair is its two joints known first; joints known in the same round (or
 //      never: a model that is not regular) are taken in the order of their names. The two keep
 //      the order in which the body lists them: which one is b0 changes the rows, not the blocks.
