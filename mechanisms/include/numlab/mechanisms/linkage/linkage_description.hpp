@@ -72,11 +72,12 @@ struct DriverSpec {
   int pivot = -1;      // crank: a ground joint; motor: the joint the two links share
   int joint = -1;      // the driven joint (crank: on a link or body with the pivot; slider: a slider's joint;
                        // actuator: its second joint; motor: on the second link or body)
-  int from = -1;       // actuator: its first joint; motor: the joint on the first link or body
   int slider = -1;     // slider driver: index into LinkageDescription::sliders
   double reference = 0.0;  // the driver's value at the reference pose (degrees or length)
   SourcePlace place;
   SourcePlace reference_place{};  // of `angle` (crank, motor), `travel` (slider) or `length` (actuator)
+  int from = -1;       // actuator: its first joint; motor: the joint on the first link or body (last, so
+                       // that {kind, pivot, joint, slider, reference, place} still initialises a crank)
   bool angle() const { return kind == DriverKind::crank || kind == DriverKind::motor; }  // degrees, else length
 };
 
