@@ -12,8 +12,7 @@ namespace numlab::cli {
 
 std::string driving_chart_problem(const mechanisms::LinkageModel& model, const std::optional<mechanisms::LinkageOutput>& output) {
   if (!model.description().loads.empty() || output) return {};
-  return "--chart draws the driving torque and the mechanical advantage, but " + model.description().name +
-         " has no [[load]] and no output: add loads to the file, or name an output (--output LINK)";
+  return "--chart: " + model.description().name + " has no [[load]] and no output, nothing to chart: add loads or give --output LINK";
 }
 
 void draw_driving_chart(const ChartFiles& files, const mechanisms::LinkageModel& model, const mechanisms::LinkageSweep& sweep,

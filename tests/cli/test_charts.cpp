@@ -224,7 +224,7 @@ TEST_CASE("mechanism --chart without loads charts the mechanical advantage only,
   CHECK_THAT(read_all(folder + "/ma.svg.gp"), Contains("mechanical advantage only (no [[load]] in the file: no driving torque)"));
   CHECK_THAT(read_all(folder + "/ma.svg"), Contains("</svg>"));
   require_bad_input("mechanism four-bar --sweep 0:355:5 --chart " + folder + "/none.svg",
-                    "--chart draws the driving torque and the mechanical advantage, but four-bar has no [[load]] and no output");
+                    "--chart: four-bar has no [[load]] and no output, nothing to chart: add loads or give --output LINK");
   require_bad_input("mechanism four-bar --crank 30 --output Q-B --chart " + folder + "/one.svg",
                     "--chart applies only to --sweep (it charts the sweep)");
   CHECK(names_in(folder) == std::vector<std::string>{"ma.svg", "ma.svg.data.csv", "ma.svg.gp"});
