@@ -185,7 +185,8 @@
     return {a: link[0], b: link[1], shape: element('line', {class: 'link' + (heavy ? ' driven' : ''), 'stroke-width': (heavy ? 3 : 2) * u}, linkLayer)};
   });
   // An actuator: a thick cylinder from its first joint and a thin rod on to its second, half each.
-  const actuator = data.driver.kind === 'actuator' && data.driver.from >= 0
+  const isJoint = function (j) { return Number.isInteger(j) && j >= 0 && j < joints.length; };
+  const actuator = data.driver.kind === 'actuator' && isJoint(data.driver.from) && isJoint(data.driver.joint)
     ? {cylinder: element('line', {class: 'link driven', 'stroke-width': 3.5 * u}, linkLayer),
        rod: element('line', {class: 'link driven', 'stroke-width': 1.2 * u}, linkLayer)}
     : null;
@@ -466,6 +467,17 @@
     position = shown;
     then = 0;
     if (playing) requestAnimationFrame(frame);
+  });
+  // The arrow keys, Home and End anywhere on the page that is not a control of its own (the slider
+  // takes them itself), as on the lab reports' steppers.
+  document.addEventListener('keydown', function (event) {
+    const tag = event.target && event.target.tagName;
+    if (event.defaultPrevented || event.altKey || event.ctrlKey || event.metaKey || /^(INPUT|SELECT|TEXTAREA|BUTTON)$/.test(tag)) return;
+    const to = {ArrowLeft: shown - 1, ArrowRight: shown + 1, Home: 0, End: count - 1}[event.key];
+    if (to === undefined) return;
+    event.preventDefault();
+    show(to);
+    position = shown;
   });
   const details = document.getElementById('pose-details');
   if (details && count > 30) details.open = false;

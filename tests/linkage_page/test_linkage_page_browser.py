@@ -8,8 +8,8 @@ four-bar with loads at 60 rpm):
     assemble if any): the readout's joint coordinates, velocities, driver value and status equal
     the CSV row's (the full value in data-value exactly, the text to its 8 digits), and the drawn
     joint circles stand at the CSV's x, -y;
- 2. the keys on the slider (ArrowRight, Home, End) and the buttons (previous, first, next) move one
-    pose, or to the ends;
+ 2. the keys on the slider (ArrowRight, Home, End), the buttons (previous, first, next) and the
+    page's own keys on no control (ArrowRight, End, ArrowLeft) move one pose, or to the ends;
  3. no console error or uncaught exception; a screenshot per page (OUT_DIR/NAME.png).
 Then on particular pages: the Jansen cycle's frame time over 200 slider moves (median under 16 ms:
 the input event handled, style and layout done), the page with scripts off (the static SVG and the
@@ -105,6 +105,13 @@ def scrub(page, case):
     checked += check_pose(page, case, 0)
     page.click("#pose-next")
     checked += check_pose(page, case, 1)
+    page.eval("document.activeElement.blur()")  # the page's own keys, on no control
+    page.press("ArrowRight")
+    checked += check_pose(page, case, 2)
+    page.press("End")
+    checked += check_pose(page, case, n - 1)
+    page.press("ArrowLeft")
+    checked += check_pose(page, case, n - 2)
     return checked
 
 
