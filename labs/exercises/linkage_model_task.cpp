@@ -102,7 +102,10 @@ nlohmann::json linkage_model_json(const LinkageModel& model) {
       if (joint >= 0) names.push_back(joint_name(model, joint));
     }
     nlohmann::json equation = {{"kind", kind_name(c.kind)}, {"name", c.name}, {"rows", c.rows()}, {"joints", names}};
-    if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank) equation["length"] = c.length;
+    if (c.kind == ConstraintKind::distance || c.kind == ConstraintKind::crank || c.kind == ConstraintKind::motor) {
+      equation["length"] = c.length;  // a motor's: its row's length scale l = |AC|
+    }
+    if (c.kind == ConstraintKind::slider_on_line) equation["offset"] = c.offset;
     if (c.kind == ConstraintKind::crank) equation["offset"] = c.offset;
     if (c.kind == ConstraintKind::body_point) equation["coefficients"] = pair(c.coefficients);
     if (c.kind == ConstraintKind::slider_line || c.kind == ConstraintKind::slider_travel) {

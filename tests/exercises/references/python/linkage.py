@@ -18,7 +18,7 @@ def perp(v):
 class Linkage:
     def __init__(self, model):
         self.equations = model["equations"]
-        self.crank = model["driver"]["type"] == "crank"
+        self.crank = model["driver"]["type"] in ("crank", "motor")  # an angle in degrees
         self.fixed = {}  # ground joint -> position
         self.column = {}  # moving joint -> column of its x
         for joint in model["joints"]:
@@ -82,6 +82,31 @@ class Linkage:
                 u, P = np.array(e["direction"]), np.array(e["point"])
                 f[row] = u @ (self.p(q, names[0]) - P) - t
                 self.put(J, slice(row, row + 1), names[0], u[None, :])
+            elif e["kind"] == "slider_on_line":
+                # A in the slot along B -> C: (d x r)/|d| - offset, d = C - B, r = A - B
+                A, B, C = (self.p(q, name) for name in names)
+                d, r = C - B, A - B
+                L, side = math.hypot(*d), d[0] * r[1] - d[1] * r[0]
+                f[row] = side / L - e["offset"]
+                dA = perp(d) / L
+                dC = -perp(r) / L - side * d / L**3
+                for name, g in ((names[0], dA), (names[1], -dA - dC), (names[2], dC)):
+                    self.put(J, slice(row, row + 1), name, g[None, :])
+            elif e["kind"] == "actuator":
+                d = self.p(q, names[0]) - self.p(q, names[1])
+                f[row] = math.hypot(*d) - t
+                self.put(J, slice(row, row + 1), names[0], (d / math.hypot(*d))[None, :])
+                self.put(J, slice(row, row + 1), names[1], (-d / math.hypot(*d))[None, :])
+            elif e["kind"] == "motor":
+                # l sin(phi - t), phi the angle from u = B - A to v = C - A
+                A, B, C = (self.p(q, name) for name in names)
+                u, v, l = B - A, C - A, e["length"]
+                psi = math.atan2(u[0] * v[1] - u[1] * v[0], u @ v) - t
+                f[row] = l * math.sin(psi)
+                gB = -l * math.cos(psi) * perp(u) / (u @ u)
+                gC = l * math.cos(psi) * perp(v) / (v @ v)
+                for name, g in ((names[0], -gB - gC), (names[1], gB), (names[2], gC)):
+                    self.put(J, slice(row, row + 1), name, g[None, :])
             else:
                 raise ValueError(f"unknown equation kind {e['kind']}")
             row += e["rows"]
@@ -92,6 +117,12 @@ class Linkage:
         g = np.zeros(self.m)
         row = 0
         for e in self.equations:
+            if e["kind"] == "actuator":
+                g[row] = -1.0
+            elif e["kind"] == "motor":  # a motor's depends on the pose too: the one Newton solved last
+                A, B, C = (self.p(self.solved, name) for name in e["joints"])
+                u, v = B - A, C - A
+                g[row] = -e["length"] * math.cos(math.atan2(u[0] * v[1] - u[1] * v[0], u @ v) - t)
             if e["kind"] == "crank":
                 angle = t + e["offset"]
                 g[row:row + 2] = e["length"] * np.array([math.sin(angle), -math.cos(angle)])
@@ -104,6 +135,7 @@ class Linkage:
         for _ in range(max_iterations + 1):
             f, J = self.closure(q, t)
             if np.max(np.abs(f)) <= tolerance:
+                self.solved = q
                 return q, J
             q = q + np.linalg.solve(J, -f)
         raise RuntimeError(f"Newton did not converge at t = {t} in {max_iterations} iterations")
