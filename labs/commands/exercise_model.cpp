@@ -32,6 +32,10 @@ NamedExercise exercise_named(const std::string& name, const std::string& model, 
   std::error_code error;
   const bool shipped = !std::filesystem::is_regular_file(model, error);
   auto derived = std::make_shared<const mechanisms::LinkageModel>(mechanisms::read_linkage_description(file));
+  if (derived->has_second_driver()) {
+    throw std::invalid_argument("exercise " + verb + ": --model '" + model + "' has two drivers (mobility 2); the linkage "
+                                "exercise's requests give one driver value: choose a linkage with one driver");
+  }
   return {exercises::linkage_exercise(derived, model_argument.empty() ? model : model_argument), file, shipped};
 }
 

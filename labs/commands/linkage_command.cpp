@@ -15,6 +15,7 @@
 #include "methods/data_dir.hpp"
 #include "output/driving_chart.hpp"
 #include "output/linkage_report.hpp"
+#include "numlab/mechanisms/linkage/driver_path.hpp"
 #include "numlab/mechanisms/linkage/crank_analysis.hpp"
 #include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_authoring_checks.hpp"
@@ -98,7 +99,8 @@ JacobianReport check_jacobians(const LinkageModel& model, const LinkageSweep& sw
 // first pose whose kinematics disagree with differences of solved positions beyond the tolerance
 // is named (a pose on a crossing is not checked: J gives no velocity there, the sweep took its
 // kinematics from such differences already).
-DerivativeReport check_poses(const LinkageSolver& solver, const LinkageSweep& sweep) {
+// `path_model`: a --drivers path's model, whose second driver is held at each pose's value first.
+DerivativeReport check_poses(const LinkageSolver& solver, const LinkageSweep& sweep, LinkageModel* path_model) {
   DerivativeReport report;
   std::vector<const LinkagePose*> converged;
   for (const auto& pose : sweep.poses) {
@@ -107,6 +109,7 @@ DerivativeReport check_poses(const LinkageSolver& solver, const LinkageSweep& sw
   const std::size_t wanted = std::min<std::size_t>(8, converged.size());
   for (std::size_t k = 0; k < wanted; ++k) {
     const LinkagePose& pose = *converged[k * converged.size() / wanted];
+    if (path_model != nullptr) path_model->hold_second_driver(pose.second_driver);
     const auto check = check_derivatives(solver, solver.model().driver_from_user(pose.driver), pose.q);
     if (!check.solved) {
       ++report.unsolved;
@@ -216,7 +219,7 @@ std::size_t drawn_pose(const LinkageModel& model, const LinkageSweep& sweep, con
 int run_linkage(const LinkageRun& run) {
   // 1. The description, the derived model (mobility and structure checked), and the solver with
   // its reference pose: each is bad input when it fails.
-  const LinkageModel model(read_linkage_description(run.file));
+  LinkageModel model(read_linkage_description(run.file));  // not const: a --drivers path moves the second driver
   check_driver_angles(model.description());
   if (run.explain) {
     print_explanation(std::cout, model, run.common.format);
@@ -242,7 +245,13 @@ int run_linkage(const LinkageRun& run) {
                          run.common.format);
     return exit_success;
   }
+  if (!run.drivers.empty() && !model.has_second_driver()) {
+    throw std::invalid_argument("--drivers moves two drivers; " + model.description().name + " has one (use --sweep)");
+  }
+  const bool on_path = !run.drivers.empty();
+  const std::vector<DriverPathPoint> path = on_path ? read_driver_path(run.drivers) : std::vector<DriverPathPoint>{};
   const DegreeRange range = run.driver ? DegreeRange{*run.driver, *run.driver, 1.0}
+                            : on_path  ? DegreeRange{0.0, 0.0, 1.0}
                                        : parse_degree_range(run.sweep, "--sweep");
 
   // 2. The sweep, traced and paused as asked; the time leaves out the pauses.
@@ -251,10 +260,15 @@ int run_linkage(const LinkageRun& run) {
   const auto begin = std::chrono::steady_clock::now();
   LinkageSweepStepper stepper(solver, run.switch_at_crossing ? AtCrossing::switch_branch : AtCrossing::smooth);
   if (run.common.trace) stepper.set_observer(&tracer);  // untraced, the poses take the fast path
-  stepper.start(range.start, range.stop, range.step);
-  while (stepper.step()) {  // one requested pose
+  LinkageSweep path_sweep;
+  if (on_path) {
+    path_sweep = solve_driver_path(model, solver, path);
+  } else {
+    stepper.start(range.start, range.stop, range.step);
+    while (stepper.step()) {  // one requested pose
+    }
   }
-  const LinkageSweep& sweep = stepper.result();
+  const LinkageSweep& sweep = on_path ? path_sweep : stepper.result();
   if (stepper.stopped()) {
     return report_stopped(run.common, {{"mechanism", model.description().name}, {"solver", run.solver}}, tracer.rows());
   }
@@ -262,7 +276,7 @@ int run_linkage(const LinkageRun& run) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() - pause.seconds_waited();
 
   // 3. The checks that read the sweep, the files, then the report.
-  LinkageReport report{model, solver, sweep, time_s, check_poses(solver, sweep), std::nullopt, Status::converged,
+  LinkageReport report{model, solver, sweep, time_s, check_poses(solver, sweep, on_path ? &model : nullptr), std::nullopt, Status::converged,
                        std::move(warnings), output, run.speed_rad_s};
   if (run.check_jacobian) report.jacobian = check_jacobians(model, sweep);
   report.status = overall_status(sweep, report.derivatives);

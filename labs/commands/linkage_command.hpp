@@ -16,6 +16,7 @@ struct LinkageRun {
   std::string file;                // the description file
   std::optional<double> driver;    // --crank: one value (degrees, or travel for a slider driver)
   std::string sweep;               // --sweep START:STOP:STEP (same units)
+  std::string drivers;             // --drivers PATH.csv: both drivers along a path (a file with two drivers)
   std::string solver = "full";
   std::string linear = "gepp";
   bool linear_given = false;

@@ -137,6 +137,10 @@ MechanismCommand::MechanismCommand(CLI::App& app) {
                     ->check(CLI::Validator([](std::string& text) { return finite_number_problem(text); }, "DEG"));
   auto* sweep = command_->add_option("--sweep", sweep_, "START:STOP:STEP in degrees");
   crank->excludes(sweep);
+  auto* drivers = command_->add_option("--drivers", drivers_, "A description file with two drivers: move both along the "
+                                                              "path in this CSV file (a header, then first,second per row) "
+                                                              "instead of --sweep");
+  drivers->excludes(crank)->excludes(sweep);
   command_->add_option("--solver", solver_, "full, sequential, analytic or gsl-<type>")
       ->check(CLI::IsMember(mechanisms::linkage_solver_names()));
   command_->add_option("--linear", linear_, "Inner solver of full Newton")
@@ -205,9 +209,11 @@ int MechanismCommand::run() const {
   check_flags(common, from_file);
   if (explain_) return explain(common, file);
   if (analyse_) return analyse(common, file);
-  if (!crank_ && sweep_.empty()) throw std::invalid_argument("give --crank DEG or --sweep START:STOP:STEP");
+  if (!crank_ && sweep_.empty() && drivers_.empty()) {
+    throw std::invalid_argument("give --crank DEG, --sweep START:STOP:STEP or --drivers PATH.csv");
+  }
   if (crank_ && !std::isfinite(*crank_)) throw std::invalid_argument("--crank must be a finite number of degrees");
-  const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : parse_sweep(sweep_);
+  const SweepRange range = crank_ ? SweepRange{*crank_, *crank_, 1.0} : drivers_.empty() ? parse_sweep(sweep_) : SweepRange{0.0, 0.0, 1.0};
   if (!beest_.empty()) require_full_turn(range);
   const OutputPaths paths = checked_outputs(common, file);
   // 2. One dispatch: every linkage is swept through the same interface.
@@ -230,8 +236,14 @@ std::string MechanismCommand::linkage_file() const {
 // Each flag given only where it applies, each file flag with a name.
 void MechanismCommand::check_flags(const CommonOptions& common, bool from_file) const {
   for (const auto* flag : {"--explain", "--check-jacobian", "--arrows", "--strict", "--at-crossing", "--analyse", "--output", "--speed",
-                           "--draw-at", "--path", "--chart"}) {
+                           "--draw-at", "--path", "--chart", "--drivers"}) {
     require_applies(given(*command_, flag), from_file, flag, "a linkage description file or shipped model");
+  }
+  for (const auto* flag : {"--draw-at", "--speed"}) {
+    require_applies(given(*command_, flag), drivers_.empty(), flag, "--crank or --sweep (not a --drivers path)");
+  }
+  for (const auto* flag : {"--trace", "--step"}) {
+    require_applies(given(common, flag), drivers_.empty(), flag, "--crank or --sweep (not a --drivers path)");
   }
   require_applies(given(*command_, "--draw-at"), !svg_.empty(), "--draw-at", "--svg FILE");
   require_applies(given(*command_, "--path"), !svg_.empty() || !animate_.empty(), "--path", "--svg FILE or --animate FILE");
@@ -261,7 +273,7 @@ void MechanismCommand::check_flags(const CommonOptions& common, bool from_file) 
 // --explain: the derived model of a description file, no solve.
 int MechanismCommand::explain(const CommonOptions& common, const std::string& file) const {
   for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--strict",
-                           "--at-crossing", "--output", "--speed", "--html", "--draw-at", "--path", "--chart"}) {
+                           "--at-crossing", "--output", "--speed", "--html", "--draw-at", "--path", "--chart", "--drivers"}) {
     require_applies(given(*command_, flag), false, flag, "a solve, not --explain");
   }
   for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
@@ -278,7 +290,7 @@ int MechanismCommand::explain(const CommonOptions& common, const std::string& fi
 // --analyse: a four-bar's or slider-crank's analysis from the model, no sweep asked for.
 int MechanismCommand::analyse(const CommonOptions& common, const std::string& file) const {
   for (const auto* flag : {"--crank", "--sweep", "--solver", "--linear", "--svg", "--animate", "--check-jacobian", "--at-crossing",
-                           "--speed", "--html", "--draw-at", "--path", "--chart"}) {
+                           "--speed", "--html", "--draw-at", "--path", "--chart", "--drivers"}) {
     require_applies(given(*command_, flag), false, flag, "a solve, not --analyse");
   }
   for (const auto* flag : {"--trace", "--step", "--tol", "--max-iter", "--out"}) {
@@ -318,6 +330,7 @@ int MechanismCommand::sweep_file(const CommonOptions& common, const SweepRange&,
   run.file = file;
   run.driver = crank_;
   run.sweep = sweep_;
+  run.drivers = drivers_;
   run.solver = solver_;
   run.linear = linear_;
   run.linear_given = given(*command_, "--linear");

@@ -47,6 +47,7 @@ class MechanismCommand {
   std::string name_;
   std::optional<double> crank_;
   std::string sweep_;
+  std::string drivers_;  // --drivers: a path in driver space (a file with two drivers)
   std::string solver_ = "full";
   std::string linear_ = "gepp";
   std::string svg_;

@@ -34,6 +34,20 @@ std::string driver_column(const LinkageModel& model) {
   return "travel";
 }
 
+// The second driver's CSV column (a file with two drivers): crank2_deg, travel2 or length2.
+std::string second_driver_column(const LinkageModel& model) {
+  switch (model.description().second_driver->kind) {
+    case DriverKind::crank: return "crank2_deg";
+    case DriverKind::slider: return "travel2";
+    default: return "length2";
+  }
+}
+
+// The second driver's value at a pose: a driver path's row, or the value a sweep holds it at.
+double second_driver_at(const LinkageModel& model, const LinkagePose& pose) {
+  return std::isnan(pose.second_driver) ? model.second_driver() : pose.second_driver;
+}
+
 // The driver in words: "crank" or "motor" (per radian of it), "travel" or "length" (per unit of it).
 std::string driver_word(const LinkageModel& model) {
   constexpr const char* words[] = {"crank", "travel", "length", "motor"};
@@ -203,11 +217,13 @@ const char* driver_load_name(const LinkageModel& model) { return model.crank_dri
 void print_statics_header(std::ostream& out, const LinkageReport& r) {
   if (!has_loads(r)) return;
   out << ',' << driver_load_name(r.model) << ",statics";
+  if (r.model.has_second_driver()) out << ',' << (r.model.description().second_driver->angle() ? "driver2_torque" : "driver2_force");
   for (const StaticsSupport& s : statics_supports(r.model.description())) out << ",reaction_" << s.name << "_x,reaction_" << s.name << "_y";
 }
 
-void print_statics_row(std::ostream& out, const LinkageStatics& statics) {
+void print_statics_row(std::ostream& out, const LinkageModel& model, const LinkageStatics& statics) {
   out << fmt::format(",{:.17g},{}", statics.driver, to_string(statics.status));
+  if (model.has_second_driver()) out << fmt::format(",{:.17g}", statics.second_driver);
   for (const Eigen::Vector2d& reaction : statics.reactions) out << fmt::format(",{:.17g},{:.17g}", reaction.x(), reaction.y());
 }
 
@@ -216,9 +232,13 @@ nlohmann::ordered_json statics_json(const LinkageReport& r, const std::vector<St
   for (std::size_t s = 0; s < supports.size(); ++s) {
     reactions[supports[s].name] = {number_or_null(statics.reactions[s].x()), number_or_null(statics.reactions[s].y())};
   }
-  return {{"status", std::string(to_string(statics.status))},
-          {driver_load_name(r.model), number_or_null(statics.driver)},  // null when singular (unbounded) or no pose
-          {"reactions", reactions}};
+  nlohmann::ordered_json out = {{"status", std::string(to_string(statics.status))},
+                                {driver_load_name(r.model), number_or_null(statics.driver)}};  // null when singular (unbounded) or no pose
+  if (r.model.has_second_driver()) {
+    out[r.model.description().second_driver->angle() ? "driver2_torque" : "driver2_force"] = number_or_null(statics.second_driver);
+  }
+  out["reactions"] = reactions;
+  return out;
 }
 
 // "driver torque -3.2 .. 5.1 (largest in size 5.1 at 120 deg); singular at 2 poses".
@@ -308,6 +328,7 @@ void print_linkage_csv(std::ostream& out, const LinkageReport& r) {
   const auto& joints = r.model.description().joints;
   const auto dyad_blocks = dyads(r.solver);
   out << driver_column(r.model);
+  if (r.model.has_second_driver()) out << ',' << second_driver_column(r.model);
   for (const auto& j : joints) out << ",x_" << j.name << ",y_" << j.name;
   for (const auto& j : joints) out << ",vx_" << j.name << ",vy_" << j.name << ",ax_" << j.name << ",ay_" << j.name;
   for (std::size_t b : dyad_blocks) out << ",mu_" << block_joint_names(r.model, r.solver.blocks()[b]);
@@ -319,6 +340,7 @@ void print_linkage_csv(std::ostream& out, const LinkageReport& r) {
   LinkageStaticsSolver statics(r.model);
   for (const auto& pose : r.sweep.poses) {
     out << fmt::format("{:.10g}", pose.driver);
+    if (r.model.has_second_driver()) out << fmt::format(",{:.10g}", second_driver_at(r.model, pose));
     std::vector<JointMotion> m;
     for (std::size_t j = 0; j < joints.size(); ++j) m.push_back(motion(r.model, pose, static_cast<int>(j)));
     for (const auto& jm : m) out << fmt::format(",{:.17g},{:.17g}", jm.p.x(), jm.p.y());
@@ -333,7 +355,7 @@ void print_linkage_csv(std::ostream& out, const LinkageReport& r) {
       const double w = *r.speed_rad_s;
       for (const AngularMotion& m : rates.links) out << fmt::format(",{:.17g},{:.17g}", m.omega * w, m.alpha * w * w);
     }
-    if (has_loads(r)) print_statics_row(out, statics.solve(pose));
+    if (has_loads(r)) print_statics_row(out, r.model, statics.solve(pose));
     out << '\n';
   }
 }
@@ -372,6 +394,7 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
                                 {"solver", r.solver.options().solver},
                                 {"driver", driver_column(r.model)},
                                 {"poses", nlohmann::ordered_json::array()}};
+  if (r.model.has_second_driver()) out["second_driver"] = second_driver_column(r.model);
   LinkageStaticsSolver statics(r.model);
   const auto supports = statics_supports(r.model.description());
   for (const auto& pose : r.sweep.poses) {
@@ -386,6 +409,7 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
       transmission[block_joint_names(r.model, r.solver.blocks()[b])] = number(converged(pose) ? pose.transmission_deg[b] : nan);
     }
     out["poses"].push_back({{"driver", pose.driver},
+                            {"second_driver", r.model.has_second_driver() ? number(second_driver_at(r.model, pose)) : nullptr},
                             {"joints", positions},
                             {"velocity", velocities},
                             {"acceleration", accelerations},
@@ -484,8 +508,11 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
       << fmt::format("status             {}\n", to_string(r.status))
       << fmt::format("poses              {}\n", r.sweep.poses.size());
   constexpr std::size_t shown = 8;
-  Table table({driver_word(r.model) + (r.model.crank_driven() ? " (deg)" : ""), "x_" + t, "y_" + t, "|v_" + t + "|", "kappa(J)",
-               "iterations", "||Phi||_inf", "status"});
+  std::vector<std::string> header{driver_word(r.model) + (r.model.crank_driven() ? " (deg)" : ""), "x_" + t, "y_" + t,
+                                  "|v_" + t + "|", "kappa(J)", "iterations", "||Phi||_inf", "status"};
+  const bool two_drivers = r.model.has_second_driver();
+  if (two_drivers) header.insert(header.begin() + 1, second_driver_column(r.model));
+  Table table(header);
   for (std::size_t i = 0; i < r.sweep.poses.size(); ++i) {
     if (r.sweep.poses.size() > shown && i == shown / 2) {
       table.add_row({fmt::format("... ({} more)", r.sweep.poses.size() - shown)});
@@ -493,10 +520,12 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
     }
     const auto& pose = r.sweep.poses[i];
     const JointMotion m = motion(r.model, pose, tracked);
-    table.add_row({fmt::format("{:g}", pose.driver), fmt::format("{:.6f}", m.p.x()), fmt::format("{:.6f}", m.p.y()),
-                   fmt::format("{:.4f}", m.v.norm()), scientific(pose.condition), std::to_string(pose.outcome.iterations),
-                   scientific(pose.outcome.residual_norm),
-                   std::isnan(pose.not_tried_past) ? std::string(to_string(pose.outcome.status)) : "not tried"});
+    std::vector<std::string> row{fmt::format("{:g}", pose.driver), fmt::format("{:.6f}", m.p.x()), fmt::format("{:.6f}", m.p.y()),
+                                 fmt::format("{:.4f}", m.v.norm()), scientific(pose.condition), std::to_string(pose.outcome.iterations),
+                                 scientific(pose.outcome.residual_norm),
+                                 std::isnan(pose.not_tried_past) ? std::string(to_string(pose.outcome.status)) : "not tried"};
+    if (two_drivers) row.insert(row.begin() + 1, fmt::format("{:g}", second_driver_at(r.model, pose)));
+    table.add_row(row);
   }
   table.print(out);
   out << fmt::format("branch             {}\n", r.sweep.branch_kept ? "kept (no block's side changed but at a crossing)"
@@ -534,6 +563,13 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
   out << fmt::format("time               {:.3g} s\n", r.time_s)
       << (r.model.crank_driven() ? "velocities per radian of " + driver_word(r.model) + ", accelerations per radian squared\n"
                                  : "velocities per unit of " + std::string(r.model.driver_kind() == DriverKind::slider ? "slider travel" : "actuator length") + "\n");
+  if (r.model.has_second_driver()) {
+    out << fmt::format("second driver      {} held {}; velocities are the first driver's partial derivatives\n",
+                       second_driver_column(r.model),
+                       r.sweep.poses.empty() || std::isnan(r.sweep.poses.front().second_driver)
+                           ? fmt::format("at {:g} (the file's value)", r.model.second_driver())
+                           : "at each row of the --drivers path");
+  }
 }
 
 }  // namespace numlab::cli

@@ -57,7 +57,7 @@ TEST_CASE("mechanism CSV: one row per crank angle with the documented columns", 
 
 TEST_CASE("mechanism: bad input gets one error line and exit 2", "[cli][mechanism][bad-input]") {
   require_bad_input("mechanism strandbeest --crank 10", "name");
-  require_bad_input("mechanism jansen", "give --crank DEG or --sweep");
+  require_bad_input("mechanism jansen", "give --crank DEG, --sweep START:STOP:STEP or --drivers");
   require_bad_input("mechanism jansen --sweep 0:10", "expected START:STOP:STEP");
   require_bad_input("mechanism jansen --sweep 0:10:-1", "point from START to STOP");
   require_bad_input("mechanism jansen --sweep 0:x:1", "'x' is not a finite number");

@@ -324,8 +324,8 @@ class Reader {
     for_each_table("body", [&](const toml::table& t) { read_body(t); });
     for_each_table("slider", [&](const toml::table& t) { read_slider(t); });
     const toml::node* driver = root_.get("driver");
-    if (driver == nullptr) fail({}, "no [driver] table: a linkage needs exactly one driver");
-    read_driver(table_of(*driver, "[driver]"));
+    if (driver == nullptr) fail({}, "no [driver] table: a linkage needs a driver ([driver]) or two ([[driver]] twice)");
+    read_drivers(*driver);
     check_link_names();
     check_output();
     if (const toml::node* trace = linkage->as_table()->get("trace")) read_trace(*trace);
@@ -428,6 +428,7 @@ class Reader {
       if (section->array_of_tables && !node->is_array_of_tables()) {
         fail(place_of(*key), "write [[" + name + "]], one table per item");
       }
+      if (section->key == "driver" && node->is_array_of_tables()) continue;  // [[driver]]: one or two drivers
       if (!section->array_of_tables && !node->is_table()) fail(place_of(*key), "[" + name + "] must be a table");
     }
   }
@@ -758,8 +759,31 @@ class Reader {
     description_.loads.push_back(spec);
   }
 
-  void read_driver(const toml::table& driver) {
-    DriverSpec& spec = description_.driver;
+  // [driver], or [[driver]] given once or twice: a mechanism of mobility 2 has two inputs.
+  void read_drivers(const toml::node& node) {
+    const toml::array* drivers = node.as_array();
+    if (drivers == nullptr) return read_driver(table_of(node, "[driver]"), description_.driver);
+    if (drivers->size() > 2) {
+      fail(place_of(*drivers->get(2)), "a third [[driver]]: a linkage has one driver or two (" +
+                                           std::to_string(drivers->size()) + " given)");
+    }
+    read_driver(table_of(*drivers->get(0), "[[driver]]"), description_.driver);
+    if (drivers->size() < 2) return;
+    DriverSpec& second = description_.second_driver.emplace();
+    read_driver(table_of(*drivers->get(1), "[[driver]]"), second);
+    if (second.kind == DriverKind::motor) {
+      fail(second.place, "the second [[driver]] is a motor: a held second input may be a crank, a slider or an "
+                         "actuator (list the motor first)");
+    }
+    if (second.joint == description_.driver.joint && second.kind == description_.driver.kind &&
+        second.pivot == description_.driver.pivot && second.from == description_.driver.from) {
+      fail(second.place, "the second [[driver]] drives what the first already drives");
+    }
+  }
+
+  void read_driver(const toml::table& driver, DriverSpec& target) {
+    reading_ = &target;
+    DriverSpec& spec = target;
     spec.place = place_of(driver);
     const toml::node& type_node = required(driver, "type", "[driver]");
     const std::string_view type = string_of(type_node, "the driver's type");
@@ -783,7 +807,7 @@ class Reader {
 
   // An actuator: a driven distance between two joints that no link or body already holds apart.
   void read_actuator(const toml::table& driver) {
-    DriverSpec& spec = description_.driver;
+    DriverSpec& spec = *reading_;
     spec.kind = DriverKind::actuator;
     const toml::node& joints_node = required(driver, "joints", "[driver]");
     const toml::array* joints = joints_node.as_array();
@@ -810,7 +834,7 @@ class Reader {
   // A motor: the angle from pivot -> from to pivot -> joint, the two on different links or bodies
   // that share the pivot.
   void read_motor(const toml::table& driver) {
-    DriverSpec& spec = description_.driver;
+    DriverSpec& spec = *reading_;
     spec.kind = DriverKind::motor;
     const toml::node& pivot_node = required(driver, "pivot", "[driver]");
     spec.pivot = joint_of(pivot_node, "the motor's pivot");
@@ -839,7 +863,7 @@ class Reader {
   }
 
   void read_crank(const toml::table& driver) {
-    DriverSpec& spec = description_.driver;
+    DriverSpec& spec = *reading_;
     spec.kind = DriverKind::crank;
     const toml::node& pivot_node = required(driver, "pivot", "[driver]");
     spec.pivot = joint_of(pivot_node, "the crank's pivot");
@@ -872,7 +896,7 @@ class Reader {
   }
 
   void read_slider_driver(const toml::table& driver) {
-    DriverSpec& spec = description_.driver;
+    DriverSpec& spec = *reading_;
     spec.kind = DriverKind::slider;
     const toml::node& joint_node = required(driver, "joint", "[driver]");
     spec.joint = joint_of(joint_node, "the slider driver's joint");
@@ -897,6 +921,7 @@ class Reader {
   LinkageDescription description_;
   std::map<std::string, int, std::less<>> joint_indices_;  // joint name -> index
   std::map<std::pair<int, int>, int> link_lines_;  // joint pair (smaller index first) -> line of its link
+  DriverSpec* reading_ = nullptr;  // the driver read_driver is filling in (the first or the second)
 };
 
 }  // namespace

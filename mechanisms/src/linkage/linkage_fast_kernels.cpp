@@ -25,10 +25,10 @@ Eigen::Vector2d rows_of(const LinkageModel& model, const Constraint& c, const Ei
       return p(2) - p(0) - c.coefficients.x() * base - c.coefficients.y() * perp(base);
     }
     case ConstraintKind::slider_line: return {cross(c.direction, p(0) - c.point), 0.0};
-    case ConstraintKind::crank: return p(1) - p(0) - c.length * crank_direction;
-    case ConstraintKind::slider_travel: return {c.direction.dot(p(0) - c.point) - t, 0.0};
+    case ConstraintKind::crank: return p(1) - p(0) - c.length * (c.held ? c.direction : crank_direction);
+    case ConstraintKind::slider_travel: return {c.direction.dot(p(0) - c.point) - (c.held ? c.held_value : t), 0.0};
     case ConstraintKind::slider_on_line: return {line_slot_row(p(0), p(1), p(2), c.offset).value, 0.0};
-    case ConstraintKind::actuator: return {(p(0) - p(1)).norm() - t, 0.0};
+    case ConstraintKind::actuator: return {(p(0) - p(1)).norm() - (c.held ? c.held_value : t), 0.0};
     case ConstraintKind::motor: return {motor_row(p(0), p(1), p(2), t, c.length).value, 0.0};
   }
   return Eigen::Vector2d::Zero();

@@ -186,7 +186,7 @@ LinkageFastSolver::LinkageFastSolver(const LinkageSolver& solver) : solver_(solv
     work_.setZero(n, n);
   }
   for (const Constraint& c : model.constraints()) {
-    if (c.kind == ConstraintKind::crank) crank_ = &c;
+    if (c.kind == ConstraintKind::crank && !c.held) crank_ = &c;
   }
   for (const LinkageBlock& source : solver.blocks()) {
     Block block;

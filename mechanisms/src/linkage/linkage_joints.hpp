@@ -51,7 +51,7 @@ inline Eigen::Vector2d foot_on_line(const Constraint& line, const Eigen::Vector2
 // (cos, sin)(t + offset) of the model's driving crank; zero when no crank drives.
 inline Eigen::Vector2d crank_direction(const LinkageModel& model, double t) {
   for (const Constraint& c : model.constraints()) {
-    if (c.kind == ConstraintKind::crank) return {std::cos(t + c.offset), std::sin(t + c.offset)};
+    if (c.kind == ConstraintKind::crank && !c.held) return {std::cos(t + c.offset), std::sin(t + c.offset)};
   }
   return Eigen::Vector2d::Zero();
 }

@@ -1,6 +1,7 @@
 #include "numlab/mechanisms/linkage/linkage_model.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <type_traits>
 
@@ -52,21 +53,29 @@ bool driven_pair(const DriverSpec& driver, int i, int j) {
          ((i == driver.pivot && j == driver.joint) || (i == driver.joint && j == driver.pivot));
 }
 
+// The crank (first or second driver) that drives joints i and j, or nullptr.
+const DriverSpec* crank_of_pair(const LinkageDescription& d, int i, int j) {
+  for (const DriverSpec* driver : drivers_of(d)) {
+    if (driven_pair(*driver, i, j)) return driver;
+  }
+  return nullptr;
+}
+
 // A body's constraints: its base pair's distance (the crank's pair when the crank turns this body:
 // then the crank holds that distance), then each further joint placed by the base pair. `pair`:
 // the base pair's indices into the body's joints.
 std::vector<Constraint> body_constraints(const LinkageDescription& d, int index, std::array<int, 2> pair) {
   const BodySpec& body = d.bodies[static_cast<std::size_t>(index)];
-  const DriverSpec& driver = d.driver;
   std::size_t b0 = static_cast<std::size_t>(pair[0]), b1 = static_cast<std::size_t>(pair[1]);
   for (std::size_t i = 0; i < body.joints.size(); ++i) {
     for (std::size_t k = 0; k < body.joints.size(); ++k) {
-      if (i != k && driven_pair(driver, body.joints[i], body.joints[k]) && body.joints[i] == driver.pivot) b0 = i, b1 = k;
+      const DriverSpec* crank = i == k ? nullptr : crank_of_pair(d, body.joints[i], body.joints[k]);
+      if (crank != nullptr && body.joints[i] == crank->pivot) b0 = i, b1 = k;
     }
   }
   std::vector<Constraint> out;
   const int j0 = body.joints[b0], j1 = body.joints[b1];
-  if (!driven_pair(driver, j0, j1)) {
+  if (crank_of_pair(d, j0, j1) == nullptr) {
     Constraint c;
     c.kind = ConstraintKind::distance;
     c.joints = {j0, j1, -1};
@@ -93,14 +102,13 @@ std::vector<Constraint> body_constraints(const LinkageDescription& d, int index,
 
 // The driver's constraint: the crank's joint on its circle at angle t, the slider's joint at travel
 // t along its line, the actuator's joints t apart, or the motor's two links at angle t.
-Constraint driver_constraint(const LinkageDescription& d) {
-  const DriverSpec& driver = d.driver;
+Constraint driver_constraint(const LinkageDescription& d, const DriverSpec& driver) {
   Constraint c;
   c.kind = driver.kind == DriverKind::crank ? ConstraintKind::crank : ConstraintKind::slider_travel;
   c.place = driver.place;
   if (driver.kind == DriverKind::crank) {
     c.joints = {driver.pivot, driver.joint, -1};
-    c.length = crank_radius(d);
+    c.length = crank_radius(d, driver);
     c.name = "crank " + pair_name(d, driver.pivot, driver.joint);
   } else if (driver.kind == DriverKind::actuator) {
     c.kind = ConstraintKind::actuator;
@@ -135,7 +143,7 @@ void LinkageModel::derive() {
   }
   // 1. Links: one distance each, but the crank's own link is the driver's.
   for (const LinkSpec& link : d.links) {
-    if (driven_pair(d.driver, link.first, link.second)) continue;
+    if (crank_of_pair(d, link.first, link.second) != nullptr) continue;
     Constraint c;
     c.kind = ConstraintKind::distance;
     c.joints = {link.first, link.second, -1};
@@ -170,8 +178,15 @@ void LinkageModel::derive() {
     c.place = slider.place;
     add(std::move(c));
   }
-  // 4. The driver.
-  add(driver_constraint(d));
+  // 4. The driver, then the second driver's constraint holding its reference value.
+  add(driver_constraint(d, d.driver));
+  if (d.second_driver) {
+    Constraint c = driver_constraint(d, *d.second_driver);
+    c.held = true;
+    c.name = "held " + c.name;
+    add(std::move(c));
+    hold_second_driver(d.second_driver->reference);
+  }
 }
 
 std::string LinkageModel::row_name(int row) const {
@@ -188,6 +203,32 @@ std::string LinkageModel::column_name(int column) const {
 
 double LinkageModel::driver_from_user(double value) const {
   return crank_driven() ? value * std::numbers::pi / 180.0 : value;
+}
+
+double LinkageModel::second_driver() const {
+  for (const Constraint& c : constraints_) {
+    if (c.held) return description_.second_driver->angle() ? c.held_value * 180.0 / std::numbers::pi : c.held_value;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+void LinkageModel::hold_second_driver(double user_value) {
+  for (Constraint& c : constraints_) {
+    if (!c.held) continue;
+    c.held_value = description_.second_driver->angle() ? user_value * std::numbers::pi / 180.0 : user_value;
+    if (c.kind == ConstraintKind::crank) c.direction = unit(c.held_value + c.offset);
+  }
+}
+
+void LinkageModel::second_driver_derivative(double user_value, Eigen::VectorXd& phi_s) const {
+  phi_s.setZero(equation_count_);
+  const double s = std::isnan(user_value) ? second_driver() : user_value;
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const Constraint& c = constraints_[k];
+    if (!c.held) continue;
+    if (c.kind == ConstraintKind::crank) phi_s.segment<2>(first_row_[k]) = -c.length * perp(unit(s * std::numbers::pi / 180.0 + c.offset));
+    if (c.kind == ConstraintKind::slider_travel || c.kind == ConstraintKind::actuator) phi_s(first_row_[k]) = -1.0;
+  }
 }
 
 double LinkageModel::driver_to_user(double value) const {
@@ -258,16 +299,16 @@ void LinkageModel::residual(const Eigen::VectorXd& q, double t, Eigen::VectorXd&
         break;
       }
       case ConstraintKind::crank:
-        f.segment<2>(row) = p(c.joints[1]) - p(c.joints[0]) - c.length * unit(t + c.offset);
+        f.segment<2>(row) = p(c.joints[1]) - p(c.joints[0]) - c.length * (c.held ? c.direction : unit(t + c.offset));
         break;
       case ConstraintKind::slider_travel:
-        f(row) = c.direction.dot(p(c.joints[0]) - c.point) - t;
+        f(row) = c.direction.dot(p(c.joints[0]) - c.point) - (c.held ? c.held_value : t);
         break;
       case ConstraintKind::slider_on_line:
         f(row) = detail::line_slot_row(p(c.joints[0]), p(c.joints[1]), p(c.joints[2]), c.offset).value;
         break;
       case ConstraintKind::actuator:
-        f(row) = (p(c.joints[0]) - p(c.joints[1])).norm() - t;
+        f(row) = (p(c.joints[0]) - p(c.joints[1])).norm() - (c.held ? c.held_value : t);
         break;
       case ConstraintKind::motor:
         f(row) = detail::motor_row(p(c.joints[0]), p(c.joints[1]), p(c.joints[2]), t, c.length).value;
@@ -366,6 +407,7 @@ void LinkageModel::driver_derivative(const Eigen::VectorXd& q, double t, Eigen::
   phi_t.setZero(equation_count_);
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const Constraint& c = constraints_[k];
+    if (c.held) continue;  // the second driver's value does not move with t
     if (c.kind == ConstraintKind::crank) phi_t.segment<2>(first_row_[k]) = -c.length * perp(unit(t + c.offset));
     if (c.kind == ConstraintKind::slider_travel || c.kind == ConstraintKind::actuator) phi_t(first_row_[k]) = -1.0;
     if (c.kind == ConstraintKind::motor) {
@@ -389,7 +431,7 @@ void LinkageModel::acceleration_rhs(const Eigen::VectorXd& q, const Eigen::Vecto
     const auto [a, b, e] = c.joints;
     if (c.kind == ConstraintKind::distance) {
       gamma(row) = -(velocity(a) - velocity(b)).squaredNorm() / c.length;
-    } else if (c.kind == ConstraintKind::crank) {
+    } else if (c.kind == ConstraintKind::crank && !c.held) {
       gamma.segment<2>(row) = -c.length * unit(t + c.offset);
     } else if (c.kind == ConstraintKind::slider_on_line) {
       gamma(row) = -detail::line_slot_second(p(a), p(b), p(e), velocity(a), velocity(b), velocity(e));

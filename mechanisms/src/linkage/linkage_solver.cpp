@@ -240,7 +240,7 @@ bool detail::place_block(const LinkageModel& model, const LinkageBlock& block, d
   const Constraint& c = model.constraints()[static_cast<std::size_t>(block.constraints[0])];
   switch (block.kind) {
     case BlockKind::crank:  // 1. p_A = p_O + r u(t)
-      set_joint(model, q, joint, at(c.joints[0]) + c.length * crank_direction);
+      set_joint(model, q, joint, at(c.joints[0]) + c.length * (c.held ? c.direction : crank_direction));
       break;
     case BlockKind::body_point: {  // 2. p_c = p_b0 + a base + b perp(base)
       const Eigen::Vector2d base = at(c.joints[1]) - at(c.joints[0]);
@@ -249,7 +249,7 @@ bool detail::place_block(const LinkageModel& model, const LinkageBlock& block, d
     }
     case BlockKind::slider: {  // 3. p = P + s u
       const Constraint& line = c.kind == ConstraintKind::slider_travel ? c : model.constraints()[static_cast<std::size_t>(block.constraints[1])];
-      set_joint(model, q, joint, line.point + t * line.direction);
+      set_joint(model, q, joint, line.point + (line.held ? line.held_value : t) * line.direction);
       break;
     }
     case BlockKind::circle_circle: {  // 4. two circles meet: the point nearer the start's (continuation)

@@ -107,6 +107,7 @@ const LinkageStatics& LinkageStaticsSolver::solve(const LinkagePose& pose) {
   const auto unbounded = [&](StaticsStatus status) -> const LinkageStatics& {
     result_.status = status;
     result_.driver = status == StaticsStatus::singular ? inf : std::numeric_limits<double>::quiet_NaN();
+    result_.second_driver = model_.has_second_driver() ? result_.driver : 0.0;
     for (Eigen::Vector2d& r : result_.reactions) r.setConstant(result_.driver);
     return result_;
   };
@@ -131,6 +132,10 @@ const LinkageStatics& LinkageStaticsSolver::solve(const LinkagePose& pose) {
   // 3. The driver's load: lambda . Phi_t.
   model_.driver_derivative(pose.q, t, phi_t_);
   result_.driver = lambda_.dot(phi_t_);
+  if (model_.has_second_driver()) {  // the second driver's, from its own column of d Phi / d (drivers)
+    model_.second_driver_derivative(pose.second_driver, phi_t_);
+    result_.second_driver = lambda_.dot(phi_t_);
+  }
   // 4. The reactions.
   model_.multiplier_forces(pose.q, t, lambda_, constraint_);
   for (std::size_t s = 0; s < supports_.size(); ++s) {

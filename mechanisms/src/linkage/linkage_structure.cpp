@@ -31,8 +31,12 @@ Mobility gruebler_kutzbach(const LinkageDescription& d) {
   }
   for (const SliderSpec& slider : d.sliders) ++members_at[static_cast<std::size_t>(slider.joint)];
   // An actuator is two members, its cylinder pinned at one joint and its rod at the other.
-  const int actuators = d.driver.kind == DriverKind::actuator ? 1 : 0;
-  if (actuators > 0) ++members_at[static_cast<std::size_t>(d.driver.from)], ++members_at[static_cast<std::size_t>(d.driver.joint)];
+  int actuators = 0;
+  for (const DriverSpec* driver : drivers_of(d)) {
+    if (driver->kind != DriverKind::actuator) continue;
+    ++actuators;
+    ++members_at[static_cast<std::size_t>(driver->from)], ++members_at[static_cast<std::size_t>(driver->joint)];
+  }
   Mobility m;
   m.members = 1 + static_cast<int>(d.links.size() + d.bodies.size() + d.sliders.size()) + 2 * actuators;
   for (int k : members_at) m.lower_pairs += std::max(k - 1, 0);
@@ -55,9 +59,17 @@ double held_distance(const LinkageDescription& d, int a, int b) {
   return -1.0;
 }
 
-double crank_radius(const LinkageDescription& d) {
-  if (const double radius = held_distance(d, d.driver.pivot, d.driver.joint); radius > 0.0) return radius;
-  throw LinkageFileError(d.file, d.driver.place, "the crank's joint is not on a link or body with its pivot");
+double crank_radius(const LinkageDescription& d) { return crank_radius(d, d.driver); }
+
+double crank_radius(const LinkageDescription& d, const DriverSpec& driver) {
+  if (const double radius = held_distance(d, driver.pivot, driver.joint); radius > 0.0) return radius;
+  throw LinkageFileError(d.file, driver.place, "the crank's joint is not on a link or body with its pivot");
+}
+
+std::vector<const DriverSpec*> drivers_of(const LinkageDescription& d) {
+  std::vector<const DriverSpec*> drivers{&d.driver};
+  if (d.second_driver) drivers.push_back(&*d.second_driver);
+  return drivers;
 }
 
 namespace {
@@ -313,13 +325,14 @@ void require_one_degree_of_freedom(const LinkageModel& model) {
   const LinkageDescription& d = model.description();
   const Mobility mobility = gruebler_kutzbach(d);
   const StructuralProblem problem = structural_problem(model);
-  const std::string mobility_text =
-      fmt::format("mobility {} (Gruebler-Kutzbach {}), one driver needs 1", mobility.mobility, mobility.formula());
+  const int inputs = d.second_driver ? 2 : 1;
+  const std::string mobility_text = fmt::format("mobility {} (Gruebler-Kutzbach {}), {} {}", mobility.mobility,
+                                                mobility.formula(), inputs == 1 ? "one driver needs" : "two drivers need", inputs);
   if (!problem.text.empty()) {
     throw LinkageFileError(d.file, problem.place,
-                           problem.text + (mobility.mobility == 1 ? "" : "; " + mobility_text));
+                           problem.text + (mobility.mobility == inputs ? "" : "; " + mobility_text));
   }
-  if (mobility.mobility != 1) throw LinkageFileError(d.file, {}, mobility_text);
+  if (mobility.mobility != inputs) throw LinkageFileError(d.file, {}, mobility_text);
 }
 
 }  // namespace numlab::mechanisms

@@ -63,6 +63,9 @@ def filled_in(starter):
     return text[:start] + body + text[end:]
 
 
+TWO_DRIVERS = {"five-bar"}
+
+
 def shipped_models(numlab, models_dir, work):
     names = sorted(os.path.splitext(os.path.basename(path))[0] for path in glob.glob(os.path.join(models_dir, "*.toml")))
     if len(names) < 10:
@@ -70,6 +73,11 @@ def shipped_models(numlab, models_dir, work):
     for name in names:
         folder = os.path.join(work, "starters", name)
         done = run([numlab, "exercise", "init", "linkage", folder, "--model", name])
+        if name in TWO_DRIVERS:  # refused: a request gives one driver value
+            if done.returncode != 2 or "has two drivers" not in done.stderr or os.path.exists(folder):
+                fail(f"init --model {name}: a two-driver model must be refused (exit 2, nothing written): "
+                     f"exit {done.returncode}: {done.stderr}")
+            continue
         if done.returncode != 0:
             fail(f"init --model {name}: exit {done.returncode}: {done.stderr}")
             continue

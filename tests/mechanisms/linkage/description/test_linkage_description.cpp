@@ -405,7 +405,7 @@ TEST_CASE("Linkage files: sliders", "[linkage-file][bad-input]") {
 }
 
 TEST_CASE("Linkage files: the driver", "[linkage-file][bad-input]") {
-  check_refused_without_place(head, "no [driver] table: a linkage needs exactly one driver");
+  check_refused_without_place(head, "no [driver] table: a linkage needs a driver ([driver]) or two ([[driver]] twice)");
   const auto driver = [](std::initializer_list<std::string> keys) { return head + lines({"[driver]"}) + lines(keys); };
   check_refused(driver({"type = \"rotor\""}), 15, 8,
                 "unknown driver type 'rotor': use \"crank\", \"slider\", \"actuator\" or \"motor\"");

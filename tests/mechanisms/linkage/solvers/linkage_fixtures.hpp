@@ -33,10 +33,14 @@ struct DescriptionBuilder {
     d.sliders.push_back({joint, Eigen::Vector2d(x, y), angle_deg, {80 + static_cast<int>(d.sliders.size()), 1}});
   }
   void crank(int pivot, int joint, double angle_deg) {
-    d.driver = {DriverKind::crank, pivot, joint, -1, angle_deg, {90, 1}};
+    d.driver = {.kind = DriverKind::crank, .pivot = pivot, .joint = joint, .reference = angle_deg, .place = {90, 1}};
   }
   void slider_driver(int slider, double travel) {
-    d.driver = {DriverKind::slider, -1, d.sliders[static_cast<std::size_t>(slider)].joint, slider, travel, {90, 1}};
+    d.driver = {.kind = DriverKind::slider,
+                .joint = d.sliders[static_cast<std::size_t>(slider)].joint,
+                .slider = slider,
+                .reference = travel,
+                .place = {90, 1}};
   }
 };
 

@@ -7,6 +7,7 @@
 // structure, a pose that does not assemble) can still be reported as FILE:LINE:COLUMN.
 
 #include <Eigen/Core>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -109,6 +110,9 @@ struct LinkageDescription {
   std::vector<BodySpec> bodies;
   std::vector<SliderSpec> sliders;
   DriverSpec driver;
+  // A second input ([[driver]] twice: mobility 2, a five-bar). A sweep moves `driver` with this one
+  // held at its reference (or at each row's value of a --drivers path). A crank, slider or actuator.
+  std::optional<DriverSpec> second_driver;
   std::vector<LoadSpec> loads;              // [[load]], in file order
   double gravity = standard_gravity;        // [linkage] gravity, m/s^2 along -y (masses only)
   std::vector<int> trace;                   // [linkage] trace: moving joints whose paths --svg highlights

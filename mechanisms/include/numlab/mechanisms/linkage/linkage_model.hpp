@@ -45,6 +45,11 @@ struct Constraint {
   double offset = 0.0;                    // crank: radians added to the driver's angle; slider_on_line: e
   std::string name;                       // for messages and --explain: "link O-A", "body coupler: P"
   int body = -1;                          // the [[body]] whose rows these are (index), or -1
+  // The second driver's constraint (crank, slider_travel or actuator) holds its own value instead of
+  // the swept t: `held_value` in model units (radians or length); a held crank's unit direction
+  // (cos, sin)(held_value + offset) is kept in `direction`.
+  bool held = false;
+  double held_value = 0.0;
   SourcePlace place;                      // where the file states the item it comes from
 
   int rows() const { return kind == ConstraintKind::body_point || kind == ConstraintKind::crank ? 2 : 1; }
@@ -84,6 +89,17 @@ class LinkageModel {
   // Whether the driver is an angle (a crank or a motor: degrees, periodic), not a length.
   bool crank_driven() const { return description_.driver.angle(); }
   DriverKind driver_kind() const { return description_.driver.kind; }
+
+  // The second driver (a file with two, mobility 2): its value in the user's units (degrees for a
+  // crank, length otherwise), held while the first driver sweeps; the file's reference until
+  // hold_second_driver changes it. NaN when there is no second driver.
+  bool has_second_driver() const { return description_.second_driver.has_value(); }
+  double second_driver() const;
+  void hold_second_driver(double user_value);
+  // d Phi / d s for the second driver at `user_value` (degrees or length; NaN: the value held now):
+  // nonzero only on its rows. With it the second driver's load is lambda . phi_s, as the first's is
+  // lambda . Phi_t (linkage_statics.hpp).
+  void second_driver_derivative(double user_value, Eigen::VectorXd& phi_s) const;
 
   // Positions <-> unknowns.
   JointPositions positions(const Eigen::VectorXd& q) const;

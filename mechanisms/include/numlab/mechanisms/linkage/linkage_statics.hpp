@@ -55,6 +55,8 @@ struct LinkageStatics {
   StaticsStatus status = StaticsStatus::no_pose;
   double driver = 0.0;                      // crank, motor: torque (CCW +); slider: force along the line;
                                             // actuator: force (+ pushing apart)
+  double second_driver = 0.0;               // a second driver's load (lambda . d Phi / d s), the same
+                                            // units and signs; 0 when there is none
   std::vector<Eigen::Vector2d> reactions;   // one per statics_supports() entry
 };
 

@@ -35,6 +35,9 @@ Mobility gruebler_kutzbach(const LinkageDescription& description);
 // The pivot-to-joint distance the crank keeps, from its link or body. Throws LinkageFileError when
 // no link or body holds both (the reader checks this too).
 double crank_radius(const LinkageDescription& description);
+double crank_radius(const LinkageDescription& description, const DriverSpec& crank);
+// The drivers: the first, then the second when the file has two.
+std::vector<const DriverSpec*> drivers_of(const LinkageDescription& description);
 // The distance a [[link]] or [[body]] holds between joints a and b, or -1 when none holds both.
 double held_distance(const LinkageDescription& description, int a, int b);
 
@@ -46,7 +49,8 @@ struct StructuralProblem {
 StructuralProblem structural_problem(const LinkageModel& model);
 
 // Throws LinkageFileError "FILE:LINE:COL: <structural problem>; mobility M (...), one driver needs 1"
-// unless M = 1 and the pattern has a perfect matching.
+// unless M equals the number of drivers (1, or 2 with a second driver) and the pattern has a perfect
+// matching.
 void require_one_degree_of_freedom(const LinkageModel& model);
 
 }  // namespace numlab::mechanisms

@@ -24,6 +24,8 @@ namespace numlab::mechanisms {
 
 struct LinkagePose {
   double driver = 0.0;                // user units: degrees of crank, or slider travel
+  double second_driver = std::numeric_limits<double>::quiet_NaN();  // a driver path's second driver (user
+                                      // units); NaN in a sweep, which holds it at LinkageModel::second_driver()
   Eigen::VectorXd q;                  // the unknowns (moving joints' x, y)
   Eigen::VectorXd velocity;           // dq/dt; empty when the pose did not converge
   Eigen::VectorXd acceleration;       // d2q/dt2
