@@ -15,6 +15,7 @@
 #include <random>
 
 #include "constraint_mechanisms.hpp"
+#include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 
@@ -193,5 +194,25 @@ TEST_CASE("The new rows' J, Phi_t and gamma agree with differences, on and off t
     Eigen::VectorXd off = q;
     for (Eigen::Index k = 0; k < off.size(); ++k) off(k) += uniform(random);
     check_derivatives_by_differences(model, off, t + 0.2, random);
+  }
+}
+
+TEST_CASE("The output may name a slot's joint: its travel along the slot and that travel's rate", "[linkage][constraints]") {
+  // Offset 0: the block A is on the rocker's line on C's side of B, so its travel along B -> C is
+  // s = |A - B| = sqrt(10 - 6 cos theta), and ds/dtheta = 3 sin theta / s (crank 1, |OB| = 3).
+  const InvertedSliderCrank mechanism{1.0, 0.0};
+  const LinkageModel model(parse_linkage_description(mechanism.text(60.0), "isc.toml"));
+  const auto output = find_output(model.description(), "A");
+  REQUIRE(output);
+  CHECK_FALSE(output->angle());
+  CHECK(output->line_from == model.description().joint_index("B"));
+  const auto lines = link_lines(model.description());
+  for (double degrees = 60.0; degrees < 420.0; degrees += 15.0) {
+    INFO("crank " << degrees);
+    const double t = degrees * deg;
+    const Eigen::VectorXd q = polish(model, t, closed_unknowns(model, [&](double s) { return mechanism.at(s); }, t));
+    const Eigen::VectorXd velocity = linkage_velocity(model, t, q);
+    const double s = std::sqrt(10.0 - 6.0 * std::cos(t));
+    CHECK(output_rate(*output, lines, joint_motions(model, q, velocity, {})) == Approx(3.0 * std::sin(t) / s).margin(1e-12));
   }
 }
