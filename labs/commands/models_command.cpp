@@ -33,7 +33,9 @@ ModelEntry describe(const fs::path& file) {
   const auto blocks = mechanisms::linkage_blocks(model);
   ModelEntry entry{file.stem().string(), model.description().title, file.string(), "", "", 0, model.unknown_count(), 0};
   entry.joints = static_cast<int>(model.description().joints.size());
-  entry.driver = model.crank_driven() ? "crank" : "slider";
+  constexpr const char* kinds_of_driver[] = {"crank", "slider", "actuator", "motor"};  // DriverKind's order
+  entry.driver = kinds_of_driver[static_cast<int>(model.description().driver.kind)];
+  if (const auto& second = model.description().second_driver) entry.driver += std::string("+") + kinds_of_driver[static_cast<int>(second->kind)];
   std::vector<std::string> kinds;
   for (const auto& block : blocks) {
     if (!block.closed_form()) ++entry.newton_blocks;

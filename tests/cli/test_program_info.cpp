@@ -117,7 +117,7 @@ TEST_CASE("numlab models: a table that fits 80 columns, its columns aligned", "[
   CHECK(listing.header.starts_with("  name "));
   for (const char* numbers : {"joints", "unknowns", "driver"}) check_right_aligned(listing, numbers);
   for (const char* model : {"chebyshev", "four-bar", "isosceles-slider-crank", "mustang", "stephenson-iii", "watt-i",
-                            "inverted-slider-crank", "whitworth", "hydraulic-boom", "watt-straight-line"}) {
+                            "inverted-slider-crank", "whitworth", "hydraulic-boom", "watt-straight-line", "five-bar"}) {
     CHECK_THAT(listing.out, Contains(std::string("\n  ") + model + " "));
   }
   // The title and the blocks of the widest row, wrapped but whole.

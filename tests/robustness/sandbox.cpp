@@ -82,9 +82,6 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
   const std::string body = "\n[[body]]\nname = \"plate\"\njoints = [\"A\", \"B\", \"C\"]\n";
   const std::string triangle_links =
       "\n[[link]]\njoints = [\"A\", \"C\"]\nlength = 1.2\n\n[[link]]\njoints = [\"B\", \"C\"]\nlength = 3.7\n";
-  const std::string body = "\n[[body]]\nname = \"plate\"\njoints = [\"A\", \"B\", \"C\"]\n";
-  const std::string triangle_links =
-      "\n[[link]]\njoints = [\"A\", \"C\"]\nlength = 1.2\n\n[[link]]\njoints = [\"B\", \"C\"]\nlength = 3.7\n";
   return {
       {"lk-four-bar.toml", four_bar()},
       {"lk-syntax.toml", four_bar({{"length = 3.5", "length = = 3.5"}})},
@@ -143,6 +140,7 @@ std::vector<std::pair<std::string, std::string>> linkage_inputs() {
                                 "[[link]]\njoints = [\"O\", \"A\"]\nlength = 1.0\n[[link]]\njoints = [\"A\", \"S\"]\nlength = 2.0\n"
                                 "[[slider]]\njoint = \"S\"\nthrough = [0.0, 0.25]\n[driver]\ntype = \"slider\"\njoint = \"S\"\ntravel = 2.9\n"},
       // Issue 30 §3: loads ([[load]]) and the driving torque; each bad one refused at its place.
+      {"lk-path.csv", "crank_deg,crank2_deg\n90,90\n60,120\n30,100\n"},  // a --drivers path for five-bar
       {"lk-loads.toml", four_bar() + "\n[[load]]\nlink = \"Q-B\"\ntorque = -10.0\n\n[[load]]\njoint = \"B\"\nmass = 2.0\n"},
       {"lk-slider-load.toml", "[linkage]\nname = \"s\"\n[ground]\nO = [0.0, 0.0]\n[joints]\nA = [0.9, 0.5]\nS = [2.9, 0.25]\n"
                               "[[link]]\njoints = [\"O\", \"A\"]\nlength = 1.0\n[[link]]\njoints = [\"A\", \"S\"]\nlength = 2.0\n"

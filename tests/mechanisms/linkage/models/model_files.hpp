@@ -20,7 +20,7 @@ inline const std::vector<std::string>& shipped_model_names() {
   static const std::vector<std::string> names = {"jansen", "mustang", "four-bar", "slider-crank", "klann",
                                                  "chebyshev", "hoeken", "watt-i", "stephenson-iii",
                                                  "inverted-slider-crank", "whitworth", "hydraulic-boom",
-                                                 "watt-straight-line"};
+                                                 "watt-straight-line", "five-bar"};
   return names;
 }
 

@@ -23,17 +23,18 @@ std::vector<double> poses_for(const std::string& name) {
   if (name == "mustang") return {-20.0, 0.0, 30.0};
   if (name == "hydraulic-boom") return {1.2, 1.6, 2.0};  // the cylinder's length, m
   if (name == "watt-straight-line") return {-15.0, 0.0, 15.0};  // a rocker: it swings, it does not turn
+  if (name == "five-bar") return {45.0, 100.0, 150.0};  // the first crank, the second held at 90: P exists for 0 ... 180
   return {0.0, 100.0, 230.0};
 }
 
 }  // namespace
 
-TEST_CASE("Every shipped file: mobility 1, Jacobian and derivatives against finite differences", "[linkage-models]") {
+TEST_CASE("Every shipped file: mobility 1 (2 with two drivers), Jacobian and derivatives against finite differences", "[linkage-models]") {
   for (const std::string& name : shipped_model_names()) {
     INFO(name);
     const LinkageModel model = model_file(name);
     CHECK(model.description().name == name);
-    CHECK(gruebler_kutzbach(model.description()).mobility == 1);
+    CHECK(gruebler_kutzbach(model.description()).mobility == (model.has_second_driver() ? 2 : 1));
     LinkageSolverOptions options{"full", "gepp", {}};
     options.newton.residual_tolerance = 1e-12;
     options.newton.max_iterations = 50;
