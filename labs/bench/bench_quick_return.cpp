@@ -122,7 +122,7 @@ std::vector<QuickReturnBenchRow> bench_quick_return(double tolerance, bool quick
   const int a = model.description().joint_index("A"), b = model.description().joint_index("B"),
             c = model.description().joint_index("C");
   std::vector<QuickReturnBenchRow> rows;
-  for (const std::string solver : {"full", "sequential"}) {
+  for (const std::string solver : {"full", "sequential", "analytic"}) {
     show_progress("bench quick-return: whitworth.toml, " + solver);
     mechanisms::LinkageSolverOptions options{solver, "gepp", {}};
     options.newton.residual_tolerance = tolerance;
@@ -165,7 +165,8 @@ std::vector<QuickReturnBenchRow> bench_quick_return(double tolerance, bool quick
 int run_quick_return_bench(const BenchOptions& common, bool quick) {
   const double tolerance = common.tolerance.value_or(1e-10);
   const std::vector<QuickReturnBenchRow> rows = bench_quick_return(tolerance, quick);
-  const double hand = time_of(rows, "hand-written Newton"), file = time_of(rows, "whitworth.toml, full");
+  const double hand = time_of(rows, "hand-written Newton"), file = time_of(rows, "whitworth.toml, analytic");
+  const double full = time_of(rows, "whitworth.toml, full");
   if (common.format == Format::json) {
     nlohmann::ordered_json out = {{"benchmark", "quick-return"}, {"poses", cycle_poses}, {"tolerance", tolerance},
                                   {"rows", nlohmann::ordered_json::array()}};
@@ -176,7 +177,8 @@ int run_quick_return_bench(const BenchOptions& common, bool quick) {
                              {"error", number_or_null(row.error)},
                              {"iterations", row.iterations}});
     }
-    out["file_within_2x"] = file / hand <= 2.0;
+    out["file_within_2x"] = file / hand <= 2.0;       // the file's blocks in closed form (--solver analytic)
+    out["full_newton_within_2x"] = full / hand <= 2.0;  // Newton on all 6 joint coordinates (--solver full)
     std::cout << out.dump(2) << '\n';
   } else {
     std::cout << fmt::format("The Whitworth quick-return (whitworth.toml), median time per {}-pose crank cycle from its\n"
@@ -190,8 +192,10 @@ int run_quick_return_bench(const BenchOptions& common, bool quick) {
                      fmt::format("{:.2f}", row.time_s / hand), std::to_string(row.iterations), scientific(row.error)});
     }
     table.print(std::cout);
-    std::cout << fmt::format("\nTarget:\n  whitworth.toml (derived, full) vs hand-written Newton:  {:.2f}x slower   (goal <= 2x: {})\n",
-                             file / hand, file / hand <= 2.0 ? "met" : "NOT met");
+    std::cout << fmt::format("\nTarget (the file within 2x of the hand-written solver):\n"
+                             "  whitworth.toml (derived, analytic: its 3 blocks in closed form) vs hand-written Newton:  {:.2f}x   ({})\n"
+                             "  whitworth.toml (derived, full: Newton on 6 coordinates) vs hand-written Newton:         {:.2f}x   ({})\n",
+                             file / hand, file / hand <= 2.0 ? "met" : "NOT met", full / hand, full / hand <= 2.0 ? "met" : "NOT met");
   }
   bool converged = true;
   for (const auto& row : rows) converged = converged && std::isfinite(row.error);

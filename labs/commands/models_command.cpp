@@ -39,7 +39,8 @@ ModelEntry describe(const fs::path& file) {
   std::vector<std::string> kinds;
   for (const auto& block : blocks) {
     if (!block.closed_form()) ++entry.newton_blocks;
-    kinds.push_back(block.closed_form() ? (block.dyad() ? "dyad" : "explicit")
+    kinds.push_back(block.kind == mechanisms::BlockKind::slot_pivot ? "slotted link"
+                    : block.closed_form()                             ? (block.dyad() ? "dyad" : "explicit")
                                         : fmt::format("{}x{} Newton", block.rows_and_columns.unknowns.size(),
                                                       block.rows_and_columns.unknowns.size()));
   }

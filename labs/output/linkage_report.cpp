@@ -312,7 +312,7 @@ void print_explanation(std::ostream& out, const LinkageModel& model, Format form
   for (std::size_t b = 0; b < blocks.size(); ++b) out << fmt::format("  {:>3}. {}\n", b + 1, describe_block(model, blocks[b]));
   out << fmt::format("closed form        {} of {} blocks; {}\n", static_cast<long>(blocks.size()) - newton_blocks,
                      blocks.size(),
-                     newton_blocks == 0 ? "every block is a dyad or explicit: --solver analytic applies"
+                     newton_blocks == 0 ? "every block has a closed form: --solver analytic applies"
                                         : fmt::format("{} need{} Newton: --solver analytic does not apply", newton_blocks, newton_blocks == 1 ? "s" : ""));
 }
 

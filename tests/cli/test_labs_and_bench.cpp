@@ -199,25 +199,28 @@ TEST_CASE("numlab bench jansen measures the textbook paths beside the fast ones"
 TEST_CASE("numlab bench quick-return: whitworth.toml against a hand-written Newton and the closed form, the 2x verdict",
           "[cli][bench]") {
   const auto out = run_json("bench quick-return", "--quick", 0);
-  REQUIRE(out["rows"].size() == 4);
+  REQUIRE(out["rows"].size() == 5);
   std::map<std::string, nlohmann::json> rows;
   for (const auto& row : out["rows"]) rows[row["solver"].get<std::string>()] = row;
   // Every row solves the 360 poses within its residual test (1e-10 x the 450 mm rod): within 1e-6 mm
   // of the closed form (measured 5.8e-10 full, 8.3e-8 sequential, 3.8e-8 hand-written).
-  for (const std::string solver : {"whitworth.toml, full", "whitworth.toml, sequential", "hand-written Newton"}) {
+  for (const std::string solver : {"whitworth.toml, full", "whitworth.toml, sequential", "whitworth.toml, analytic",
+                                    "hand-written Newton"}) {
     INFO(solver);
     REQUIRE(rows.count(solver) == 1);
     REQUIRE(rows[solver]["error"].is_number());
     CHECK(rows[solver]["error"].get<double>() < 1e-6);
-    CHECK(rows[solver]["iterations"].get<int>() >= 300);
+    if (solver != "whitworth.toml, analytic") CHECK(rows[solver]["iterations"].get<int>() >= 300);  // closed form: none
     CHECK(rows[solver]["time_s"].get<double>() > 0.0);
   }
   CHECK(rows["hand-written Newton"]["ratio_to_hand_written"].get<double>() == 1.0);
-  const double ratio = rows["whitworth.toml, full"]["ratio_to_hand_written"].get<double>();
+  const double ratio = rows["whitworth.toml, analytic"]["ratio_to_hand_written"].get<double>();
   CHECK(out["file_within_2x"].get<bool>() == (ratio <= 2.0));
+  const double full = rows["whitworth.toml, full"]["ratio_to_hand_written"].get<double>();
+  CHECK(out["full_newton_within_2x"].get<bool>() == (full <= 2.0));
   const auto text = run_numlab("bench quick-return --quick");
   CHECK(text.exit_code == 0);
-  CHECK_THAT(text.out, Contains("whitworth.toml (derived, full) vs hand-written Newton:"));
+  CHECK_THAT(text.out, Contains("whitworth.toml (derived, analytic: its 3 blocks in closed form) vs hand-written Newton:"));
 }
 
 TEST_CASE("numlab bench with no argument: work-precision rows for every Jansen solver, and every chart",

@@ -15,6 +15,7 @@ std::string_view to_string(BlockKind kind) {
     case BlockKind::circle_circle: return "dyad, closed form (circle-circle)";
     case BlockKind::circle_line: return "dyad, closed form (circle-line)";
     case BlockKind::newton: return "Newton";
+    case BlockKind::slot_pivot: return "slotted link, closed form (through a known joint)";
   }
   return "?";
 }
@@ -29,6 +30,21 @@ int constraint_of_row(const LinkageModel& model, int row) {
   return -1;
 }
 
+// A distance J-K and a slot on the line K-J (either way round) holding a joint A other than J: the
+// block's joint J turns about K with the slot through A (the Whitworth's slotted link).
+bool slot_through_known_joint(const LinkageModel& model, const LinkageBlock& block) {
+  const int joint = block.joints[0];
+  const Constraint* distance = nullptr;
+  const Constraint* slot = nullptr;
+  for (int k : block.constraints) {
+    const Constraint& c = model.constraints()[static_cast<std::size_t>(k)];
+    (c.kind == ConstraintKind::distance ? distance : slot) = &c;
+  }
+  const int centre = distance->joints[0] == joint ? distance->joints[1] : distance->joints[0];
+  const auto [held, from, to] = slot->joints;
+  return held != joint && ((from == centre && to == joint) || (from == joint && to == centre));
+}
+
 BlockKind kind_of(const LinkageModel& model, const LinkageBlock& block) {
   if (block.joints.size() != 1) return BlockKind::newton;
   std::vector<ConstraintKind> kinds;
@@ -40,6 +56,7 @@ BlockKind kind_of(const LinkageModel& model, const LinkageBlock& block) {
   if (kinds == std::vector<K>{K::slider_line, K::slider_travel}) return BlockKind::slider;
   if (kinds == std::vector<K>{K::distance, K::distance}) return BlockKind::circle_circle;
   if (kinds == std::vector<K>{K::distance, K::slider_line}) return BlockKind::circle_line;
+  if (kinds == std::vector<K>{K::distance, K::slider_on_line} && slot_through_known_joint(model, block)) return BlockKind::slot_pivot;
   return BlockKind::newton;
 }
 

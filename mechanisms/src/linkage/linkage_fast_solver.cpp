@@ -326,10 +326,12 @@ LinkageFastOutcome LinkageFastSolver::solve_sequential(double t, Eigen::VectorXd
 // As LinkageSolver::closed_form, in place.
 LinkageFastOutcome LinkageFastSolver::solve_analytic(double t, Eigen::VectorXd& q) {
   LinkageFastOutcome solution;
-  solution.failed_block = detail::closed_form_in_place(solver_.model(), solver_.blocks(), t, q);
+  const Eigen::Vector2d direction = crank_direction(t);  // once, for the blocks and the residual test
+  solution.failed_block = detail::closed_form_in_place(solver_.model(), solver_.blocks(), t, direction, q);
   solution.outcome.status = solution.failed_block < 0 ? Status::converged : Status::cannot_assemble;
   solution.outcome.reason = solution.failed_block < 0 ? StopReason::residual_small : StopReason::running;
-  solution.outcome.residual_norm = whole_residual_norm(q, t);
+  whole_residual(solver_.model(), q, t, direction, f_);
+  solution.outcome.residual_norm = f_.size() == 0 ? 0.0 : f_.lpNorm<Eigen::Infinity>();
   if (solution.failed_block < 0 && !(solution.outcome.residual_norm <= solver_.options().newton.residual_tolerance)) {
     solution.outcome.status = Status::no_progress;
     solution.outcome.reason = StopReason::no_progress;

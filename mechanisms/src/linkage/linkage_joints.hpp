@@ -86,5 +86,8 @@ inline nonlinear::NewtonCounts placed_block_counts(const Eigen::Vector2d& rows, 
 // solutions, the one nearer its joint's place in q) and then the result. Returns the first block
 // that has no closed form or cannot close, or -1. Allocates nothing.
 int closed_form_in_place(const LinkageModel& model, const std::vector<LinkageBlock>& blocks, double t, Eigen::VectorXd& q);
+// The same with the crank's direction at t already at hand (crank_direction above).
+int closed_form_in_place(const LinkageModel& model, const std::vector<LinkageBlock>& blocks, double t,
+                         const Eigen::Vector2d& crank_direction, Eigen::VectorXd& q);
 
 }  // namespace numlab::mechanisms::detail

@@ -224,9 +224,13 @@ LinkageSolution LinkageSolver::closed_form(double t, const Eigen::VectorXd& q0) 
 
 int detail::closed_form_in_place(const LinkageModel& model, const std::vector<LinkageBlock>& blocks, double t,
                                  Eigen::VectorXd& q) {
-  const Eigen::Vector2d crank = crank_direction(model, t);
+  return closed_form_in_place(model, blocks, t, crank_direction(model, t), q);
+}
+
+int detail::closed_form_in_place(const LinkageModel& model, const std::vector<LinkageBlock>& blocks, double t,
+                                 const Eigen::Vector2d& crank_direction, Eigen::VectorXd& q) {
   for (std::size_t b = 0; b < blocks.size(); ++b) {
-    if (!place_block(model, blocks[b], t, crank, q)) return static_cast<int>(b);
+    if (!place_block(model, blocks[b], t, crank_direction, q)) return static_cast<int>(b);
   }
   return -1;
 }
@@ -273,6 +277,23 @@ bool detail::place_block(const LinkageModel& model, const LinkageBlock& block, d
       set_joint(model, q, joint, nearer(foot + along, foot - along, was));
       break;
     }
+    case BlockKind::slot_pivot: {  // 6. a slotted link about K through the known joint A: J = K + L u
+      const auto [distance, slot] = dyad_parts(model, block);
+      const int centre = centre_of(*distance, joint);
+      const Eigen::Vector2d pivot = at(centre), d = at(slot->joints[0]) - pivot;
+      // The slot's offset to the left of K -> J (the file states it from `from` to `to`).
+      const double offset = slot->joints[1] == centre ? slot->offset : -slot->offset;
+      const double rho = d.norm();
+      if (!(rho > 0.0) || !(std::abs(offset) <= rho)) return false;  // no line through K passes A at that offset
+      // u makes the angle alpha with d, sin alpha = offset / rho, cos alpha = +-sqrt(1 - sin^2): A is then
+      // `offset` to the line's left; the two signs are the two solutions.
+      const double sine = offset / rho, cosine = std::sqrt(std::max(0.0, 1.0 - sine * sine));
+      const Eigen::Vector2d d_hat = d / rho, d_perp(d_hat.y(), -d_hat.x());  // d_hat turned by -90 deg
+      const Eigen::Vector2d towards = pivot + distance->length * (cosine * d_hat + sine * d_perp);
+      const Eigen::Vector2d away = pivot + distance->length * (-cosine * d_hat + sine * d_perp);
+      set_joint(model, q, joint, nearer(towards, away, was));
+      break;
+    }
     case BlockKind::newton:
       return false;
   }
@@ -294,6 +315,10 @@ std::vector<int> LinkageSolver::signature(const Eigen::VectorXd& q, double t) co
       const int joint = block.joints[0];
       const Eigen::Vector2d foot = foot_on_line(*line, joint_at(model_, q, centre_of(*circle, joint)));
       out[b] = sign_of((joint_at(model_, q, joint) - foot).dot(line->direction));
+    } else if (block.kind == BlockKind::slot_pivot) {  // the slotted link pointing towards A or away
+      const auto [distance, slot] = dyad_parts(model_, block);
+      const Eigen::Vector2d pivot = joint_at(model_, q, centre_of(*distance, block.joints[0]));
+      out[b] = sign_of((joint_at(model_, q, block.joints[0]) - pivot).dot(joint_at(model_, q, slot->joints[0]) - pivot));
     } else if (block.kind == BlockKind::newton) {
       if (J.size() == 0) model_.jacobian(q, t, J);
       const auto& rc = block.rows_and_columns;

@@ -160,3 +160,57 @@ angle = 60.0
     }
   }
 }
+
+TEST_CASE("The slotted link through a known joint is a closed-form block: analytic poses against the closed form",
+          "[linkage][constraints][closed-form]") {
+  // The inverted slider-crank's rocker C turns about B with the slot through A: one closed-form block
+  // (BlockKind::slot_pivot), written with the slot's line either way round (B -> C or C -> B, the
+  // offset's sign flipped with it), at three offsets and three scales.
+  for (const double e : {0.0, 0.3, -0.4}) {
+    for (const double k : {1e-3, 1.0, 1e3}) {
+      for (const bool reversed : {false, true}) {
+        INFO("offset " << e << ", scale " << k << (reversed ? ", line C -> B" : ""));
+        const InvertedSliderCrank mechanism{k, e};
+        std::string text = mechanism.text(60.0);
+        if (reversed) {
+          text.replace(text.find("line = [\"B\", \"C\"]"), 17, "line = [\"C\", \"B\"]");
+          text.replace(text.find("offset = "), 9, "offset = -");
+          const auto doubled = text.find("offset = --");
+          if (doubled != std::string::npos) text.replace(doubled, 11, "offset = ");
+        }
+        const LinkageModel model(parse_linkage_description(text, "isc.toml"));
+        LinkageSolverOptions options;
+        options.solver = "analytic";
+        const LinkageSolver solver(model, options);
+        REQUIRE(solver.blocks().size() == 2);
+        CHECK(solver.blocks()[1].kind == BlockKind::slot_pivot);
+        const LinkageSweep sweep = linkage_sweep(solver, 60.0, 420.0, 7.5);
+        REQUIRE(sweep.status == Status::converged);
+        CHECK(sweep.branch_kept);
+        for (const LinkagePose& pose : sweep.poses) {
+          const Joints exact = mechanism.at(pose.driver * deg);
+          const auto joints = model.positions(pose.q);
+          const Eigen::Vector2d C = joints[static_cast<std::size_t>(model.description().joint_index("C"))];
+          CHECK((C - exact.at("C")).norm() <= 1e-12 * 5 * k);  // closed form against closed form: rounding
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("The slotted link's closed form where no line through the pivot passes the block at the offset", "[linkage][constraints][closed-form]") {
+  // Offset 2.5 and the block A on a crank of 1 about O, 3 from B: |BA| runs 2 ... 4, so where |BA| < 2.5
+  // no slot line through B is 2.5 from A: the closed form refuses (cannot_assemble), never a NaN.
+  const InvertedSliderCrank mechanism{1.0, 2.5};
+  const LinkageModel model(parse_linkage_description(mechanism.text(90.0), "isc-far.toml"));
+  LinkageSolverOptions options;
+  options.solver = "analytic";
+  const LinkageSolver solver(model, options);
+  REQUIRE(solver.blocks()[1].kind == BlockKind::slot_pivot);
+  const LinkageSolution inside = solver.closed_form(10.0 * deg, solver.reference());  // |BA| = 2.02 < 2.5
+  CHECK(inside.outcome.status == Status::cannot_assemble);
+  CHECK(inside.failed_block == 1);
+  const LinkageSolution outside = solver.closed_form(100.0 * deg, solver.reference());  // |BA| = 3.3
+  REQUIRE(outside.outcome.status == Status::converged);
+  CHECK(outside.q.allFinite());
+}

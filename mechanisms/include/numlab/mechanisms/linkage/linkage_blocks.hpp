@@ -22,7 +22,10 @@
 
 namespace numlab::mechanisms {
 
-enum class BlockKind { crank, body_point, slider, circle_circle, circle_line, newton };
+// slot_pivot: a joint J at distance L from a known joint K, with the line K-J (a slotted link turning
+// about K) passing through a known joint A at the slot's offset: J = K + L u, u the direction at
+// which A sits at that offset from the line (two such directions; the one nearer the start).
+enum class BlockKind { crank, body_point, slider, circle_circle, circle_line, newton, slot_pivot };
 
 std::string_view to_string(BlockKind kind);
 
