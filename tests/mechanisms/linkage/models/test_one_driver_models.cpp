@@ -173,7 +173,9 @@ TEST_CASE("whitworth.toml over a turn against its closed form: joints, slot and 
   CHECK(gruebler_kutzbach(model.description()).mobility == 1);
   const cf::Whitworth m = cf::whitworth_of(model.description());
   const Eigen::Vector2d force = load_force(model.description());  // at the ram C
-  REQUIRE(force.x() == -1500.0);
+  REQUIRE(force.x() == 1500.0);
+  // The cut resists the slow stroke: at crank 90 deg (inside -26.74 ... 206.74) the ram moves to -x.
+  CHECK(force.dot(cf::whitworth(m, cf::pi / 2.0).C.v) < 0.0);
   check_sweeps("whitworth", 0.0, 359.0, 1.0, 360, [&](double t) {
     const cf::WhitworthPose p = cf::whitworth(m, t);
     // Virtual work: tau * 1 + F . C' = 0.
