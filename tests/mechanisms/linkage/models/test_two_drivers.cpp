@@ -1,8 +1,8 @@
 // Two inputs (issue 30 §1): the shipped five-bar (mechanisms/models/five-bar.toml, two cranks of 2 on
 // pivots 4 apart, links of 4 meeting at P) against its closed form, written here from the geometry:
 // A and D on their cranks' circles, P the upper intersection of the circles of radius 4 about them.
-//  - a sweep of the first crank with the second held: P, velocity and acceleration (central
-//    differences of the closed form in the first angle);
+//  - a sweep of the first crank with the second held: P, velocity and acceleration, the links'
+//    angles and their rates (central differences of the closed form in the first angle);
 //  - a --drivers path moving both: P at every row, and the path's second-driver values;
 //  - statics with a force at P: both driver torques by virtual work (tau_k = -F . dP/dt_k, the
 //    closed form's partials by central differences), in units, mm and km;
@@ -17,6 +17,7 @@
 #include "model_files.hpp"
 #include "numlab/linalg/matrix_file.hpp"
 #include "numlab/mechanisms/linkage/driver_path.hpp"
+#include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_statics.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 
@@ -68,6 +69,27 @@ TEST_CASE("five-bar: a sweep of the first crank with the second held, against th
     CHECK((v - v_fd).norm() <= 1e-7 * (1.0 + v.norm()));   // O(h^2) = 1e-8 of the curvature scale
     CHECK((a - a_fd).norm() <= 1e-5 * (1.0 + a.norm()));   // O(eps 4 / h^2) ~ 1e-7 rounding
     CHECK(std::isnan(pose.second_driver));  // a sweep holds the model's value
+    // The links' angles (the CSV's angle_/omega_/alpha_ columns): A-P and D-P against the closed
+    // form's directions and their central differences in t1 (crank1 turns at 1, crank2 not at all).
+    const auto motions = joint_motions(model, pose.q, pose.velocity, pose.acceleration);
+    const auto index = [&](const char* name) { return static_cast<std::size_t>(model.description().joint_index(name)); };
+    const auto direction = [&](double t, int end) {
+      const Eigen::Vector2d from = end == 0 ? Eigen::Vector2d(2.0 * std::cos(t), 2.0 * std::sin(t))
+                                            : Eigen::Vector2d(4.0 + 2.0 * std::cos(t2), 2.0 * std::sin(t2));
+      const Eigen::Vector2d d = five_bar_pen(t, t2) - from;
+      return std::atan2(d.y(), d.x());
+    };
+    for (const int end : {0, 1}) {
+      const AngularMotion link = angular_motion(motions[index(end == 0 ? "A" : "D")], motions[index("P")]);
+      const double omega = std::remainder(direction(t1 + h, end) - direction(t1 - h, end), 2 * pi) / (2 * h);
+      const double alpha = std::remainder(direction(t1 + h, end) - 2 * direction(t1, end) + direction(t1 - h, end), 2 * pi) / (h * h);
+      CHECK(std::abs(std::remainder(link.angle - direction(t1, end), 2 * pi)) <= 1e-9);
+      CHECK(std::abs(link.omega - omega) <= 1e-7 * (1.0 + std::abs(omega)));
+      CHECK(std::abs(link.alpha - alpha) <= 1e-5 * (1.0 + std::abs(alpha)));
+    }
+    const AngularMotion crank2 = angular_motion(motions[index("O2")], motions[index("D")]);
+    CHECK(crank2.angle == Approx(t2).margin(1e-12));
+    CHECK(crank2.omega == Approx(0.0).margin(1e-12));  // held
   }
 }
 
