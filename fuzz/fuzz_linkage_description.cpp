@@ -53,15 +53,37 @@ void check_description(const LinkageDescription& d) {
     require(joint(slider.joint) && !d.joints[static_cast<std::size_t>(slider.joint)].ground, "a slider on a moving joint");
     require(finite(slider.through) && std::isfinite(slider.angle_deg), "a slider's line finite");
   }
-  const DriverSpec& driver = d.driver;
-  require(std::isfinite(driver.reference), "the driver's value finite");
-  require(joint(driver.joint) && !d.joints[static_cast<std::size_t>(driver.joint)].ground, "the driven joint moves");
-  if (driver.kind == DriverKind::crank) {
-    require(joint(driver.pivot) && d.joints[static_cast<std::size_t>(driver.pivot)].ground, "a crank on a ground pivot");
-  } else {
-    require(driver.slider >= 0 && driver.slider < static_cast<int>(d.sliders.size()) &&
-                d.sliders[static_cast<std::size_t>(driver.slider)].joint == driver.joint,
-            "a slider driver on its slider's joint");
+  const auto ground = [&](int index) { return d.joints[static_cast<std::size_t>(index)].ground; };
+  const auto check_driver = [&](const DriverSpec& driver) {
+    require(std::isfinite(driver.reference), "the driver's value finite");
+    require(joint(driver.joint), "the driven joint in range");
+    switch (driver.kind) {
+      case DriverKind::crank:
+        require(!ground(driver.joint), "a crank's joint moves");
+        require(joint(driver.pivot) && ground(driver.pivot), "a crank on a ground pivot");
+        break;
+      case DriverKind::slider:
+        require(!ground(driver.joint), "a slider driver's joint moves");
+        require(driver.slider >= 0 && driver.slider < static_cast<int>(d.sliders.size()) &&
+                    d.sliders[static_cast<std::size_t>(driver.slider)].joint == driver.joint,
+                "a slider driver on its slider's joint");
+        break;
+      case DriverKind::actuator:
+        require(joint(driver.from) && driver.from != driver.joint, "an actuator between two joints");
+        require(!(ground(driver.from) && ground(driver.joint)), "an actuator not between two ground joints");
+        require(driver.reference > 0.0, "an actuator's length positive");
+        break;
+      case DriverKind::motor:
+        require(joint(driver.pivot) && joint(driver.from), "a motor's joints in range");
+        require(driver.from != driver.joint && driver.pivot != driver.from && driver.pivot != driver.joint,
+                "a motor's three joints different");
+        break;
+    }
+  };
+  check_driver(d.driver);
+  if (d.second_driver) {
+    check_driver(*d.second_driver);
+    require(d.second_driver->kind != DriverKind::motor, "a held second driver is not a motor");
   }
 }
 
