@@ -176,23 +176,45 @@ class Page:
 class Browser:
     """Headless Chromium on a DevTools pipe. Use as a context manager; `timeout` bounds each wait (s)."""
 
-    def __init__(self, out_dir, chromium=None, timeout=30.0, width=1100, height=900):
+    def __init__(self, out_dir, chromium=None, timeout=30.0, width=1100, height=900, startup_timeout=120.0,
+                 starts=2):
         self.out_dir = pathlib.Path(out_dir)
         self.out_dir.mkdir(parents=True, exist_ok=True)
         self.timeout = timeout
         self.chromium = chromium or find_chromium()
         if self.chromium is None:
             raise BrowserError("no chromium on PATH (Debian: apt-get install chromium; or set NUMLAB_CHROMIUM)")
+        self.stderr_path = self.out_dir / "chromium-stderr.txt"
+        self.stderr_path.write_bytes(b"")
+        self.process = None
+        # A cold start (the first on a fresh machine reads the whole browser from disk) can take far
+        # longer than one command: the first answer may take `startup_timeout` seconds, and a browser
+        # that gives none is ended and started once more (`starts` tries in all) before the test fails.
+        for attempt in range(1, starts + 1):
+            try:
+                self.start(width, height, startup_timeout)
+                return
+            except BrowserError as error:
+                self.close()
+                if attempt == starts:
+                    raise BrowserError(f"chromium did not start in {starts} tries of {startup_timeout:g} s: {error}; "
+                                       f"its stderr ends: {self.stderr_tail()}") from None
+                print(f"browser.py: chromium start {attempt} of {starts} failed ({error}); starting it again",
+                      flush=True)
+
+    def stderr_tail(self, lines=5):
+        """The last lines chromium wrote on stderr, on one line (for an error message)."""
+        text = self.stderr_path.read_text(errors="replace").strip().splitlines()
+        return " | ".join(text[-lines:]) if text else "(nothing)"
+
+    # 1. Starting and stopping.
+    def start(self, width, height, startup_timeout):
+        """Starts chromium on a fresh profile and waits for its first answer."""
         self.profile = tempfile.mkdtemp(prefix="numlab-chromium-")
         self.next_id = 0
         self.buffer = b""
         self.events = []  # (method, params, session) not yet consumed
         self.pages = {}   # session id -> Page
-        self.process = None
-        self.start(width, height)
-
-    # 1. Starting and stopping.
-    def start(self, width, height):
         to_browser_r, self.to_browser = os.pipe()
         self.from_browser, from_browser_w = os.pipe()
         arguments = [self.chromium, "--headless", "--remote-debugging-pipe", f"--user-data-dir={self.profile}",
@@ -208,14 +230,14 @@ class Browser:
             os.dup2(reads, 3)
             os.dup2(writes, 4)
 
-        self.process = subprocess.Popen(arguments, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                                        stderr=subprocess.PIPE, pass_fds=(3, 4), preexec_fn=pipe_to_fds_3_and_4,
-                                        start_new_session=True)
+        # Its stderr goes straight to a file (appended over restarts): a pipe nobody reads could fill and stall it.
+        with open(self.stderr_path, "ab") as stderr:
+            self.process = subprocess.Popen(arguments, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                                            stderr=stderr, pass_fds=(3, 4), preexec_fn=pipe_to_fds_3_and_4,
+                                            start_new_session=True)
         os.close(to_browser_r)
         os.close(from_browser_w)
-        self.stderr_path = self.out_dir / "chromium-stderr.txt"
-        self.stderr_copy = open(self.stderr_path, "wb")
-        self.send("Target.setDiscoverTargets", {"discover": True})
+        self.send("Target.setDiscoverTargets", {"discover": True}, timeout=startup_timeout)
 
     def close(self):
         """Asks the browser to close, then ends whatever of it is left (the whole group), and removes the profile."""
@@ -233,9 +255,6 @@ class Browser:
                 os.close(fd)
             except OSError:
                 pass
-        self.stderr_copy.write(self.process.stderr.read() or b"")
-        self.stderr_copy.close()
-        self.process.stderr.close()
         self.process = None
         shutil.rmtree(self.profile, ignore_errors=True)
 
@@ -292,7 +311,10 @@ class Browser:
         message = {"id": self.next_id, "method": method, "params": params or {}}
         if session:
             message["sessionId"] = session
-        os.write(self.to_browser, json.dumps(message).encode() + b"\0")
+        try:
+            os.write(self.to_browser, json.dumps(message).encode() + b"\0")
+        except BrokenPipeError:
+            raise BrowserError(f"chromium closed the pipe waiting for {method}'s answer (see {self.stderr_path})") from None
         wanted = self.next_id
         deadline = time.monotonic() + (timeout or self.timeout)
         while True:

@@ -3,9 +3,12 @@
 Usage: test_harness.py OUT_DIR. Checks that keys, a click and a range input reach the page; that an
 uncaught exception and a console.error are reported (a page that throws fails); that with scripts
 off the page shows only its static content; that a screenshot is a PNG; that a wait with nothing
-coming times out; and that no chromium process outlives close() or a timeout.
+coming times out; that a browser that never answers is started twice and then fails with its
+stderr, and one that exits at once is named; and that no chromium process outlives close(), a
+timeout or a failed start.
 """
 
+import os
 import pathlib
 import sys
 
@@ -73,7 +76,35 @@ def main(out_dir):
         browser_ref = browser
     assert browser_ref.process is None
     assert not any(pathlib.Path(f"/proc/{pid}").exists() for pid in [group]), "the browser outlived close()"
-    print("harness: keys, click, range, errors, scripts off, screenshot, timeout and clean-up all work")
+
+    # 6. A browser that never answers: two starts, then one error with its stderr, and nothing left running.
+    silent = out / "silent-chromium"
+    seconds = f"599.{os.getpid()}"  # this run's own: tests running beside it have theirs
+    silent.write_text(f"#!/bin/sh\necho 'silent chromium: started, will not answer' >&2\nexec sleep {seconds}\n")
+    silent.chmod(0o755)
+    expect_error(lambda: Browser(out / "silent", chromium=str(silent), startup_timeout=1.0),
+                 "did not start in 2 tries of 1 s: timeout waiting for Target.setDiscoverTargets's answer; "
+                 "its stderr ends: silent chromium: started, will not answer | silent chromium")
+    assert not sleeping_fakes(seconds), "the silent browser outlived its failed start"
+
+    # 7. A browser that exits at once: the pipe closes, named as such.
+    expect_error(lambda: Browser(out / "gone", chromium="/bin/false", startup_timeout=5.0, starts=1),
+                 "chromium closed the pipe waiting for Target.setDiscoverTargets's answer")
+    print("harness: keys, click, range, errors, scripts off, screenshot, timeout, failed starts and clean-up all work")
+
+
+def sleeping_fakes(seconds):
+    """Pids of the silent fake browser's `sleep SECONDS` still alive (zombies excluded)."""
+    alive = []
+    for entry in pathlib.Path("/proc").iterdir():
+        try:
+            if entry.name.isdigit() and (entry / "cmdline").read_bytes() == f"sleep\0{seconds}\0".encode():
+                stat = (entry / "stat").read_text()
+                if stat[stat.rindex(")") + 2] != "Z":
+                    alive.append(int(entry.name))
+        except OSError:
+            continue
+    return alive
 
 
 if __name__ == "__main__":
