@@ -7,12 +7,18 @@
 #include <optional>
 #include <string>
 
+#include "exercises/detectors/entry_mismatches.hpp"
 #include "exercises/numbers.hpp"
 
 namespace numlab::exercises {
 
 namespace {
 
+using detectors::differing;
+using detectors::Entry;
+using detectors::negated_entries;
+using detectors::swapped_pair;
+using detectors::transposed_within;
 using mechanisms::ConstraintKind;
 using mechanisms::LinkageModel;
 using Evidence = std::optional<std::string>;
@@ -138,36 +144,31 @@ std::vector<Detector> linkage_J_detectors(const LinkageModel& model, const std::
     }
     return true;
   };
-  const auto mismatches = [](const LinkageClosureSample& s, double tolerance) {
-    return ((s.J - s.J_expected).cwiseAbs().array() > tolerance).count();
-  };
   std::vector<Detector> detectors;
   detectors.push_back({"transposed_jacobian", Specificity::exact, [all]() -> Evidence {
                          const bool holds = all([](const LinkageClosureSample& s, double tolerance) {
-                           return s.J.rows() == s.J.cols() &&
-                                  (s.J - s.J_expected.transpose()).cwiseAbs().maxCoeff() <= tolerance;
+                           return transposed_within(s.J, s.J_expected, tolerance).has_value();
                          });
                          if (!holds) return std::nullopt;
                          return std::string("your J is numlab's transposed at every pose: J[i][k] = d f[i] / d q[k], "
                                             "row i for equation i, column k for unknown k");
                        }});
-  detectors.push_back({"transposed_pair", Specificity::exact, [&model, &samples, all, mismatches]() -> Evidence {
+  detectors.push_back({"transposed_pair", Specificity::exact, [&model, &samples, all]() -> Evidence {
+                         // The first entry above the diagonal nearer numlab's mirror entry than its own.
                          const auto& first = samples.front();
-                         int row = -1, col = -1;
-                         for (int i = 0; i < first.J.rows() && row < 0; ++i) {
-                           for (int k = i + 1; k < first.J.cols(); ++k) {
-                             if (std::abs(first.J(i, k) - first.J_expected(i, k)) > 0.0 &&
-                                 std::abs(first.J(i, k) - first.J_expected(k, i)) < std::abs(first.J(i, k) - first.J_expected(i, k))) {
-                               row = i, col = k;
-                               break;
-                             }
+                         std::optional<Entry> pair;
+                         for (const Entry& e : differing(first.J, first.J_expected, 0.0)) {
+                           if (e.col > e.row && e.col < first.J.rows() &&
+                               std::abs(first.J(e.row, e.col) - first.J_expected(e.col, e.row)) <
+                                   std::abs(first.J(e.row, e.col) - first.J_expected(e.row, e.col))) {
+                             pair = e;
+                             break;
                            }
                          }
-                         if (row < 0) return std::nullopt;
+                         if (!pair) return std::nullopt;
+                         const int row = pair->row, col = pair->col;
                          const bool holds = all([&](const LinkageClosureSample& s, double tolerance) {
-                           Eigen::MatrixXd swapped = s.J_expected;
-                           std::swap(swapped(row, col), swapped(col, row));
-                           return (s.J - swapped).cwiseAbs().maxCoeff() <= tolerance && mismatches(s, tolerance) <= 2;
+                           return swapped_pair(s.J, s.J_expected, *pair, tolerance);
                          });
                          if (!holds || first.J.rows() != first.J.cols()) return std::nullopt;
                          return fmt::format("your J[{0}][{1}] and J[{1}][{0}] are swapped at every pose: J[{0}][{1}] "
@@ -177,13 +178,9 @@ std::vector<Detector> linkage_J_detectors(const LinkageModel& model, const std::
   detectors.push_back({"derivative_sign", Specificity::exact, [&model, all]() -> Evidence {
                          int row = -1, col = -1;
                          const bool holds = all([&](const LinkageClosureSample& s, double tolerance) {
-                           for (int i = 0; i < s.J.rows(); ++i) {
-                             for (int k = 0; k < s.J.cols(); ++k) {
-                               if (close(s.J(i, k), s.J_expected(i, k), tolerance)) continue;
-                               if (!close(s.J(i, k), -s.J_expected(i, k), tolerance)) return false;
-                               if (row < 0) row = i, col = k;
-                             }
-                           }
+                           const auto negated = negated_entries(s.J, s.J_expected, tolerance);
+                           if (!negated) return false;
+                           if (row < 0 && !negated->empty()) row = negated->front().row, col = negated->front().col;
                            return true;
                          });
                          if (!holds || row < 0) return std::nullopt;

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <utility>
 
+#include "exercises/detectors/entry_mismatches.hpp"
 #include "exercises/linkage_checks.hpp"
 #include "exercises/numbers.hpp"
 
@@ -15,21 +16,11 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-struct Entry {
-  int row;
-  int col;
-};
-
-// The entries of `got` more than `tolerance` from `expected`.
-std::vector<Entry> differing(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected, double tolerance) {
-  std::vector<Entry> entries;
-  for (int i = 0; i < got.rows(); ++i) {
-    for (int k = 0; k < got.cols(); ++k) {
-      if (std::abs(got(i, k) - expected(i, k)) > tolerance) entries.push_back({i, k});
-    }
-  }
-  return entries;
-}
+using detectors::differing;
+using detectors::Entry;
+using detectors::negated_entries;
+using detectors::swapped_pair;
+using detectors::transposed_within;
 
 std::string entry_text(const JacobianEvidence& e, const Entry& entry) {
   return fmt::format("J[{}][{}] = {} where numlab's is {}", entry.row, entry.col, digits17(e.student(entry.row, entry.col)),
@@ -45,11 +36,11 @@ bool matches(const Eigen::MatrixXd& got, const Eigen::MatrixXd& hypothesis, doub
 
 std::optional<std::string> transposed(const JacobianEvidence& e) {
   if ((e.reference - e.reference.transpose()).cwiseAbs().maxCoeff() <= e.tolerance) return std::nullopt;  // symmetric
-  const double worst = (e.student - e.reference.transpose()).cwiseAbs().maxCoeff();
-  if (worst > e.tolerance) return std::nullopt;
+  const auto worst = transposed_within(e.student, e.reference, e.tolerance);
+  if (!worst) return std::nullopt;
   return fmt::format("your J is numlab's J transposed (J[i][k] equals numlab's J[k][i] to {}; J[0][1] = {} is numlab's "
                      "J[1][0]): row i holds f[i]'s derivatives, J[i][k] = d f[i] / d {} for k = 0",
-                     sci(worst), digits17(e.student(0, 1)), e.angle_name(0));
+                     sci(*worst), digits17(e.student(0, 1)), e.angle_name(0));
 }
 
 // J of a degrees mix-up carries the chain-rule factors (column k times angle k's scale), or not:
@@ -131,9 +122,7 @@ std::optional<std::string> transposed_pair(const JacobianEvidence& e) {
   const auto wrong = differing(e.student, e.reference, e.tolerance);
   if (wrong.size() != 2) return std::nullopt;
   const Entry a = wrong[0], b = wrong[1];
-  if (a.row != b.col || a.col != b.row) return std::nullopt;
-  if (std::abs(e.student(a.row, a.col) - e.reference(b.row, b.col)) > e.tolerance ||
-      std::abs(e.student(b.row, b.col) - e.reference(a.row, a.col)) > e.tolerance) {
+  if (a.row != b.col || a.col != b.row || !swapped_pair(e.student, e.reference, a, e.tolerance)) {
     return std::nullopt;
   }
   return fmt::format("J[{0}][{1}] and J[{1}][{0}] are swapped ({2}, numlab's J[{1}][{0}]; {3}, numlab's J[{0}][{1}]): "
@@ -205,11 +194,11 @@ std::optional<std::string> wrong_angle_column(const JacobianEvidence& e) {
 }
 
 std::optional<std::string> derivative_sign(const JacobianEvidence& e) {
-  const auto wrong = differing(e.student, e.reference, e.tolerance);
-  if (wrong.empty()) return std::nullopt;
+  const auto negated = negated_entries(e.student, e.reference, e.tolerance);
+  if (!negated || negated->empty()) return std::nullopt;
+  const std::vector<Entry>& wrong = *negated;
   std::vector<int> rows;
   for (const Entry& entry : wrong) {
-    if (std::abs(e.student(entry.row, entry.col) + e.reference(entry.row, entry.col)) > e.tolerance) return std::nullopt;
     if (std::find(rows.begin(), rows.end(), entry.row) == rows.end()) rows.push_back(entry.row);
   }
   std::string row_list;
@@ -329,14 +318,10 @@ std::optional<std::string> finite_differences(const JacobianEvidence& e) {
 }
 
 std::optional<std::string> residual_sign(const ResidualEvidence& e) {
-  int wrong = 0, first = -1;
-  for (int i = 0; i < e.student.size(); ++i) {
-    if (std::abs(e.student(i) - e.reference(i)) <= e.tolerance) continue;
-    if (std::abs(e.student(i) + e.reference(i)) > e.tolerance) return std::nullopt;
-    if (first < 0) first = i;
-    ++wrong;
-  }
-  if (wrong == 0) return std::nullopt;
+  const auto negated = negated_entries(e.student, e.reference, e.tolerance);
+  if (!negated || negated->empty()) return std::nullopt;
+  const auto wrong = static_cast<Eigen::Index>(negated->size());
+  const int first = negated->front().row;
   return fmt::format("{} of f has the opposite sign (f[{}] = {} where numlab's is {}): f[i] is the task's equation as "
                      "written, left-hand side minus right-hand side",
                      wrong == e.student.size() ? "every entry" : fmt::format("{} entries", wrong), first,
