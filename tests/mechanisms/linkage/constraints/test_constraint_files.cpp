@@ -5,17 +5,13 @@
 
 #include <string>
 
+#include "description_text.hpp"
 #include "numlab/mechanisms/linkage/linkage_description.hpp"
 
 using namespace numlab::mechanisms;
+using numlab::mechanisms::testing::lines;
 
 namespace {
-
-std::string lines(std::initializer_list<std::string> items) {
-  std::string text;
-  for (const std::string& item : items) text += item + "\n";
-  return text;
-}
 
 // Lines 1-18: an inverted slider-crank's joints and links, and a body B, D, E; the items under test
 // start at line 19.

@@ -7,21 +7,16 @@
 #include <initializer_list>
 #include <string>
 
+#include "description_text.hpp"
 #include "numlab/mechanisms/linkage/linkage_description.hpp"
 
 using namespace numlab::mechanisms;
+using numlab::mechanisms::testing::lines;
 using Catch::Matchers::StartsWith;
 
 namespace {
 
 std::string fixture(const std::string& name) { return std::string(NUMLAB_LINKAGE_FILES) + "/" + name; }
-
-// Lines joined with '\n': the k-th string is line k + 1 of the file.
-std::string lines(std::initializer_list<std::string> items) {
-  std::string text;
-  for (const std::string& item : items) text += item + "\n";
-  return text;
-}
 
 // Lines 1 to 13 of most bad inputs below: a valid start, so that the line under test is line 14 on.
 const std::string head = lines({
