@@ -82,13 +82,31 @@ std::string title_of(const LinkageModel& model) {
   return xml_escaped(d.title.empty() ? d.name : d.title);
 }
 
-std::string driver_text(const LinkageModel& model, double value) {
-  switch (model.description().driver.kind) {
+std::string driver_text(const mechanisms::DriverSpec& driver, double value) {
+  switch (driver.kind) {
     case mechanisms::DriverKind::crank: return fmt::format("crank {:g} deg", value);
     case mechanisms::DriverKind::motor: return fmt::format("motor {:g} deg", value);
     case mechanisms::DriverKind::actuator: return fmt::format("actuator length {:g}", value);
     default: return fmt::format("slider travel {:g}", value);
   }
+}
+std::string driver_text(const LinkageModel& model, double value) { return driver_text(model.description().driver, value); }
+
+// Every driver of the file: the first, and the second of a mechanism of mobility 2. Each is drawn
+// as a driver (crank_colour), whichever it is.
+std::vector<const mechanisms::DriverSpec*> drivers_of(const mechanisms::LinkageDescription& d) {
+  std::vector<const mechanisms::DriverSpec*> drivers{&d.driver};
+  if (d.second_driver) drivers.push_back(&*d.second_driver);
+  return drivers;
+}
+
+// The second driver's value at a pose, for the caption: ", crank 90 deg held" in a sweep (which holds
+// it at the model's value), ", crank 45 deg" on a --drivers path; "" with one driver.
+std::string second_driver_text(const LinkageModel& model, const LinkagePose& pose) {
+  const auto& second = model.description().second_driver;
+  if (!second) return {};
+  const bool held = std::isnan(pose.second_driver);
+  return ", " + driver_text(*second, held ? model.second_driver() : pose.second_driver) + (held ? " held" : "");
 }
 
 std::size_t at(int joint) { return static_cast<std::size_t>(joint); }
@@ -186,12 +204,10 @@ std::vector<Point> ground_pivots(const Scene& scene) {
   return pivots;
 }
 
-// The linkage at frames[first]: bodies, links, slider blocks, joints; with seconds > 0 it moves
-// through every frame.
 // An actuator driver (a hydraulic cylinder from `from` to `joint`): a heavy barrel over the first
 // half of the current length and a thinner rod the whole way, both moving with the two joints.
-std::string actuator(const Scene& scene, std::size_t first, double seconds) {
-  const auto& driver = scene.model.description().driver;
+// `number` is the driver's (1 or 2), in data-driver.
+std::string actuator(const Scene& scene, const mechanisms::DriverSpec& driver, int number, std::size_t first, double seconds) {
   if (driver.kind != mechanisms::DriverKind::actuator) return {};
   const double u = scene.unit;
   auto end = [&](const JointPositions& f, double share) { return Point(f[at(driver.from)] + share * (f[at(driver.joint)] - f[at(driver.from)])); };
@@ -201,8 +217,8 @@ std::string actuator(const Scene& scene, std::size_t first, double seconds) {
     auto y = [&](const JointPositions& f) { return coordinate(-end(f, share).y()); };
     const Point a = scene.frames[first][at(driver.from)], b = end(scene.frames[first], share);
     svg += fmt::format("<line class=\"actuator\" x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"{}\" "
-                       "stroke-width=\"{:.3g}\" stroke-linecap=\"butt\">{}{}{}{}</line>\n",
-                       a.x(), -a.y(), b.x(), -b.y(), share < 1.0 ? crank_colour : "#7b8a8b", (share < 1.0 ? 3.5 : 1.4) * u,
+                       "stroke-width=\"{:.3g}\" stroke-linecap=\"butt\" data-driver=\"{}\">{}{}{}{}</line>\n",
+                       a.x(), -a.y(), b.x(), -b.y(), share < 1.0 ? crank_colour : "#7b8a8b", (share < 1.0 ? 3.5 : 1.4) * u, number,
                        animate(scene, first, seconds, "x1", [&](const JointPositions& f) { return coordinate(f[at(driver.from)].x()); }),
                        animate(scene, first, seconds, "y1", [&](const JointPositions& f) { return coordinate(-f[at(driver.from)].y()); }),
                        animate(scene, first, seconds, "x2", x), animate(scene, first, seconds, "y2", y));
@@ -210,27 +226,69 @@ std::string actuator(const Scene& scene, std::size_t first, double seconds) {
   return svg;
 }
 
+// The number (1 or 2) of the crank or motor that turns the bar or body holding `joints` (its pivot
+// and its joint both among them), or 0.
+int turning_driver(const mechanisms::LinkageDescription& d, const std::vector<int>& joints) {
+  const auto drivers = drivers_of(d);
+  for (std::size_t k = 0; k < drivers.size(); ++k) {
+    const auto& driver = *drivers[k];
+    if (driver.angle() && std::count(joints.begin(), joints.end(), driver.pivot) > 0 &&
+        std::count(joints.begin(), joints.end(), driver.joint) > 0) {
+      return static_cast<int>(k) + 1;
+    }
+  }
+  return 0;
+}
+
+// The number (1 or 2) of the slider driver that moves slider `s`, or 0.
+int sliding_driver(const mechanisms::LinkageDescription& d, std::size_t s) {
+  const auto drivers = drivers_of(d);
+  for (std::size_t k = 0; k < drivers.size(); ++k) {
+    if (drivers[k]->kind == mechanisms::DriverKind::slider && drivers[k]->slider == static_cast<int>(s)) return static_cast<int>(k) + 1;
+  }
+  return 0;
+}
+
+// ` data-driver="N"` on a driver's element, nothing on the others.
+std::string driver_mark(int number) { return number > 0 ? fmt::format(" data-driver=\"{}\"", number) : std::string(); }
+
+// A slot's block turns with its line line_from -> line_to: its SVG angle (clockwise, so minus the
+// model's) at each frame from `first`, once round and back, each within half a turn of the one
+// before, so that SMIL never spins the block the long way between two frames.
+std::string slot_angles(const Scene& scene, const mechanisms::SliderSpec& slider, std::size_t first) {
+  std::string list;
+  double previous = 0.0;
+  for (std::size_t k = 0; k <= scene.frames.size(); ++k) {
+    const JointPositions& f = scene.frames[(first + k) % scene.frames.size()];
+    const Point along = f[at(slider.line_to)] - f[at(slider.line_from)];
+    double angle = 0.0 - std::atan2(along.y(), along.x()) * 180.0 / std::numbers::pi;  // 0, not -0
+    if (k > 0) angle -= 360.0 * std::round((angle - previous) / 360.0);
+    list += fmt::format("{:.6f};", angle);
+    previous = angle;
+  }
+  list.pop_back();
+  return list;
+}
+
+// The linkage at frames[first]: bodies, links, slider blocks, joints; with seconds > 0 it moves
+// through every frame. Every driver is drawn as one: a crank's or motor's bar or body in
+// crank_colour and heavier, a slider driver's block pink, an actuator as a cylinder.
 std::string linkage(const Scene& scene, std::size_t first, double seconds) {
   const auto& d = scene.model.description();
   const auto& now = scene.frames[first];
   const double u = scene.unit;
   auto x_of = [](int j) { return [j](const JointPositions& f) { return coordinate(f[at(j)].x()); }; };
   auto y_of = [](int j) { return [j](const JointPositions& f) { return coordinate(-f[at(j)].y()); }; };
-  const bool crank = scene.model.crank_driven();
-  auto is_crank = [&](int a, int b) {
-    const int pivot = d.driver.pivot, joint = d.driver.joint;
-    return crank && ((a == pivot && b == joint) || (a == joint && b == pivot));
-  };
   std::string svg = ground_svg(ground_pivots(scene), u);
   for (const auto& body : d.bodies) {
-    const bool driven = crank && std::count(body.joints.begin(), body.joints.end(), d.driver.pivot) > 0 &&
-                        std::count(body.joints.begin(), body.joints.end(), d.driver.joint) > 0;
+    const int number = turning_driver(d, body.joints);
+    const bool driven = number > 0;
     int first_end = -1, second_end = -1;
     if (body_on_one_line(body, first_end, second_end)) {  // a bar with points on it: its outer points
       const Point &a = now[at(first_end)], &b = now[at(second_end)];
       svg += fmt::format("<line class=\"body\" x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"{}\" "
-                         "stroke-width=\"{:.3g}\" stroke-linecap=\"round\">{}{}{}{}</line>\n",
-                         a.x(), -a.y(), b.x(), -b.y(), driven ? crank_colour : bar_colour, (driven ? 3.0 : 2.0) * u,
+                         "stroke-width=\"{:.3g}\" stroke-linecap=\"round\"{}>{}{}{}{}</line>\n",
+                         a.x(), -a.y(), b.x(), -b.y(), driven ? crank_colour : bar_colour, (driven ? 3.0 : 2.0) * u, driver_mark(number),
                          animate(scene, first, seconds, "x1", x_of(first_end)), animate(scene, first, seconds, "y1", y_of(first_end)),
                          animate(scene, first, seconds, "x2", x_of(second_end)), animate(scene, first, seconds, "y2", y_of(second_end)));
       continue;
@@ -243,25 +301,35 @@ std::string linkage(const Scene& scene, std::size_t first, double seconds) {
       return list;
     };
     svg += fmt::format("<polygon class=\"body\" points=\"{}\" fill=\"{}\" fill-opacity=\"0.35\" stroke=\"{}\" "
-                       "stroke-width=\"{:.3g}\" stroke-linejoin=\"round\">{}</polygon>\n",
-                       points(now), driven ? "#f1948a" : "#aab7c4", driven ? crank_colour : bar_colour, 1.2 * u,
+                       "stroke-width=\"{:.3g}\" stroke-linejoin=\"round\"{}>{}</polygon>\n",
+                       points(now), driven ? "#f1948a" : "#aab7c4", driven ? crank_colour : bar_colour, 1.2 * u, driver_mark(number),
                        animate(scene, first, seconds, "points", points));
   }
-  for (const auto& link : d.links) {
-    const bool heavy = is_crank(link.first, link.second);
+  std::vector<std::size_t> order;  // the links, the drivers' last (over a link they lie along)
+  for (const bool driving : {false, true}) {
+    for (std::size_t k = 0; k < d.links.size(); ++k) {
+      if ((turning_driver(d, {d.links[k].first, d.links[k].second}) > 0) == driving) order.push_back(k);
+    }
+  }
+  for (const std::size_t k : order) {
+    const auto& link = d.links[k];
+    const int number = turning_driver(d, {link.first, link.second});
+    const bool heavy = number > 0;
     const Point &a = now[at(link.first)], &b = now[at(link.second)];
     svg += fmt::format("<line class=\"link\" x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"{}\" "
-                       "stroke-width=\"{:.3g}\" stroke-linecap=\"round\">{}{}{}{}</line>\n",
-                       a.x(), -a.y(), b.x(), -b.y(), heavy ? crank_colour : bar_colour, (heavy ? 3.0 : 2.0) * u,
+                       "stroke-width=\"{:.3g}\" stroke-linecap=\"round\"{}>{}{}{}{}</line>\n",
+                       a.x(), -a.y(), b.x(), -b.y(), heavy ? crank_colour : bar_colour, (heavy ? 3.0 : 2.0) * u, driver_mark(number),
                        animate(scene, first, seconds, "x1", x_of(link.first)),
                        animate(scene, first, seconds, "y1", y_of(link.first)),
                        animate(scene, first, seconds, "x2", x_of(link.second)),
                        animate(scene, first, seconds, "y2", y_of(link.second)));
   }
-  svg += actuator(scene, first, seconds);
+  const auto drivers = drivers_of(d);
+  for (std::size_t k = 0; k < drivers.size(); ++k) svg += actuator(scene, *drivers[k], static_cast<int>(k) + 1, first, seconds);
   for (std::size_t s = 0; s < d.sliders.size(); ++s) {
     const auto& slider = d.sliders[s];
-    const bool driven = !crank && d.driver.slider == static_cast<int>(s);
+    const int number = sliding_driver(d, s);
+    const bool driven = number > 0;
     const Point& p = now[at(slider.joint)];
     // A block in a slot lies along its link's line B -> C at this pose; on a fixed line, along it.
     const Point along = slider.on_link() ? Point(now[at(slider.line_to)] - now[at(slider.line_from)]) : Point(1.0, 0.0);
@@ -272,11 +340,18 @@ std::string linkage(const Scene& scene, std::size_t first, double seconds) {
                                     "repeatCount=\"indefinite\" values=\"{}\"/>",
                                     seconds, values(scene, first, place))
                       : std::string();
-    svg += fmt::format("<g class=\"slider\" transform=\"translate({:.3f},{:.3f})\">{}<rect x=\"{:.3g}\" y=\"{:.3g}\" "
-                       "width=\"{:.3g}\" height=\"{:.3g}\" transform=\"rotate({:.6g})\" fill=\"{}\" stroke=\"#222\" "
-                       "stroke-width=\"{:.3g}\"/></g>\n",
-                       p.x(), -p.y(), moving, -4.0 * u, -2.5 * u, 8.0 * u, 5.0 * u, -turn_deg,
-                       driven ? "#f1948a" : "#d5dbdb", 0.5 * u);
+    // A block in a slot also turns with its line, frame by frame.
+    const std::string turning =
+        seconds > 0.0 && slider.on_link()
+            ? fmt::format("<animateTransform attributeName=\"transform\" type=\"rotate\" dur=\"{:.3f}s\" "
+                          "repeatCount=\"indefinite\" values=\"{}\"/>",
+                          seconds, slot_angles(scene, slider, first))
+            : std::string();
+    svg += fmt::format("<g class=\"slider\" transform=\"translate({:.3f},{:.3f})\"{}>{}<rect x=\"{:.3g}\" y=\"{:.3g}\" "
+                       "width=\"{:.3g}\" height=\"{:.3g}\" transform=\"rotate({:.6f})\" fill=\"{}\" stroke=\"#222\" "
+                       "stroke-width=\"{:.3g}\">{}</rect></g>\n",
+                       p.x(), -p.y(), driver_mark(number), moving, -4.0 * u, -2.5 * u, 8.0 * u, 5.0 * u, 0.0 - turn_deg,
+                       driven ? "#f1948a" : "#d5dbdb", 0.5 * u, turning);
   }
   for (std::size_t j = 0; j < now.size(); ++j) {
     svg += fmt::format("<circle id=\"joint-{}\" cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3g}\" fill=\"white\" stroke=\"#222\" "
@@ -323,8 +398,9 @@ LabelObstacles label_obstacles(const Scene& scene, const JointPositions& now, co
     }
   }
   obstacles.boxes = ground_boxes(ground_pivots(scene), u);
-  if (d.driver.kind == mechanisms::DriverKind::actuator) {
-    obstacles.segments.push_back({now[at(d.driver.from)], now[at(d.driver.joint)], 1.8 * u, false});
+  for (const mechanisms::DriverSpec* driver : drivers_of(d)) {
+    if (driver->kind != mechanisms::DriverKind::actuator) continue;
+    obstacles.segments.push_back({now[at(driver->from)], now[at(driver->joint)], 1.8 * u, false});
   }
   double side = 0.0;
   for (const auto& frame : scene.frames) {
@@ -475,7 +551,9 @@ std::string linkage_pose_svg(const mechanisms::LinkageModel& model, const mechan
   Frame frame = frame_of(points);
 
   const std::string reason = options.pose_reason.empty() ? "" : " (" + xml_escaped(options.pose_reason) + ")";
-  Caption caption{{fmt::format("{} at {}{}", title_of(model), driver_text(model, sweep.poses[pose].driver), reason)}, scene.unit};
+  Caption caption{{fmt::format("{} at {}{}{}", title_of(model), driver_text(model, sweep.poses[pose].driver),
+                               second_driver_text(model, sweep.poses[pose]), reason)},
+                  scene.unit};
   const DrawnPaths paths = drawn_paths(scene, options);
   std::string drawing = joint_paths(scene, paths);
   caption.lines.push_back(paths_caption(scene, paths, options));
@@ -509,9 +587,13 @@ std::string linkage_animation_svg(const mechanisms::LinkageModel& model, const m
   for (const auto& joints : scene.frames) points.insert(points.end(), joints.begin(), joints.end());
   Frame frame = frame_of(points);
   const auto& first = sweep.poses[scene.sweep_index.front()], &last = sweep.poses[scene.sweep_index.back()];
-  Caption caption{{fmt::format("{}, {} poses from {} to {}", title_of(model), scene.frames.size(),
+  // A sweep holds the second driver (say at what); a --drivers path moves both.
+  const std::string second = !model.has_second_driver() || std::isnan(first.second_driver) ? second_driver_text(model, first)
+                                                                                             : ", both drivers along a path";
+  Caption caption{{fmt::format("{}, {} poses from {} to {}{}", title_of(model), scene.frames.size(),
                                driver_text(model, first.driver), model.crank_driven() ? fmt::format("{:g} deg", last.driver)
-                                                                                      : fmt::format("{:g}", last.driver))},
+                                                                                      : fmt::format("{:g}", last.driver),
+                               second)},
                   scene.unit};
   const DrawnPaths paths = drawn_paths(scene, options);
   std::string drawing = joint_paths(scene, paths);

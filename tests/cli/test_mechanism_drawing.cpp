@@ -147,3 +147,43 @@ TEST_CASE("mechanism --path and the file's trace draw exactly the joints named",
                     "--path Q: a ground joint has no path; name a moving joint (A, B)");
   std::filesystem::remove_all(folder);
 }
+
+TEST_CASE("mechanism --animate turns a slot's block with its line at every frame, as the CSV's joints give it",
+          "[cli][mechanism][drawing]") {
+  const std::string folder = temporary_folder();
+  // The block at A slides in the slot of a turning link: O4-B (Whitworth, which turns fully) and B-C
+  // (the inverted slider-crank's rocker, which rocks).
+  struct Slot {
+    std::string model, from, to;
+  };
+  for (const Slot& slot : {Slot{"whitworth", "O4", "B"}, Slot{"inverted-slider-crank", "B", "C"}}) {
+    INFO(slot.model);
+    const std::string file = folder + "/" + slot.model + ".svg";
+    const ProgramRun run = run_numlab("mechanism " + slot.model + ".toml --sweep 0:355:5 --animate " + file + " --format csv");
+    REQUIRE(run.exit_code == 0);
+    const auto rows = csv_rows(run.out);
+    REQUIRE(rows.size() == 72);
+    for (const auto& row : rows) REQUIRE(row.at("status") == "converged");
+    const std::string svg = read_all(file);
+    std::smatch m;
+    REQUIRE(std::regex_search(svg, m, std::regex("transform=\"rotate\\(([-0-9.]+)\\)\"[^>]*><animateTransform attributeName=\"transform\" "
+                                                 "type=\"rotate\" dur=\"[0-9.]+s\" repeatCount=\"indefinite\" values=\"([^\"]*)\"")));
+    std::vector<double> angles;
+    std::istringstream list(m[2].str());
+    for (std::string value; std::getline(list, value, ';');) angles.push_back(std::stod(value));
+    REQUIRE(angles.size() == rows.size() + 1);  // every pose, then back to the first
+    CHECK(std::stod(m[1]) == angles[0]);        // the still picture is the first frame's
+    // SVG's y runs down: the block's angle is minus the line's, atan2 of from -> to, to the 1e-6 deg
+    // the SVG prints (6 decimals); the next frame within half a turn, so it never spins the long way.
+    for (std::size_t k = 0; k < angles.size(); ++k) {
+      const auto& row = rows[k % rows.size()];
+      const double dx = std::stod(row.at("x_" + slot.to)) - std::stod(row.at("x_" + slot.from));
+      const double dy = std::stod(row.at("y_" + slot.to)) - std::stod(row.at("y_" + slot.from));
+      const double expected = -std::atan2(dy, dx) * 180.0 / 3.14159265358979323846;
+      INFO("frame " << k << ": " << angles[k] << " against " << expected);
+      CHECK(std::abs(std::remainder(angles[k] - expected, 360.0)) <= 1e-6);
+      if (k > 0) CHECK(std::abs(angles[k] - angles[k - 1]) < 180.0);
+    }
+  }
+  std::filesystem::remove_all(folder);
+}

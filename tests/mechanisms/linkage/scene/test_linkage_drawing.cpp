@@ -166,8 +166,13 @@ TEST_CASE("By default the drawn pose is the sweep's best-conditioned pose, for e
     LinkageSceneOptions options;
     options.pose_reason = "the sweep's best-conditioned pose";
     const std::string svg = numlab::cli::linkage_pose_svg(*s.model, s.sweep, *best, options);
-    CHECK(svg.find(fmt::format(" {:g}{} (the sweep's best-conditioned pose)", s.sweep.poses[*best].driver,
-                               s.model->description().driver.angle() ? " deg" : "")) != std::string::npos);
+    // A second driver (the five-bar's crank2) is said held at its value before the reason.
+    const auto& second = s.model->description().second_driver;
+    const std::string held = second ? fmt::format(", {} {:g}{} held", second->kind == DriverKind::crank ? "crank" : "second driver",
+                                                  s.model->second_driver(), second->angle() ? " deg" : "")
+                                    : "";
+    CHECK(svg.find(fmt::format(" {:g}{}{} (the sweep's best-conditioned pose)", s.sweep.poses[*best].driver,
+                               s.model->description().driver.angle() ? " deg" : "", held)) != std::string::npos);
   }
   // The Mustang's sweep from its reference pose meets both assembly limits (-41.4 and 56.5 deg),
   // where J is near singular: the pose drawn is far from both, its kappa well below theirs.
