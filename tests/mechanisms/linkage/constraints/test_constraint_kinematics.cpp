@@ -15,6 +15,7 @@
 #include <random>
 
 #include "constraint_mechanisms.hpp"
+#include "newton_polish.hpp"
 #include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
@@ -23,18 +24,6 @@ using namespace numlab::mechanisms;
 using namespace numlab::mechanisms::testing;
 
 namespace {
-
-// Newton to rounding from q at t.
-Eigen::VectorXd polish(const LinkageModel& model, double t, Eigen::VectorXd q) {
-  Eigen::VectorXd f;
-  Eigen::MatrixXd J;
-  for (int k = 0; k < 8; ++k) {
-    model.residual(q, t, f);
-    model.jacobian(q, t, J);
-    q -= J.partialPivLu().solve(f);
-  }
-  return q;
-}
 
 // The largest distance between the model's joints at q and the closed form's.
 double distance_from(const LinkageModel& model, const Eigen::VectorXd& q, const Joints& closed) {

@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "constraint_mechanisms.hpp"
+#include "newton_polish.hpp"
 #include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_statics.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
@@ -25,17 +26,6 @@ using namespace numlab::mechanisms::testing;
 namespace {
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-Eigen::VectorXd polish(const LinkageModel& model, double t, Eigen::VectorXd q) {
-  Eigen::VectorXd f;
-  Eigen::MatrixXd J;
-  for (int k = 0; k < 8; ++k) {
-    model.residual(q, t, f);
-    model.jacobian(q, t, J);
-    q -= J.partialPivLu().solve(f);
-  }
-  return q;
-}
 
 // A pose at driver t (model units) solved to rounding, with its velocity.
 LinkagePose pose_at(const LinkageSolver& solver, double t, const Eigen::VectorXd& near) {

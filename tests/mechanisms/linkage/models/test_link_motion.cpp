@@ -11,6 +11,7 @@
 #include "closed_forms.hpp"
 #include "four_bar_text.hpp"
 #include "model_files.hpp"
+#include "newton_polish.hpp"
 #include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 
@@ -28,18 +29,6 @@ Solved solve_at(const LinkageSolver& solver, double deg) {
   REQUIRE(sweep.poses.size() == 1);
   REQUIRE(sweep.poses[0].outcome.status == numlab::Status::converged);
   return {sweep.poses[0].q, sweep.poses[0].velocity, sweep.poses[0].acceleration};
-}
-
-// q polished by Newton to rounding at driver t.
-Eigen::VectorXd polish(const LinkageModel& model, double t, Eigen::VectorXd q) {
-  Eigen::VectorXd f;
-  Eigen::MatrixXd J;
-  for (int k = 0; k < 4; ++k) {
-    model.residual(q, t, f);
-    model.jacobian(q, t, J);
-    q -= Eigen::PartialPivLU<Eigen::MatrixXd>(J).solve(f);
-  }
-  return q;
 }
 
 AngularMotion motion_of(const LinkageModel& model, const Solved& s, const std::string& link) {

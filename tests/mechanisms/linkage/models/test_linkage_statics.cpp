@@ -18,6 +18,7 @@
 #include "four_bar_text.hpp"
 #include "model_files.hpp"
 #include "numlab/linalg/matrix_file.hpp"
+#include "newton_polish.hpp"
 #include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_statics.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
@@ -35,18 +36,6 @@ LinkagePose pose_at(const LinkageSolver& solver, double degrees) {
   const LinkageSweep sweep = linkage_sweep(solver, degrees, degrees, 1.0);
   REQUIRE(sweep.poses.size() == 1);
   return sweep.poses[0];
-}
-
-// q polished by Newton to rounding at driver t.
-Eigen::VectorXd polish(const LinkageModel& model, double t, Eigen::VectorXd q) {
-  Eigen::VectorXd f;
-  Eigen::MatrixXd J;
-  for (int k = 0; k < 5; ++k) {
-    model.residual(q, t, f);
-    model.jacobian(q, t, J);
-    q -= Eigen::PartialPivLU<Eigen::MatrixXd>(J).solve(f);
-  }
-  return q;
 }
 
 // Each load's line: the joints its angle turns with.
