@@ -208,6 +208,19 @@
     t.textContent = joint.name;
     return t;
   });
+  // The names' boxes, measured once (a name keeps its size): half extents and the box's centre
+  // from the text's anchor; a rough size where the browser measures nothing (not laid out).
+  const nameBoxes = names.map(function (t) {
+    let b = null;
+    try { b = t.getBBox(); } catch (e) { b = null; }
+    if (!b || !(b.width > 0)) b = {x: -1.35 * u * t.textContent.length, y: -2.6 * u, width: 2.7 * u * t.textContent.length, height: 5.2 * u};
+    return {hx: b.width / 2, hy: b.height / 2, ox: b.x + b.width / 2, oy: b.y + b.height / 2};
+  });
+  const jointRadius = 1.6 * u + 0.35 * u;  // the circle with half its stroke
+  const outlineSides = bodies.reduce(function (total, b) { return total + b.outline.length; }, 0);
+  const labels = numlabLabels.placer(nameBoxes.map(function (b) { return b.hx; }), nameBoxes.map(function (b) { return b.hy; }),
+                                     jointRadius, u, links.length + outlineSides + 2 * joints.length + sliders.length + 2);
+  labels.frame = [view[0], view[1], view[0] + view[2], view[1] + view[3]];
   const neighbours = joints.map(function () { return []; });
   data.links.forEach(function (l) { neighbours[l[0]].push(l[1]); neighbours[l[1]].push(l[0]); });
   if (actuator) { neighbours[data.driver.from].push(data.driver.joint); neighbours[data.driver.joint].push(data.driver.from); }
@@ -429,19 +442,58 @@
       a.setAttribute('x1', p[0]); a.setAttribute('y1', p[1]);
       a.setAttribute('x2', p[0] + vx * arrowScale); a.setAttribute('y2', p[1] - vy * arrowScale);
     });
-    names.forEach(function (t, j) {  // each name away from the joints it is tied to
+    placeNames(i);
+  }
+  // The names at pose i (label_placement.js): what they must keep clear of, each name's preferred
+  // direction (away from the joints it is tied to; a ground pivot's beside and above its triangle),
+  // then the placement, moved into the text elements.
+  function placeNames(i) {
+    labels.clear();
+    links.forEach(function (l) {
+      const p = xy(l.a, i), q = xy(l.b, i);
+      labels.segment(p[0], p[1], q[0], q[1], (isCrank(l.a, l.b) ? 1.5 : 1) * u, false);
+    });
+    bodies.forEach(function (b) {
+      const m = b.outline.length;
+      if (m === 2) {
+        const p = xy(b.outline[0], i), q = xy(b.outline[1], i);
+        labels.segment(p[0], p[1], q[0], q[1], 1.2 * u, false);
+      } else if (m >= 3) {
+        for (let k = 0; k < m; ++k) {
+          const p = xy(b.outline[k], i), q = xy(b.outline[(k + 1) % m], i);
+          labels.segment(p[0], p[1], q[0], q[1], 0.6 * u, false);
+        }
+      }
+    });
+    if (actuator) {
+      const p = xy(data.driver.from, i), q = xy(data.driver.joint, i), m = [(p[0] + q[0]) / 2, (p[1] + q[1]) / 2];
+      labels.segment(p[0], p[1], m[0], m[1], 1.75 * u, false);
+      labels.segment(m[0], m[1], q[0], q[1], 0.6 * u, false);
+    }
+    sliders.forEach(function (s) { const p = xy(s.slider.joint, i); labels.disc(p[0], p[1], 4.7 * u); });
+    joints.forEach(function (joint, j) {
       const p = xy(j, i);
+      labels.disc(p[0], p[1], jointRadius);
+      if (joint.ground) labels.box(p[0], p[1] + 3.5 * u, 5 * u, 3.5 * u);  // the pivot's triangle and hatching
+      const vx = arrows[j] ? vxs[j][i] : null, vy = arrows[j] ? vys[j][i] : null;
+      if (vx !== null && vy !== null && Math.hypot(vx, vy) > 0) {
+        labels.segment(p[0], p[1], p[0] + vx * arrowScale, p[1] - vy * arrowScale, 0.7 * u, true);
+      }
       let dx = 0, dy = 0;
       neighbours[j].forEach(function (k) {
         const q = xy(k, i), l = Math.hypot(q[0] - p[0], q[1] - p[1]);
         if (l > 0) { dx += (q[0] - p[0]) / l; dy += (q[1] - p[1]) / l; }
       });
       dx = -dx; dy = -dy;  // away from them
-      if (joints[j].ground) { dx = dx >= 0 ? 1 : -1; dy = -0.7; }  // beside and above, off the pivot's triangle
+      if (joint.ground) { dx = dx >= 0 ? 1 : -1; dy = -0.7; }
       const n = Math.hypot(dx, dy);
       if (n < 1e-9) { dx = 0; dy = -1; } else { dx /= n; dy /= n; }
-      t.setAttribute('x', p[0] + dx * 4.5 * u);
-      t.setAttribute('y', p[1] + dy * 4.5 * u);
+      labels.ax[j] = p[0]; labels.ay[j] = p[1]; labels.px[j] = dx; labels.py[j] = dy;
+    });
+    labels.place();
+    names.forEach(function (t, j) {
+      t.setAttribute('x', labels.cx[j] - nameBoxes[j].ox);
+      t.setAttribute('y', labels.cy[j] - nameBoxes[j].oy);
     });
   }
 

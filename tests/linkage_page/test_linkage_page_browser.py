@@ -4,6 +4,8 @@ Usage: test_linkage_page_browser.py OUT_DIR NUMLAB MODELS_DIR
 
 For each page (pages.py: the built-in jansen, jansen10, mustang, every file in MODELS_DIR, the
 four-bar with loads at 60 rpm):
+ 0. at every pose that assembled, the joints' names by their boxes (getBBox): no two overlap, none
+    covers a joint's circle, each inside the frame and within 12 units of its joint's circle;
  1. the slider scrubbed to poses across the sweep (first, thirds, last, and a pose that did not
     assemble if any): the readout's joint coordinates, velocities, driver value and status equal
     the CSV row's (the full value in data-value exactly, the text to its 8 digits), and the drawn
@@ -16,7 +18,8 @@ the input event handled, style and layout done), the page with scripts off (the 
 table of 360 rows), printed (no controls), with reduced motion (Play's rate says so); Play at the
 real crank speed of --speed 60rpm; the Mustang's limit and kite-crossing marks take the slider there.
 Last, the pages the labs jansen and mustang write beside their report (leg.html, mustang.html):
-they open without errors and their readout shows their own embedded numbers.
+they open without errors, their readout shows their own embedded numbers, and their names keep
+apart at every pose as in 0.
 """
 
 import json
@@ -115,6 +118,68 @@ def scrub(page, case):
     return checked
 
 
+# Every pose of the page (the slider's every value that assembled): each joint's name, by its box
+# (getBBox, in the drawing's units), against every other name's box, every joint's circle (its radius
+# plus half its stroke), the frame (the SVG's viewBox) and its own joint. What the page script's
+# label placement promises (labs/linkage_page/label_placement.js).
+LABEL_BOXES = """(() => {
+  const svg = document.getElementById('scene'), frame = svg.viewBox.baseVal;
+  const u = +getComputedStyle(svg).getPropertyValue('--u');
+  const names = [...svg.querySelectorAll('g.names text')], circles = [...svg.querySelectorAll('circle.joint')];
+  const n = +document.getElementById('pose-slider').max + 1;
+  const result = {poses: 0, names: names.length, u: u, pairs: [], circles: [], outside: [], far: [], farthest: 0, bad: []};
+  for (let i = 0; i < n; ++i) {
+    numlabLinkage.show(i);
+    if (svg.classList.contains('stale')) continue;
+    result.poses++;
+    const boxes = names.map(t => t.getBBox());
+    const discs = circles.map(c => [+c.getAttribute('cx'), +c.getAttribute('cy'), +c.getAttribute('r') + 0.5 * +c.getAttribute('stroke-width')]);
+    boxes.forEach((p, a) => {
+      if (![p.x, p.y, p.width, p.height].every(Number.isFinite) || !(p.width > 0 && p.height > 0)) result.bad.push([i, names[a].textContent]);
+      for (let b = a + 1; b < boxes.length; ++b) {
+        const q = boxes[b];
+        const wide = Math.min(p.x + p.width, q.x + q.width) - Math.max(p.x, q.x);
+        const high = Math.min(p.y + p.height, q.y + q.height) - Math.max(p.y, q.y);
+        if (wide > 0 && high > 0) result.pairs.push([i, names[a].textContent, names[b].textContent, wide / u, high / u]);
+      }
+      discs.forEach((d, j) => {
+        const gap = Math.hypot(Math.max(p.x - d[0], 0, d[0] - p.x - p.width), Math.max(p.y - d[1], 0, d[1] - p.y - p.height)) - d[2];
+        if (!(gap >= 0)) result.circles.push([i, names[a].textContent, circles[j].getAttribute('data-joint'), gap / u]);
+        if (j === a) {
+          result.farthest = Math.max(result.farthest, gap / u);
+          if (!(gap <= 12 * u)) result.far.push([i, names[a].textContent, gap / u]);
+        }
+      });
+      if (!(p.x >= frame.x && p.y >= frame.y && p.x + p.width <= frame.x + frame.width && p.y + p.height <= frame.y + frame.height)) {
+        result.outside.push([i, names[a].textContent]);
+      }
+    });
+  }
+  return result;
+})()"""
+
+
+def check_labels(page, name):
+    """No two names overlap at any assembled pose, none covers a joint's circle, each stays in the frame
+    and within 12 units (12% of the frame's larger side) of its joint's circle. Returns the number of
+    poses checked and the farthest name's gap from its joint's circle (in units)."""
+    found = page.eval(LABEL_BOXES)
+    data = page.eval("(d => [d.columns[d.driver_column], d.columns.status, d.joints.length])(numlabLinkage.data)")
+    drivers, statuses, joints = data
+    assembled = sum(1 for s in statuses if s == "converged")
+    assert found["poses"] == assembled > 0 and found["names"] == joints > 0, (name, found["poses"], assembled, found["names"])
+    assert found["u"] > 0 and not found["bad"], (name, found["u"], found["bad"][:5])
+
+    def at(entries):  # the first few, with the driver value of their pose
+        return [[drivers[e[0]]] + [round(v, 2) if isinstance(v, float) else v for v in e[1:]] for e in entries[:6]]
+    assert not found["pairs"], (f"{name}: names overlap at {len(set(e[0] for e in found['pairs']))} poses "
+                                f"(driver, name, name, overlap wide and high in units): {at(found['pairs'])}")
+    assert not found["circles"], f"{name}: a name on a joint's circle at {len(found['circles'])} (pose, name): {at(found['circles'])}"
+    assert not found["outside"], f"{name}: a name outside the frame: {at(found['outside'])}"
+    assert not found["far"], f"{name}: a name over 12 units from its joint: {at(found['far'])}"
+    return found["poses"], found["farthest"]
+
+
 FRAME_TIME = """(async () => {
   const slider = document.getElementById('pose-slider'), scene = document.getElementById('scene');
   const n = +slider.max + 1, work = [], frames = [];
@@ -145,10 +210,14 @@ def main(out_dir, numlab, models_dir):
     cases = make_pages(numlab, models_dir, out / "pages")
     by_name = {case.name: case for case in cases}
     total = 0
+    label_poses, farthest = 0, 0.0
     with Browser(out, width=1300, height=1000) as browser:
         for case in cases:
             page = browser.open(case.page)
             assert page.eval("getComputedStyle(document.getElementById('static-scene')).display") == "none", case.name
+            poses, far = check_labels(page, case.name)
+            assert poses == case.column("status").count("converged"), (case.name, poses)
+            label_poses, farthest = label_poses + poses, max(farthest, far)
             total += scrub(page, case)
             page.set_range("#pose-slider", len(case.rows) // 3)
             page.eval("window.scrollTo(0, 0)")
@@ -222,10 +291,14 @@ def main(out_dir, numlab, models_dir):
                 for column in ("crank_deg", f"x_{joint}", f"vx_{joint}", "condition"):
                     assert data[column][i] is not None and float(cells[column][1]) == data[column][i], \
                         (lab, column, i, cells[column], data[column][i])
+            poses, far = check_labels(page, f"lab {lab} {name}")
+            label_poses, farthest = label_poses + poses, max(farthest, far)
             page.eval("window.scrollTo(0, 0)")
             page.screenshot(f"lab-{lab}-{name}.png")
             page.check_no_errors()
     print(f"{len(cases)} pages scrubbed in Chromium: {total} shown numbers and words equal to the CSV's, no page errors")
+    print(f"joint names at {label_poses} assembled poses: no two overlap, none on a joint's circle, all in the frame, "
+          f"the farthest {farthest:.1f} units from its joint")
 
 
 if __name__ == "__main__":
