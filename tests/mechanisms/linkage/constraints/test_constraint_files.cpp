@@ -9,6 +9,7 @@
 #include "numlab/mechanisms/linkage/linkage_description.hpp"
 
 using namespace numlab::mechanisms;
+using numlab::mechanisms::testing::check_refused;
 using numlab::mechanisms::testing::lines;
 
 namespace {
@@ -37,19 +38,6 @@ const std::string head = lines({
 });
 // Line 20 on.
 const std::string crank = lines({"[driver]", "type = \"crank\"", "pivot = \"O\"", "joint = \"A\"", "angle = 60"});
-
-void check_refused(const std::string& text, int line, int column, const std::string& problem) {
-  INFO(text);
-  try {
-    (void)parse_linkage_description(text, "t.toml");
-    FAIL("accepted");
-  } catch (const LinkageFileError& error) {
-    CHECK(error.problem() == problem);
-    CHECK(error.place().line == line);
-    CHECK(error.place().column == column);
-    CHECK(std::string(error.what()) == "t.toml:" + std::to_string(line) + ":" + std::to_string(column) + ": " + problem);
-  }
-}
 
 std::string slider(std::initializer_list<std::string> keys) { return head + lines({"[[slider]]"}) + lines(keys) + crank; }
 

@@ -5,10 +5,12 @@
 
 #include <string>
 
+#include "description_text.hpp"
 #include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "numlab/mechanisms/linkage/linkage_description.hpp"
 
 using namespace numlab::mechanisms;
+using numlab::mechanisms::testing::check_refused;
 
 namespace {
 
@@ -27,17 +29,6 @@ std::string four_bar(const std::string& linkage_key, const std::string& crank_na
          "[[link]]\njoints = [\"Q\", \"B\"]\n" +         // 18-19
          rocker_name + "\nlength = 2.5\n" +              // 20-21
          "[driver]\ntype = \"crank\"\npivot = \"O\"\njoint = \"A\"\nangle = 45\n";
-}
-
-void check_refused(const std::string& text, int line, int column, const std::string& problem) {
-  try {
-    (void)parse_linkage_description(text, "t.toml");
-    FAIL("accepted:\n" << text);
-  } catch (const LinkageFileError& error) {
-    CHECK(error.problem() == problem);
-    CHECK(error.place().line == line);
-    CHECK(error.place().column == column);
-  }
 }
 
 }  // namespace

@@ -11,6 +11,8 @@
 #include "numlab/mechanisms/linkage/linkage_description.hpp"
 
 using namespace numlab::mechanisms;
+using numlab::mechanisms::testing::check_refused;
+using numlab::mechanisms::testing::error_of;
 using numlab::mechanisms::testing::lines;
 using Catch::Matchers::StartsWith;
 
@@ -36,26 +38,6 @@ const std::string head = lines({
 });
 
 const std::string crank = lines({"[driver]", "type = \"crank\"", "pivot = \"O\"", "joint = \"A\"", "angle = 45"});
-
-LinkageFileError error_of(const std::string& text) {
-  try {
-    (void)parse_linkage_description(text, "t.toml");
-  } catch (const LinkageFileError& error) {
-    return error;
-  }
-  FAIL("the reader accepted:\n" << text);
-  throw;  // not reached
-}
-
-// The text is refused at line:column with exactly this problem, and what() is "t.toml:LINE:COLUMN: problem".
-void check_refused(const std::string& text, int line, int column, const std::string& problem) {
-  const LinkageFileError error = error_of(text);
-  CHECK(error.problem() == problem);
-  CHECK(error.place().line == line);
-  CHECK(error.place().column == column);
-  CHECK(std::string(error.what()) ==
-        "t.toml:" + std::to_string(line) + ":" + std::to_string(column) + ": " + problem);
-}
 
 // A problem with no single place: "t.toml: problem".
 void check_refused_without_place(const std::string& text, const std::string& problem) {
