@@ -223,6 +223,16 @@ def main(out_dir, numlab, models_dir):
             page.eval("window.scrollTo(0, 0)")
             page.screenshot(case.page.stem + ".png")
             page.check_no_errors()
+        # Where names overlapped before they were placed per pose (whitworth.toml's A over B from crank
+        # 28 deg, the Mustang's P1 over P11 at -41 deg, mustang.toml's P9 over P11 at 24 deg): screenshots.
+        for name, driver in (("whitworth.toml", 30), ("mustang", -41), ("mustang.toml", 24)):
+            case = by_name[name]
+            pose = [float(v) for v in case.column(case.header[0])].index(driver)
+            page = browser.open(case.page)
+            page.set_range("#pose-slider", pose)
+            page.eval("document.getElementById('scene').scrollIntoView()")
+            page.screenshot(f"names-{case.page.stem}-at-{driver}.png")
+            page.check_no_errors()
         # The Jansen cycle: frame time, scripts off, print, reduced motion.
         jansen = by_name["jansen"]
         page = browser.open(jansen.page)
