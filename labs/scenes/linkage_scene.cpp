@@ -157,7 +157,8 @@ std::vector<double> path_lengths(const Scene& scene) {
 }
 
 // The joints whose paths are drawn and the one drawn heavier: the chosen ones, all heavier; else every
-// moving joint, the longest path heavier (not counting the crank pin's circle when there is another).
+// moving joint, the longest path heavier (not counting a crank pin's circle, of either driver, when
+// there is another).
 struct DrawnPaths {
   std::vector<int> joints;
   int heavy = -1;  // -1: every drawn path is heavy (they were chosen)
@@ -166,10 +167,13 @@ DrawnPaths drawn_paths(const Scene& scene, const LinkageSceneOptions& options) {
   if (!options.paths.empty()) return {options.paths, -1};
   const std::vector<double> length = path_lengths(scene);
   const auto& moving = scene.model.moving();
-  const auto& driver = scene.model.description().driver;
+  const auto drivers = drivers_of(scene.model.description());
+  auto crank_pin = [&](int j) {
+    return std::any_of(drivers.begin(), drivers.end(), [j](const mechanisms::DriverSpec* d) { return d->angle() && d->joint == j; });
+  };
   std::vector<int> candidates;
   for (const int j : moving) {
-    if (!(scene.model.crank_driven() && j == driver.joint)) candidates.push_back(j);
+    if (!crank_pin(j)) candidates.push_back(j);
   }
   if (candidates.empty()) candidates = moving;
   const int longest = *std::max_element(candidates.begin(), candidates.end(), [&](int a, int b) { return length[at(a)] < length[at(b)]; });
@@ -483,8 +487,11 @@ std::string paths_caption(const Scene& scene, const DrawnPaths& paths, const Lin
     return fmt::format("dashed: the path{} of {} over {} assembled poses ({})", names.size() == 1 ? "" : "s",
                        fmt::join(names, ", "), scene.frames.size(), xml_escaped(options.paths_from));
   }
+  const auto drivers = drivers_of(scene.model.description());
+  const auto pins = std::count_if(drivers.begin(), drivers.end(), [](const mechanisms::DriverSpec* d) { return d->angle(); });
   return fmt::format("dashed: the joints' paths over {} assembled poses; heavier: {}'s, the longest{}", scene.frames.size(),
-                     xml_escaped(joints[at(paths.heavy)].name), scene.model.crank_driven() ? " but the crank pin's" : "");
+                     xml_escaped(joints[at(paths.heavy)].name),
+                     pins == 0 ? "" : pins == 1 ? " but the crank pin's" : " but the crank pins'");
 }
 
 // Each moving joint's velocity as an arrow from the joint, the longest arrow_share of the frame's

@@ -183,6 +183,8 @@ TEST_CASE("The five-bar's second crank is drawn as its first is, in the pose and
   // Drawn at 10:1 (the five-bar is about 6 across): D is O2 + 2 (cos 90, sin 90), the held crank.
   CHECK((circle_of(svg, "D") - Point(40.0, -20.0)).norm() <= 2 * printed);
   CHECK(svg.find("Five-bar linkage with two cranks at crank 30 deg, crank 90 deg held") != std::string::npos);
+  // No path chosen: every moving joint's is drawn, the longest heavier but for the two crank pins.
+  CHECK(svg.find("heavier: P's, the longest but the crank pins'") != std::string::npos);
 
   const std::string animation = linkage_animation_svg(model, sweep, 4.0);
   const auto moving_first = driver_elements(animation, 1), moving_second = driver_elements(animation, 2);
