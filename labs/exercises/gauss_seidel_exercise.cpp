@@ -175,14 +175,25 @@ Expectation expectation(const Problem& p, const Reference& reference) {
                                         "100*sweep*n*eps*max(1,|x|))"};
 }
 
+// Problem p asked: numlab's reference (timed into `times`), the student's reply, and numlab's
+// expectation sent beside it (results.json shows it by the reply).
+struct Asked {
+  Reference reference;
+  nlohmann::json reply;
+};
+Asked ask_problem(Session& session, const Problem& p, linear::ReferenceTimes& times) {
+  Reference reference = reference_for(p, times);
+  nlohmann::json reply = session.ask(request_for(p));
+  session.expect(expectation(p, reference));
+  return {std::move(reference), std::move(reply)};
+}
+
 // Tasks 1 and 3: converged, in numlab's number of sweeps (+-1 for rounding at the stop test), to
 // numlab's accuracy.
 Verdict converges_accurately(Session& session, const std::vector<Problem>& problems) {
   linear::ReferenceTimes times;
   for (const Problem& p : problems) {
-    const Reference reference = reference_for(p, times);
-    const nlohmann::json reply = session.ask(request_for(p));
-    session.expect(expectation(p, reference));
+    const auto [reference, reply] = ask_problem(session, p, times);
     const std::string status = string_field(reply, "status");
     const long long sweeps = integer_field(reply, "iterations");
     if (status != "converged") {
@@ -215,9 +226,7 @@ Verdict converges_accurately(Session& session, const std::vector<Problem>& probl
 // Task 2: an ending other than convergence, as numlab's stepper reaches it.
 Verdict ends_without_converging(Session& session, const Problem& p) {
   linear::ReferenceTimes times;
-  const Reference reference = reference_for(p, times);
-  const nlohmann::json reply = session.ask(request_for(p));
-  session.expect(expectation(p, reference));
+  const auto [reference, reply] = ask_problem(session, p, times);
   const std::string status = string_field(reply, "status");
   const long long sweeps = integer_field(reply, "iterations");
   if (reference.status == Status::max_iterations) {
@@ -287,9 +296,7 @@ Verdict with_trace(Verdict verdict, TraceComparison comparison) {
 Verdict sweeps_like_numlab(Session& session, const std::vector<Problem>& problems) {
   linear::ReferenceTimes times;
   for (const Problem& p : problems) {
-    const Reference reference = reference_for(p, times);
-    const nlohmann::json reply = session.ask(request_for(p));
-    session.expect(expectation(p, reference));
+    const auto [reference, reply] = ask_problem(session, p, times);
     const nlohmann::json* trace = linear::optional_trace(reply);
     if (trace == nullptr) return missing_trace(p, times);
     double largest = 1.0;
@@ -343,9 +350,7 @@ Verdict sweeps_like_numlab(Session& session, const std::vector<Problem>& problem
 Verdict converged_claims_hold(Session& session, const std::vector<Problem>& problems) {
   linear::ReferenceTimes times;
   for (const Problem& p : problems) {
-    const Reference reference = reference_for(p, times);
-    const nlohmann::json reply = session.ask(request_for(p));
-    session.expect(expectation(p, reference));
+    const auto [reference, reply] = ask_problem(session, p, times);
     const nlohmann::json* trace = linear::optional_trace(reply);
     if (trace == nullptr) return missing_trace(p, times);
     if (string_field(reply, "status") != "converged") continue;
