@@ -25,6 +25,7 @@
 #include "commands/solve_linear.hpp"
 #include "commands/solve_nonlinear.hpp"
 #include "numlab/printable_text.hpp"
+#include "output/files.hpp"
 
 namespace {
 
@@ -212,7 +213,7 @@ int main(int argc, char** argv) {
     return bad_input(parse_error_in_own_words(error, app));
   }
 
-  try {
+  const auto run_command = [&]() {
     if (solve_linear.selected()) return solve_linear.run();
     if (solve_nonlinear.selected()) return solve_nonlinear.run();
     if (solve->parsed()) throw std::invalid_argument("solve: say what to solve, e.g. numlab solve linear --help");
@@ -226,6 +227,11 @@ int main(int argc, char** argv) {
     if (basins.selected()) return basins.run();
     if (models.selected()) return models.run();
     return run_main_job();
+  };
+  try {
+    const int code = run_command();
+    check_standard_output();  // a result cut short by a full disk is not a success
+    return code;
   } catch (const std::exception& error) {
     return bad_input(error.what());
   }

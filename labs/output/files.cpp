@@ -1,7 +1,9 @@
 #include "output/files.hpp"
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 #include <system_error>
 
@@ -79,6 +82,31 @@ void write_file_atomically(const std::string& path, const std::string& contents)
   const int cause = written ? errno : write_errno;
   ::unlink(temporary.c_str());
   throw std::invalid_argument("cannot write '" + path + "': " + std::strerror(cause));
+}
+
+void check_standard_output() {
+  // 1. Flush what is buffered; a write that fails now leaves its errno.
+  std::cout.flush();
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  int cause = errno;
+  // 2. A write that failed earlier left the stream's error flags, not its errno: the likely causes
+  // read from the file (at the file-size limit; no room left on its file system).
+  if (flushed && std::ferror(stdout) == 0 && std::cout.good()) return;
+  struct stat info {};
+  struct rlimit limit {};
+  struct statvfs room {};
+  if (cause == 0 && ::fstat(STDOUT_FILENO, &info) == 0 && S_ISREG(info.st_mode) && ::getrlimit(RLIMIT_FSIZE, &limit) == 0 &&
+      limit.rlim_cur != RLIM_INFINITY && static_cast<rlim_t>(info.st_size) >= limit.rlim_cur) {
+    cause = EFBIG;
+  } else if (cause == 0 && ::fstatvfs(STDOUT_FILENO, &room) == 0 && room.f_bavail == 0) {
+    cause = ENOSPC;
+  }
+  std::error_code error;
+  const fs::path file = fs::read_symlink("/proc/self/fd/1", error);
+  const std::string named = error ? "the standard output" : "the standard output '" + file.string() + "'";
+  throw std::invalid_argument("cannot write " + named + ": " + (cause != 0 ? std::strerror(cause) : "a write failed") +
+                              "; what it holds is cut short");
 }
 
 void check_outputs(const std::vector<PlannedFile>& outputs, const std::vector<std::string>& inputs) {

@@ -14,6 +14,12 @@ void ensure_directory(const std::string& path);
 // place. On any failure the temporary is removed and std::invalid_argument names the file.
 void write_file_atomically(const std::string& path, const std::string& contents);
 
+// Flushes the standard output and throws std::invalid_argument naming it (its file, when it is one)
+// and the error, when a write to it failed (a full disk, a file-size limit): what the shell's
+// redirection holds is then cut short, and the exit code must say so. It cannot be made whole or
+// absent: the shell opened it, maybe to append.
+void check_standard_output();
+
 // Checks, before any work, every file a command will write (`flag` names who asked for it):
 // not empty, not an existing folder, in a folder that accepts files (the nearest existing one is
 // tried), not the same file as an input, not twice among the outputs. Throws
