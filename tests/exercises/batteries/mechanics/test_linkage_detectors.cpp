@@ -1,6 +1,6 @@
 // The linkage exercise's detectors (labs/exercises/linkage_detectors.hpp) on constructed wrong f and
 // J of the shipped four-bar at three poses off its reference: each names its cause, none fires on
-// numlab's own f with rounding in every entry.
+// numlab's own f and J, with rounding in every entry or without.
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -75,14 +75,40 @@ std::pair<int, int> asymmetric_pair(const std::vector<LinkageClosureSample>& sam
 
 }  // namespace
 
-TEST_CASE("linkage detectors: none fires on numlab's own f, nor on it with rounding in every entry") {
-  // (J's run only on a J that failed its check: finite_difference_jacobian holds for any J within
-  // 1e-5 of numlab's, numlab's own included.)
+TEST_CASE("linkage detectors: none fires on numlab's own f and J, nor on them with rounding in every entry") {
   const LinkageModel model = four_bar();
   auto s = samples(model);
   CHECK(f_cause(model, s) == "(none)");
-  for (auto& sample : s) sample.f *= 1.0 + 4 * eps;
+  CHECK(J_cause(model, s) == "(none)");
+  for (auto& sample : s) {
+    sample.f *= 1.0 + 4 * eps;
+    sample.J *= 1.0 + 4 * eps;
+  }
   CHECK(f_cause(model, s) == "(none)");
+  CHECK(J_cause(model, s) == "(none)");
+}
+
+TEST_CASE("linkage detectors: a J of central differences of f is named, with how far it is from analytic") {
+  const LinkageModel model = four_bar();
+  auto s = samples(model);
+  for (auto& sample : s) {
+    const double h = 1e-4;  // a step a student might take: error O(h^2) in J, far above rounding
+    Eigen::VectorXd plus(sample.f.size()), minus(sample.f.size());
+    for (Eigen::Index k = 0; k < sample.q.size(); ++k) {
+      Eigen::VectorXd q = sample.q;
+      q(k) += h;
+      model.residual(q, sample.t, plus);
+      q(k) -= 2 * h;
+      model.residual(q, sample.t, minus);
+      sample.J.col(k) = (plus - minus) / (2 * h);
+    }
+  }
+  const double worst = (s.front().J - s.front().J_expected).cwiseAbs().maxCoeff();
+  REQUIRE(worst > tolerances(s).front());  // the check this J fails
+  const auto diagnosis = diagnose(linkage_J_detectors(model, s, tolerances(s)));
+  REQUIRE(diagnosis);
+  CHECK(diagnosis->cause == "finite_difference_jacobian");
+  CHECK_THAT(diagnosis->evidence, Catch::Matchers::Contains("not to rounding"));
 }
 
 TEST_CASE("linkage detectors: J transposed, one pair J[i][k] <-> J[k][i] swapped, entries with the opposite sign") {
