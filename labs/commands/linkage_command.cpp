@@ -282,25 +282,27 @@ int run_linkage(const LinkageRun& run) {
   report.status = overall_status(sweep, report.derivatives);
   const bool drawable = std::any_of(sweep.poses.begin(), sweep.poses.end(),
                                     [](const LinkagePose& p) { return p.outcome.status == Status::converged; });
+  FileBatch files;  // the drawings and the page: all of them in place, or none (a full disk)
   if (drawable) {
     const std::size_t pose = drawn_pose(model, sweep, run, scene.pose_reason);
-    if (!run.svg.empty()) write_file_atomically(run.svg, linkage_pose_svg(model, sweep, pose, scene));
-    if (!run.animate.empty()) write_file_atomically(run.animate, linkage_animation_svg(model, sweep, 4.0, scene));
+    if (!run.svg.empty()) files.add(run.svg, linkage_pose_svg(model, sweep, pose, scene));
+    if (!run.animate.empty()) files.add(run.animate, linkage_animation_svg(model, sweep, 4.0, scene));
     if (!run.html.empty()) {  // the page's picture without scripts: --svg's, with the velocity arrows
       LinkageSceneOptions still = scene;
       still.velocity_arrows = true;
-      write_file_atomically(run.html, linkage_page_html(file_page_data(report, run.name.empty() ? run.file : run.name),
-                                                        linkage_pose_svg(model, sweep, pose, still),
-                                                        "one pose drawn by numlab (the page without scripts)"));
+      files.add(run.html, linkage_page_html(file_page_data(report, run.name.empty() ? run.file : run.name),
+                                            linkage_pose_svg(model, sweep, pose, still),
+                                            "one pose drawn by numlab (the page without scripts)"));
     }
   } else if (!run.svg.empty() || !run.animate.empty() || !run.html.empty()) {
     std::cerr << "numlab: no pose assembled, so no scene was drawn\n";
     if (!run.html.empty()) {
-      write_file_atomically(run.html, linkage_page_html(file_page_data(report, run.name.empty() ? run.file : run.name), "",
-                                                        "no pose assembled"));
+      files.add(run.html, linkage_page_html(file_page_data(report, run.name.empty() ? run.file : run.name), "",
+                                            "no pose assembled"));
     }
   }
   if (!run.chart.empty()) draw_driving_chart(chart_files(run.chart), model, sweep, output);
+  files.commit();
   if (run.common.format == Format::json) {
     std::cout << linkage_json(report, run.common.trace ? &tracer.rows() : nullptr).dump(2) << '\n';
   } else if (run.common.format == Format::csv) {

@@ -388,14 +388,16 @@ int MechanismCommand::sweep_jansen(const CommonOptions& common, const SweepRange
 
   // Files, then the report.
   if (!sweep.poses.empty()) {
-    if (!paths.svg.empty()) write_file_atomically(paths.svg, jansen_pose_svg(sweep, 0));
-    if (!paths.animate.empty()) write_file_atomically(paths.animate, jansen_animation_svg(sweep, 4.0));
-    if (!paths.beest.empty()) write_file_atomically(paths.beest, beest_svg(sweep, beest_seconds_));
+    FileBatch files;  // all of them in place, or none (a full disk)
+    if (!paths.svg.empty()) files.add(paths.svg, jansen_pose_svg(sweep, 0));
+    if (!paths.animate.empty()) files.add(paths.animate, jansen_animation_svg(sweep, 4.0));
+    if (!paths.beest.empty()) files.add(paths.beest, beest_svg(sweep, beest_seconds_));
     if (!paths.html.empty()) {
       const auto data = jansen_page_data(name_, model, sweep, "numlab mechanism " + name_ + " --format csv");
-      write_file_atomically(paths.html, linkage_page_html(data, jansen_pose_svg(sweep, 0),
-                                                          "the leg at the sweep's first pose (the page without scripts)"));
+      files.add(paths.html, linkage_page_html(data, jansen_pose_svg(sweep, 0),
+                                              "the leg at the sweep's first pose (the page without scripts)"));
     }
+    files.commit();
   }
   print_jansen_report(common, name_, solver_, model, sweep, tracer, time_s);
   return exit_code_for(sweep.status);

@@ -200,13 +200,15 @@ int run_mustang(const MustangRequest& request) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() - pause.seconds_waited();
 
   if (!sweep.poses.empty()) {
-    if (!request.svg.empty()) write_file_atomically(request.svg, mustang_pose_svg(sweep, 0));
-    if (!request.animate.empty()) write_file_atomically(request.animate, mustang_animation_svg(sweep, 0.08 * static_cast<double>(sweep.poses.size())));
+    FileBatch files;  // all of them in place, or none (a full disk)
+    if (!request.svg.empty()) files.add(request.svg, mustang_pose_svg(sweep, 0));
+    if (!request.animate.empty()) files.add(request.animate, mustang_animation_svg(sweep, 0.08 * static_cast<double>(sweep.poses.size())));
     if (!request.html.empty()) {
       const auto data = mustang_page_data(sweep, request.start, request.stop, "numlab mechanism mustang --format csv");
-      write_file_atomically(request.html, linkage_page_html(data, mustang_pose_svg(sweep, 0),
-                                                            "the linkage at the sweep's first pose (the page without scripts)"));
+      files.add(request.html, linkage_page_html(data, mustang_pose_svg(sweep, 0),
+                                                "the linkage at the sweep's first pose (the page without scripts)"));
     }
+    files.commit();
   }
   if (request.common.format == Format::json) {
     std::cout << json_of(request, sweep, tracer, time_s).dump(2) << '\n';

@@ -55,33 +55,66 @@ void ensure_directory(const std::string& path) {
   if (!refused.empty()) throw std::invalid_argument("the output folder '" + path + "' takes no new files (" + refused + ")");
 }
 
-void write_file_atomically(const std::string& path, const std::string& contents) {
+namespace {
+
+// Steps 1-2 of writing a file whole: `contents` in a unique temporary beside `path` (so the rename
+// stays in one file system), with the permissions a new file gets; its name, or on any failure the
+// temporary removed and std::invalid_argument naming `path` and the error.
+std::string write_temporary(const std::string& path, const std::string& contents) {
   const fs::path target(path);
   std::error_code error;
   if (path.empty() || !target.has_filename()) throw std::invalid_argument("cannot write '" + path + "': no file name");
   if (fs::is_directory(target, error)) throw std::invalid_argument("cannot write '" + path + "': it is a folder");
   if (target.has_parent_path()) ensure_directory(target.parent_path().string());
-  // 1. A unique temporary beside the target (so the rename stays in one file system).
+  // 1. A unique temporary beside the target.
   std::string temporary = (target.parent_path() / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
   const int descriptor = mkstemp(temporary.data());
   if (descriptor < 0) throw std::invalid_argument("cannot write '" + path + "': " + std::strerror(errno));
-  // 2. Write it whole, with the permissions a new file gets (mkstemp makes it private).
+  // 2. Write it whole (mkstemp makes it private: the mode a new file gets first); the first error kept.
   const mode_t mask = umask(0);
   umask(mask);
-  bool written = fchmod(descriptor, 0666 & ~mask) == 0;
-  for (std::size_t done = 0; written && done < contents.size();) {
+  int cause = fchmod(descriptor, 0666 & ~mask) == 0 ? 0 : errno;
+  for (std::size_t done = 0; cause == 0 && done < contents.size();) {
     const ssize_t count = ::write(descriptor, contents.data() + done, contents.size() - done);
     if (count < 0 && errno == EINTR) continue;
-    written = count > 0;
-    if (written) done += static_cast<std::size_t>(count);
+    if (count <= 0) cause = count < 0 ? errno : EIO;
+    if (count > 0) done += static_cast<std::size_t>(count);
   }
-  const int write_errno = errno;
-  written = ::close(descriptor) == 0 && written;
-  // 3. Rename into place; on any failure, remove the temporary.
-  if (written && std::rename(temporary.c_str(), path.c_str()) == 0) return;
-  const int cause = written ? errno : write_errno;
+  if (::close(descriptor) != 0 && cause == 0) cause = errno;
+  if (cause == 0) return temporary;
   ::unlink(temporary.c_str());
   throw std::invalid_argument("cannot write '" + path + "': " + std::strerror(cause));
+}
+
+// Step 3: the temporary renamed into place, or removed and std::invalid_argument naming `path`.
+void put_in_place(const std::string& temporary, const std::string& path) {
+  if (std::rename(temporary.c_str(), path.c_str()) == 0) return;
+  const int cause = errno;
+  ::unlink(temporary.c_str());
+  throw std::invalid_argument("cannot write '" + path + "': " + std::strerror(cause));
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::string& contents) {
+  put_in_place(write_temporary(path, contents), path);
+}
+
+FileBatch::~FileBatch() {
+  for (const Staged& file : staged_) ::unlink(file.temporary.c_str());
+}
+
+void FileBatch::add(const std::string& path, const std::string& contents) {
+  staged_.push_back({write_temporary(path, contents), path});
+}
+
+void FileBatch::commit() {
+  // Renamed in order; a rename that fails (rare: the disk was written already) removes the rest.
+  while (!staged_.empty()) {
+    const Staged file = staged_.front();
+    staged_.erase(staged_.begin());
+    put_in_place(file.temporary, file.path);
+  }
 }
 
 void check_standard_output() {

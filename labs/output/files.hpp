@@ -14,6 +14,26 @@ void ensure_directory(const std::string& path);
 // place. On any failure the temporary is removed and std::invalid_argument names the file.
 void write_file_atomically(const std::string& path, const std::string& contents);
 
+// Several files written together, all of them whole or none: add() writes each to a temporary
+// beside it at once (so a full disk shows before any is in place), commit() renames them all into
+// place. A batch destroyed before commit() (an exception on the way) removes its temporaries.
+class FileBatch {
+ public:
+  FileBatch() = default;
+  FileBatch(const FileBatch&) = delete;
+  FileBatch& operator=(const FileBatch&) = delete;
+  ~FileBatch();
+  // Throws std::invalid_argument naming the file (the batch keeps what it staged before).
+  void add(const std::string& path, const std::string& contents);
+  void commit();
+
+ private:
+  struct Staged {
+    std::string temporary, path;
+  };
+  std::vector<Staged> staged_;
+};
+
 // Flushes the standard output and throws std::invalid_argument naming it (its file, when it is one)
 // and the error, when a write to it failed (a full disk, a file-size limit): what the shell's
 // redirection holds is then cut short, and the exit code must say so. It cannot be made whole or

@@ -35,11 +35,12 @@ struct LimitedRun {
 };
 
 // numlab ARGUMENTS run in `folder`, stdout to `folder`/`stdout_name` (or outside it when empty),
-// stderr outside it; with the file-size limit when `limited`.
-LimitedRun run_in(const std::string& folder, const std::string& arguments, bool limited, const std::string& stdout_name = "") {
+// stderr outside it; with the file-size limit (`blocks` of sh's ulimit -f) when `limited`.
+LimitedRun run_in(const std::string& folder, const std::string& arguments, bool limited, const std::string& stdout_name = "",
+                  int blocks = 16) {
   const std::string outside = folder + ".out";
   const std::string stdout_path = stdout_name.empty() ? outside : folder + "/" + stdout_name;
-  const std::string command = "cd '" + folder + "' && " + (limited ? "trap '' XFSZ && ulimit -f 16 && " : "") + "exec " +
+  const std::string command = "cd '" + folder + "' && " + (limited ? "trap '' XFSZ && ulimit -f " + std::to_string(blocks) + " && " : std::string()) + "exec " +
                               NUMLAB_BINARY + " " + arguments + " </dev/null >'" + stdout_path + "' 2>'" + folder + ".err'";
   const int status = std::system(command.c_str());  // sh -c COMMAND
   LimitedRun run{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_all(folder + ".err")};
@@ -89,6 +90,53 @@ TEST_CASE("mechanism's drawings and page are whole or absent when the disk fills
   check_whole_or_absent(whitworth + " --svg a.svg --out drawings", "drawings/a.svg", {"drawings"});
   // An earlier file of that name stays as it was.
   check_whole_or_absent(whitworth + " --html a.html", "a.html", {"a.html"}, "", {"a.html"});
+}
+
+TEST_CASE("mechanism's drawings, page and chart of one run: all of them in place, or none", "[cli][full-disk]") {
+  // 9 poses: the pose (4 KB) and the animation (6 KB) each fit under 30 blocks (15 KiB in sh's
+  // 512-byte blocks, 30 KiB in bash's), the page (54 KB) and the chart (35 KB) do not.
+  const std::string run = mechanism + "/whitworth.toml --sweep 0:10:5 --svg a.svg --animate c.svg";
+  for (const std::string& last : {std::string(" --html b.html"), std::string(" --chart d.svg")}) {
+    INFO("numlab " << run << last);
+    const std::string free_folder = temporary_folder();
+    REQUIRE(run_in(free_folder, run + last, false).exit_code == 0);
+    CHECK(std::max(fs::file_size(free_folder + "/a.svg"), fs::file_size(free_folder + "/c.svg")) < 15 * 1024);
+    CHECK(fs::file_size(free_folder + (last.find("html") != std::string::npos ? "/b.html" : "/d.svg")) > 30 * 1024);
+    fs::remove_all(free_folder);
+
+    const std::string folder = temporary_folder();
+    std::ofstream(folder + "/a.svg") << "an earlier a.svg\n";
+    const LimitedRun limited = run_in(folder, run + last, true, "", 30);
+    INFO("stderr: " << limited.err);
+    CHECK(limited.exit_code == 2);
+    CHECK(std::count(limited.err.begin(), limited.err.end(), '\n') == 1);
+    // The earlier a.svg as it was, no c.svg, no temporaries; a chart's data and script stay.
+    CHECK(read_all(folder + "/a.svg") == "an earlier a.svg\n");
+    const std::set<std::string> left = last.find("html") != std::string::npos
+                                           ? std::set<std::string>{"a.svg"}
+                                           : std::set<std::string>{"a.svg", "d.svg.data.csv", "d.svg.gp"};
+    CHECK(names_in(folder) == left);
+    fs::remove_all(folder);
+  }
+}
+
+TEST_CASE("the built-in jansen and mustang: drawings and page of one run all in place, or none", "[cli][full-disk]") {
+  // Under 50 blocks (25 KiB in sh's, 50 KiB in bash's) the pose and the animation fit, the page not.
+  for (const std::string name : {"jansen", "mustang"}) {
+    const std::string run = "mechanism " + name + " --sweep 0:50:10 --svg a.svg --animate c.svg --html b.html";
+    INFO("numlab " << run);
+    const std::string free_folder = temporary_folder();
+    REQUIRE(run_in(free_folder, run, false).exit_code == 0);
+    CHECK(std::max(fs::file_size(free_folder + "/a.svg"), fs::file_size(free_folder + "/c.svg")) < 25 * 1024);
+    CHECK(fs::file_size(free_folder + "/b.html") > 50 * 1024);
+    fs::remove_all(free_folder);
+    const std::string folder = temporary_folder();
+    const LimitedRun limited = run_in(folder, run, true, "", 50);
+    CHECK(limited.exit_code == 2);
+    CHECK(limited.err == "numlab: error: cannot write 'b.html': File too large\n");
+    CHECK(names_in(folder).empty());
+    fs::remove_all(folder);
+  }
 }
 
 TEST_CASE("mechanism --chart: the chart whole or absent when the disk fills; its data and script stay", "[cli][full-disk]") {
