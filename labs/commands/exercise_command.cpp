@@ -291,14 +291,17 @@ int ExerciseCommand::check() const {
   if (out) {
     ensure_directory(out_dir_);
     // trace.html only for a failing trace check; one a run before left is removed (it would mislead).
-    if (const exercises::CheckResult* traced = exercises::failing_trace_check(results)) {
-      write_file_atomically(outputs[3].path, exercises::trace_page_html(exercise, *traced, variant));
-    } else {
+    // The pages and results.json all in place, or none (a full disk): the old trace.html goes after.
+    FileBatch files;
+    const exercises::CheckResult* traced = exercises::failing_trace_check(results);
+    if (traced != nullptr) files.add(outputs[3].path, exercises::trace_page_html(exercise, *traced, variant));
+    files.add(outputs[0].path, exercises::results_html(exercise, results, shell_words(program_), variant));
+    files.add(outputs[1].path, json.dump(2) + "\n");
+    files.commit();
+    if (traced == nullptr) {
       std::error_code ignored;
       fs::remove(outputs[3].path, ignored);
     }
-    write_file_atomically(outputs[0].path, exercises::results_html(exercise, results, shell_words(program_), variant));
-    write_file_atomically(outputs[1].path, json.dump(2) + "\n");
     write_replays(out_dir_, replays);
   }
   return exit_code_for(results);
