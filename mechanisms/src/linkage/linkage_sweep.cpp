@@ -340,6 +340,12 @@ LinkagePose make_pose(const LinkageSolver& solver, double user, double t, Linkag
         pose.closed_form_bound = closed_form_bound(solver, t, pose.q, conditioning.inverse_norm);
       }
     }
+  } else if (pose.q.size() == model.unknown_count()) {
+    // Where the solve stopped, it may have stopped short of t (a sub-step): the residual shown is
+    // the one at t itself, never a sub-step's small one beside a failed status.
+    Eigen::VectorXd f;
+    model.residual(pose.q, t, f);
+    pose.outcome.residual_norm = f.size() == 0 ? 0.0 : f.lpNorm<Eigen::Infinity>();
   }
   return pose;
 }
@@ -668,7 +674,9 @@ LinkagePose LinkageSweepStepper::State::next_pose(LinkageSweep& sweep, double us
   LinkagePose pose = make_pose(solver, user, t, std::move(solution), guess);
   pose.step_halvings = halvings;
   if (repeated) pose.not_tried_past = model.driver_to_user(continuation.stuck->failed_at);
-  pose.jumped = jump.distance > 0.0;
+  // A "jump" at the shortest sub-step towards a t where nothing assembles is the fold itself: near
+  // it the branch and its twin meet and the prediction fails. It is a limit (3.), not a branch left.
+  pose.jumped = jump.distance > 0.0 && failure_cause(solver, t, pose.q).assembles;
   if (pose.jumped) note_jump(sweep, user, jump);
   note_limit(continuation, sweep, pose, t);  // 3.
   if (pose.outcome.status == Status::converged) {

@@ -348,7 +348,9 @@ TEST_CASE("past the ends at 1e-8 ... 1e8: watt-straight-line's folds and hydraul
     double start, stop, step;
   };
   // Watt's rocker folds at -64.59 and +64.59 deg (block 2, C, cannot close); the boom's stroke
-  // ends at 0.42 and 2.58 m, past which the sweep reports a pose that left its branch (at k = 1 too).
+  // ends where P, O and B are collinear, |PB| = |OB| -/+ |OP| = 1.5 -/+ sqrt(0.9^2 + 0.6^2) m =
+  // 0.418 and 2.582 m: a fold each, a limit, never a branch left (until 8597ceb's successor a
+  // sub-step next to 2.582 met the twin branch and the sweep reported "it left its branch").
   const Range ranges[] = {{"watt-straight-line", 0.0, 120.0, 5.0}, {"watt-straight-line", 0.0, -120.0, -5.0},
                           {"hydraulic-boom", 1.0, 2.7, 0.05}, {"hydraulic-boom", 2.2, 0.3, -0.05}};
   for (const Range& r : ranges) {
@@ -372,7 +374,17 @@ TEST_CASE("past the ends at 1e-8 ... 1e8: watt-straight-line's folds and hydraul
           }
         }
         check_like_unit_scale(sweep, unit_sweep, k, length_driver, unit_solver.size());
-        CHECK(sweep.jumps.size() == unit_sweep.jumps.size());
+        CHECK(sweep.jumps.empty());
+        REQUIRE(sweep.limits.size() == 1);
+        CHECK_FALSE(sweep.limits[0].assembles_beyond);
+        if (r.name == "hydraulic-boom") {
+          const double end = (r.step > 0.0 ? 1.5 + std::sqrt(1.17) : 1.5 - std::sqrt(1.17)) * k;
+          CHECK(std::abs(sweep.limits[0].driver - end) <= sweep.limits[0].bracket);
+        }
+        // A pose that failed shows its residual at its own driver value, never a sub-step's.
+        for (const LinkagePose& pose : sweep.poses) {
+          if (pose.outcome.status != Status::converged) CHECK(pose.outcome.residual_norm > 1e-6 * k);
+        }
       }
     }
   }
