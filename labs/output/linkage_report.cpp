@@ -49,6 +49,13 @@ double second_driver_at(const LinkageModel& model, const LinkagePose& pose) {
 }
 
 // The driver in words: "crank" or "motor" (per radian of it), "travel" or "length" (per unit of it).
+// A coordinate (or a speed, `decimals` 4) in the text table: the decimals it has for a model of size
+// about 1, and more for a smaller one, so a model in micrometres shows as many digits as one in metres.
+std::string fixed_for_size(double value, int decimals, double size) {
+  const int more = size > 0.0 && std::isfinite(size) ? std::max(0, -static_cast<int>(std::floor(std::log10(size)))) : 0;
+  return fmt::format("{:.{}f}", value, decimals + more);
+}
+
 std::string driver_word(const LinkageModel& model) {
   constexpr const char* words[] = {"crank", "travel", "length", "motor"};
   return words[static_cast<int>(model.driver_kind())];
@@ -520,8 +527,9 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
     }
     const auto& pose = r.sweep.poses[i];
     const JointMotion m = motion(r.model, pose, tracked);
-    std::vector<std::string> row{fmt::format("{:g}", pose.driver), fmt::format("{:.6f}", m.p.x()), fmt::format("{:.6f}", m.p.y()),
-                                 fmt::format("{:.4f}", m.v.norm()), scientific(pose.condition), std::to_string(pose.outcome.iterations),
+    const double size = r.solver.size();
+    std::vector<std::string> row{fmt::format("{:g}", pose.driver), fixed_for_size(m.p.x(), 6, size), fixed_for_size(m.p.y(), 6, size),
+                                 fixed_for_size(m.v.norm(), 4, size), scientific(pose.condition), std::to_string(pose.outcome.iterations),
                                  scientific(pose.outcome.residual_norm),
                                  std::isnan(pose.not_tried_past) ? std::string(to_string(pose.outcome.status)) : "not tried"};
     if (two_drivers) row.insert(row.begin() + 1, fmt::format("{:g}", second_driver_at(r.model, pose)));

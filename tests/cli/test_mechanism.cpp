@@ -6,12 +6,18 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "run_numlab.hpp"
 
 using numlab::test::require_bad_input;
 using numlab::test::run_json;
+using numlab::test::read_all;
 using numlab::test::run_numlab;
+using numlab::test::temporary_file;
+using numlab::test::ProgramRun;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
@@ -142,4 +148,29 @@ TEST_CASE("mechanism jansen10 --trace and --step: no terminal, no pause", "[cli]
   CHECK_THAT(run.err, !Contains("press Enter"));
   const auto out = run_json("mechanism jansen10", "--sweep 0:10:5 --step", 0);
   CHECK(out["poses"].size() == 3);
+}
+
+TEST_CASE("mechanism FILE: the text table shows a micrometre model's coordinates to the same digits as one in metres",
+          "[cli][mechanism][scales]") {
+  // The shipped four-bar (lengths 1.5 ... 4.5) and the same in micrometres (every length x 1e-6):
+  // with a fixed 6 decimals the small one's B showed as 0.000004, one digit of seven.
+  const std::string unit = read_all(std::string(NUMLAB_MODELS_DIR) + "/four-bar.toml");
+  std::string small = unit;
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"[0.0, 0.0]", "[0.0, 0.0]"}, {"[4.5, 0.0]", "[4.5e-6, 0.0]"}, {"[0.75, 1.3]", "[0.75e-6, 1.3e-6]"},
+           {"[4.0, 3.5]", "[4.0e-6, 3.5e-6]"}, {"length = 1.5", "length = 1.5e-6"}, {"length = 4.0", "length = 4.0e-6"},
+           {"length = 3.5", "length = 3.5e-6"}}) {
+    const auto at = small.find(from);
+    REQUIRE(at != std::string::npos);
+    small.replace(at, from.size(), to);
+  }
+  const std::string path = temporary_file("four-bar-um.toml", small);
+  const ProgramRun metres = run_numlab("mechanism " + std::string(NUMLAB_MODELS_DIR) + "/four-bar.toml --sweep 0:20:10");
+  const ProgramRun micrometres = run_numlab("mechanism " + path + " --sweep 0:20:10");
+  REQUIRE(metres.exit_code == 0);
+  REQUIRE(micrometres.exit_code == 0);
+  // The row at crank 10 deg: B = (3.894721, 3.447265), |v_B| = 1.3907 per radian, in metres; the
+  // same digits 1e-6 smaller.
+  CHECK_THAT(metres.out, Catch::Matchers::Contains("3.894721  3.447265  1.3907"));
+  CHECK_THAT(micrometres.out, Catch::Matchers::Contains("0.000003894721  0.000003447265  0.0000013907"));
 }

@@ -349,7 +349,7 @@ TEST_CASE("past the ends at 1e-8 ... 1e8: watt-straight-line's folds and hydraul
   };
   // Watt's rocker folds at -64.59 and +64.59 deg (block 2, C, cannot close); the boom's stroke
   // ends where P, O and B are collinear, |PB| = |OB| -/+ |OP| = 1.5 -/+ sqrt(0.9^2 + 0.6^2) m =
-  // 0.418 and 2.582 m: a fold each, a limit, never a branch left (until 8597ceb's successor a
+  // 0.418 and 2.582 m: a fold each, a limit, never a branch left (before 23dcc77 a
   // sub-step next to 2.582 met the twin branch and the sweep reported "it left its branch").
   const Range ranges[] = {{"watt-straight-line", 0.0, 120.0, 5.0}, {"watt-straight-line", 0.0, -120.0, -5.0},
                           {"hydraulic-boom", 1.0, 2.7, 0.05}, {"hydraulic-boom", 2.2, 0.3, -0.05}};
