@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "linkage_page/linkage_page_data.hpp"
+#include "output/driver_units.hpp"
 #include "numlab/mechanisms/linkage/linkage_blocks.hpp"
 
 namespace numlab::cli {
@@ -15,15 +16,7 @@ namespace {
 std::string unit_of(const mechanisms::LinkageModel& model) { return model.description().driver.angle() ? " deg" : ""; }
 
 // What the velocities are per: a radian of the driver's angle, or a unit of its travel or length.
-std::string per_driver(const mechanisms::LinkageModel& model) {
-  switch (model.description().driver.kind) {
-    case mechanisms::DriverKind::crank: return "radian of crank";
-    case mechanisms::DriverKind::motor: return "radian of the motor's angle";
-    case mechanisms::DriverKind::slider: return "unit of slider travel";
-    case mechanisms::DriverKind::actuator: return "unit of the actuator's length";
-  }
-  return "unit of the driver";
-}
+std::string per_driver(const mechanisms::LinkageModel& model) { return velocity_per(model.driver_kind()); }
 
 std::string block_text(const LinkageReport& r, int block) {
   if (block < 0 || static_cast<std::size_t>(block) >= r.solver.blocks().size()) return "no block named";

@@ -1,5 +1,7 @@
 #include "output/format.hpp"
 
+#include "output/exit_codes.hpp"
+
 #include <cmath>
 
 namespace numlab::cli {

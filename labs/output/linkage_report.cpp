@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "numlab/mechanisms/linkage/linkage_structure.hpp"
+#include "output/driver_units.hpp"
 #include "output/table.hpp"
 
 namespace numlab::cli {
@@ -48,7 +49,6 @@ double second_driver_at(const LinkageModel& model, const LinkagePose& pose) {
   return std::isnan(pose.second_driver) ? model.second_driver() : pose.second_driver;
 }
 
-// The driver in words: "crank" or "motor" (per radian of it), "travel" or "length" (per unit of it).
 // A coordinate (or a speed, `decimals` 4) in the text table: the decimals it has for a model of size
 // about 1, and more for a smaller one, so a model in micrometres shows as many digits as one in metres.
 std::string fixed_for_size(double value, int decimals, double size) {
@@ -57,6 +57,7 @@ std::string fixed_for_size(double value, int decimals, double size) {
   return fmt::format("{:.{}f}", value, decimals + more);
 }
 
+// The driver in words: "crank" or "motor" (per radian of it), "travel" or "length" (per unit of it).
 std::string driver_word(const LinkageModel& model) {
   constexpr const char* words[] = {"crank", "travel", "length", "motor"};
   return words[static_cast<int>(model.driver_kind())];
@@ -451,7 +452,7 @@ nlohmann::ordered_json linkage_json(const LinkageReport& r, const nlohmann::orde
     if (has_loads(r)) out["poses"].back()["statics"] = statics_json(r, supports, statics.solve(pose));
   }
   out["status"] = std::string(to_string(r.status));
-  out["links_per"] = r.model.crank_driven() ? "radian of crank" : "unit of slider travel";
+  out["links_per"] = velocity_per(r.model.driver_kind());
   out["output"] = r.output ? nlohmann::ordered_json(r.output->name) : nlohmann::ordered_json();
   out["speed_rad_s"] = r.speed_rad_s ? nlohmann::ordered_json(*r.speed_rad_s) : nlohmann::ordered_json();
   out["branch_kept"] = r.sweep.branch_kept;
@@ -570,8 +571,8 @@ void print_linkage_text(std::ostream& out, const LinkageReport& r, const std::st
                        r.jacobian->worst.agrees ? "agrees" : "DISAGREES " + nonlinear::describe_worst_entry(r.jacobian->worst));
   }
   out << fmt::format("time               {:.3g} s\n", r.time_s)
-      << (r.model.crank_driven() ? "velocities per radian of " + driver_word(r.model) + ", accelerations per radian squared\n"
-                                 : "velocities per unit of " + std::string(r.model.driver_kind() == DriverKind::slider ? "slider travel" : "actuator length") + "\n");
+      << "velocities per " << velocity_per(r.model.driver_kind())
+      << (r.model.crank_driven() ? ", accelerations per radian squared\n" : "\n");
   if (r.model.has_second_driver()) {
     out << fmt::format("second driver      {} held {}; velocities are the first driver's partial derivatives\n",
                        second_driver_column(r.model),

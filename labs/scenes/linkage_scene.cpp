@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "output/driver_units.hpp"
 #include "output/svg_canvas.hpp"
 #include "scenes/ground_drawing.hpp"
 #include "scenes/label_placement.hpp"
@@ -525,9 +526,10 @@ std::string arrows_at(const Scene& scene, const JointPositions& now, const Eigen
                        "stroke-width=\"{:.3g}\" marker-end=\"url(#velocity-head)\"/>\n",
                        from.x(), -from.y(), to.x(), -to.y(), arrow_colour, 0.7 * scene.unit);
   }
-  caption.lines.push_back(fmt::format("arrows: velocity per {}; an arrow 1 unit long stands for {:.3g} units per {}",
-                                      model.crank_driven() ? "radian of crank" : "unit of slider travel", 1.0 / scale,
-                                      model.crank_driven() ? "radian" : "unit of travel"));
+  caption.lines.push_back(fmt::format("arrows: velocity per {}{}; an arrow 1 unit long stands for {:.3g} units per {}",
+                                      velocity_per(model.driver_kind()),
+                                      model.has_second_driver() ? " (the second driver held: partial derivatives)" : "",
+                                      1.0 / scale, model.crank_driven() ? "radian" : "unit of the driver"));
   return svg;
 }
 

@@ -199,3 +199,24 @@ TEST_CASE("mechanism FILE: a sweep past the boom's stroke names the fold, and it
   }
   CHECK(failed == 2);
 }
+
+TEST_CASE("mechanism FILE: velocities are said to be per the driver's own unit, in the text, the JSON and the drawing",
+          "[cli][mechanism]") {
+  struct Case {
+    std::string model, sweep, per;
+  };
+  const std::string folder = numlab::test::temporary_folder();
+  for (const Case& c : {Case{"four-bar", "0:20:10", "radian of crank"}, Case{"hydraulic-boom", "1.4:1.6:0.1", "unit of actuator length"},
+                        Case{"slider-crank", "0:20:10", "radian of crank"}, Case{"five-bar", "80:100:10", "radian of crank"}}) {
+    INFO(c.model);
+    const std::string file = std::string(NUMLAB_MODELS_DIR) + "/" + c.model + ".toml";
+    const ProgramRun text = run_numlab("mechanism " + file + " --sweep " + c.sweep);
+    REQUIRE(text.exit_code == 0);
+    CHECK_THAT(text.out, Contains("velocities per " + c.per));
+    CHECK(run_json("mechanism", file + " --sweep " + c.sweep, 0)["links_per"] == c.per);
+    const std::string svg = folder + "/" + c.model + ".svg";
+    REQUIRE(run_numlab("mechanism " + file + " --sweep " + c.sweep + " --svg " + svg + " --arrows").exit_code == 0);
+    const bool two = c.model == "five-bar";
+    CHECK_THAT(read_all(svg), Contains("arrows: velocity per " + c.per + (two ? " (the second driver held: partial derivatives)" : ";")));
+  }
+}
