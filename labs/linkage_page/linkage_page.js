@@ -74,6 +74,41 @@
       }
     }
   }
+  // 2b. The forces, for a file with [[load]]s: each load as the file gives it (a force or a mass's
+  // weight at its joint, a torque on a link or body) and each support's reaction at the pose, the
+  // CSV's reaction_S_x, reaction_S_y (the force the ground, or a slider's guide, exerts on the
+  // mechanism at S). One scale for the sweep: the largest force of the sweep (a load, or a reaction
+  // where the statics are in equilibrium) a quarter of the frame's larger side. Arrows start at their joint.
+  const loads = data.loads || [];
+  const hasForces = loads.length > 0;
+  const statics = cols.statics || [];
+  const supportJoint = [], supportName = [], reactionX = [], reactionY = [];
+  (hasForces ? data.csv_columns : []).forEach(function (c) {
+    const m = /^reaction_(.+)_x$/.exec(c);
+    const j = m ? joints.findIndex(function (joint) { return joint.name === m[1]; }) : -1;
+    if (j < 0 || !cols['reaction_' + m[1] + '_y']) return;
+    supportJoint.push(j); supportName.push(m[1]);
+    reactionX.push(cols[c]); reactionY.push(cols['reaction_' + m[1] + '_y']);
+  });
+  function inEquilibrium(i) { return ok[i] && statics[i] === 'equilibrium'; }
+  function finiteForce(x, y) { return x !== null && y !== null && isFinite(x) && isFinite(y); }
+  let largestForce = 0;
+  loads.forEach(function (l) { if (l.force) largestForce = Math.max(largestForce, Math.hypot(l.force[0], l.force[1])); });
+  for (let i = 0; i < count; ++i) {
+    if (!inEquilibrium(i)) continue;
+    for (let s = 0; s < supportJoint.length; ++s) {
+      if (finiteForce(reactionX[s][i], reactionY[s][i])) largestForce = Math.max(largestForce, Math.hypot(reactionX[s][i], reactionY[s][i]));
+    }
+  }
+  const forceScale = largestForce > 0 ? 0.25 * side / largestForce : 0;  // drawing units per newton
+  for (let i = 0; i < count && forceScale > 0; ++i) {
+    if (!ok[i]) continue;
+    loads.forEach(function (l) { if (l.force) include(xs[l.joint][i] + l.force[0] * forceScale, ys[l.joint][i] + l.force[1] * forceScale); });
+    for (let s = 0; s < supportJoint.length && inEquilibrium(i); ++s) {
+      const j = supportJoint[s];
+      if (finiteForce(reactionX[s][i], reactionY[s][i])) include(xs[j][i] + reactionX[s][i] * forceScale, ys[j][i] + reactionY[s][i] * forceScale);
+    }
+  }
   const pad = 9 * u;
   const view = [minX - pad, -maxY - pad, maxX - minX + 2 * pad, maxY - minY + 2 * pad];
 
@@ -113,6 +148,11 @@
   const marker = element('marker', {id: 'live-velocity-head', viewBox: '0 0 10 10', refX: 8, refY: 5, markerWidth: 4,
                                     markerHeight: 4, orient: 'auto'}, defs);
   element('path', {d: 'M 0 0 L 10 5 L 0 10 z', class: 'arrow-head'}, marker);
+  ['load', 'reaction'].forEach(function (kind) {
+    const m = element('marker', {id: 'live-' + kind + '-head', viewBox: '0 0 10 10', refX: 8, refY: 5, markerWidth: 4,
+                                 markerHeight: 4, orient: 'auto'}, defs);
+    element('path', {d: 'M 0 0 L 10 5 L 0 10 z', class: kind + '-head'}, m);
+  });
   const guideLayer = element('g', {class: 'guides'}, svg);
   const pathLayer = element('g', {class: 'paths'}, svg);
   const groundLayer = element('g', {class: 'ground'}, svg);
@@ -121,6 +161,7 @@
   const sliderLayer = element('g', {class: 'sliders'}, svg);
   const jointLayer = element('g', {class: 'joints'}, svg);
   const arrowLayer = element('g', {class: 'arrows'}, svg);
+  const forceLayer = element('g', {class: 'forces', id: 'forces'}, svg);
   const nameLayer = element('g', {class: 'names'}, svg);
   const notAssembled = element('text', {x: view[0] + view[2] / 2, y: view[1] + 6 * u, 'font-size': 5 * u,
                                         class: 'not-assembled', 'text-anchor': 'middle'}, svg);
@@ -203,6 +244,35 @@
     if (joint.ground || !vxs[joints.indexOf(joint)]) return null;
     return element('line', {class: 'velocity', 'stroke-width': 0.7 * u, 'marker-end': 'url(#live-velocity-head)'}, arrowLayer);
   });
+  // The forces' shapes: a line per force load and per support's reaction, an arc per torque load
+  // (counter-clockwise or clockwise as its sign), each with a title saying what it is.
+  function loadText(l) {
+    if (l.kind === 'torque') {
+      return 'torque ' + number(l.torque, 10) + ' N\u00b7(length unit) on ' + l.link + ' (' + (l.torque >= 0 ? 'counter-clockwise' : 'clockwise') + ')';
+    }
+    const f = '(' + number(l.force[0], 10) + ', ' + number(l.force[1], 10) + ') N';
+    return l.kind === 'mass' ? 'mass ' + number(l.mass, 10) + ' kg at ' + joints[l.joint].name + ': its weight ' + f +
+      ' (g = ' + number(l.gravity, 10) + ' m/s\u00b2)' : 'force ' + f + ' at ' + joints[l.joint].name;
+  }
+  function supportText(s) {
+    return joints[supportJoint[s]].ground ? 'the force the ground exerts on the mechanism at ' + supportName[s]
+      : 'the force the guide of ' + supportName[s] + '\'s slider exerts on it (normal to the guide)';
+  }
+  const loadShapes = loads.map(function (l, k) {
+    const e = l.kind === 'torque'
+      ? element('path', {class: 'torque-load', 'data-load': k, 'data-torque': l.torque, 'stroke-width': 0.7 * u,
+                         'marker-end': 'url(#live-load-head)'}, forceLayer)
+      : element('line', {class: 'load', 'data-load': k, 'stroke-width': 0.8 * u, 'marker-end': 'url(#live-load-head)'}, forceLayer);
+    element('title', {}, e).textContent = 'load: ' + loadText(l);
+    return e;
+  });
+  const reactionShapes = supportName.map(function (name, s) {
+    const e = element('line', {class: 'reaction', 'data-support': name, 'stroke-width': 0.8 * u,
+                               'marker-end': 'url(#live-reaction-head)'}, forceLayer);
+    element('title', {}, e).textContent = 'reaction: ' + supportText(s);
+    return e;
+  });
+  const forceEnds = new Float64Array(4 * (loads.length + supportName.length));  // x1 y1 x2 y2 of each line drawn, NaN if none
   const names = joints.map(function (joint) {
     const t = element('text', {'font-size': 4.5 * u, 'text-anchor': 'middle', 'dominant-baseline': 'central'}, nameLayer);
     t.textContent = joint.name;
@@ -219,7 +289,8 @@
   const jointRadius = 1.6 * u + 0.35 * u;  // the circle with half its stroke
   const outlineSides = bodies.reduce(function (total, b) { return total + b.outline.length; }, 0);
   const labels = numlabLabels.placer(nameBoxes.map(function (b) { return b.hx; }), nameBoxes.map(function (b) { return b.hy; }),
-                                     jointRadius, u, links.length + outlineSides + 2 * joints.length + sliders.length + 2);
+                                     jointRadius, u, links.length + outlineSides + 2 * joints.length + sliders.length + 2 +
+                                     loads.length + supportName.length);
   labels.frame = [view[0], view[1], view[0] + view[2], view[1] + view[3]];
   const neighbours = joints.map(function () { return []; });
   data.links.forEach(function (l) { neighbours[l[0]].push(l[1]); neighbours[l[1]].push(l[0]); });
@@ -297,6 +368,27 @@
     rateText = 'Play runs through the sweep in 4 s (a fixed rate).';
   }
   html('p', {class: 'play-rate', id: 'play-rate'}, left, rateText);
+
+  // The forces' switch (a checkbox: Space toggles it), their scale and why a pose has no reactions.
+  let forcesOn = hasForces, forceNote = null;
+  if (hasForces) {
+    const toggle = html('p', {class: 'force-toggle'}, left);
+    const check = html('input', {type: 'checkbox', id: 'show-forces'}, toggle);
+    check.checked = true;
+    html('label', {for: 'show-forces'}, toggle, ' Show the forces: the loads (purple) and the supports\' reactions (orange)');
+    check.addEventListener('change', function () {
+      forcesOn = check.checked;
+      forceLayer.style.display = forcesOn ? '' : 'none';
+      show(shown);  // the names placed again, clear of the arrows or not
+    });
+    html('p', {class: 'force-scale', id: 'force-scale'}, left, forceScale > 0
+      ? 'Force arrows start at their joint; an arrow 1 unit of length long stands for ' + number(1 / forceScale, 6) +
+        ' N (the largest force of the sweep, ' + number(largestForce, 6) + ' N, is a quarter of the frame\'s larger side). ' +
+        'A reaction is ' + supportName.map(function (name, s) { return supportText(s); }).join('; ') +
+        '. A torque load is a curved arrow on its link, turning its way.'
+      : 'The loads and reactions are all zero: no force arrow to draw.');
+    forceNote = html('p', {class: 'force-note', id: 'force-note', 'aria-live': 'polite'}, left);
+  }
   left.appendChild(caption);
 
   // 5. The readout: the pose's numbers, each carrying its column and full value.
@@ -322,6 +414,23 @@
   if (torqueColumn) {
     factCells.push([fact(torqueColumn === 'driver_torque' ? 'driver torque (CCW +)' : 'driver force', torqueColumn), torqueColumn]);
     factCells.push([fact('statics', 'statics'), 'statics']);
+  }
+  // The reactions at the pose (N): x, y from the CSV, and their magnitude; then the loads.
+  const reactionCells = [];
+  if (hasForces) {
+    const table = html('table', {class: 'reaction-table', id: 'reaction-table'}, readout);
+    html('caption', {}, table, 'Reactions at the supports (N): the force on the mechanism at each');
+    const top = html('tr', {}, html('thead', {}, table));
+    ['support', 'x', 'y', '|F|'].forEach(function (h) { html('th', {scope: 'col'}, top, h); });
+    const rows = html('tbody', {}, table);
+    supportName.forEach(function (name, s) {
+      const row = html('tr', {}, rows);
+      html('th', {scope: 'row', title: supportText(s)}, row, name + (joints[supportJoint[s]].ground ? ' (ground)' : ' (guide)'));
+      reactionCells.push([html('td', {'data-col': 'reaction_' + name + '_x'}, row), html('td', {'data-col': 'reaction_' + name + '_y'}, row),
+                          html('td', {class: 'magnitude'}, row)]);
+    });
+    const list = html('ul', {class: 'load-list', id: 'load-list'}, readout);
+    loads.forEach(function (l) { html('li', {}, list, 'load: ' + loadText(l)); });
   }
   const jointTable = html('table', {class: 'joint-table', id: 'joint-table'}, readout);
   const head = html('tr', {}, html('thead', {}, jointTable));
@@ -381,7 +490,7 @@
     svg.classList.toggle('stale', !here);
     notAssembled.textContent = here ? '' : 'This pose did not assemble (' + statuses[i] + '): the last assembled pose is drawn faded';
     const at = here ? i : lastDrawn;
-    if (at >= 0) draw(at);
+    if (at >= 0) { drawForces(i, at); draw(at); }
     status.textContent = driverText(i) + ': ' + (statuses[i] || '') + (here ? '' : ' (not assembled)');
     slider.setAttribute('aria-valuetext', status.textContent);
     factCells.forEach(function (f) {
@@ -399,7 +508,48 @@
         c[0].setAttribute('data-value', value === null ? '' : String(value));
       });
     });
+    reactionCells.forEach(function (cells, s) {
+      const x = reactionX[s][i], y = reactionY[s][i], m = finiteForce(x, y) ? Math.hypot(x, y) : null;
+      [x, y, m].forEach(function (value, c) {
+        cells[c].textContent = number(value, 7);
+        cells[c].setAttribute('data-value', value === null ? '' : String(value));
+      });
+    });
+    if (forceNote) {
+      forceNote.textContent = inEquilibrium(i) ? '' : 'No reactions at this pose: its statics are ' + (statics[i] || 'missing') +
+        (statics[i] === 'singular' ? ' (J is singular: no finite driver load and reactions hold the loads; the CSV writes inf)'
+          : ' (the pose did not assemble: the CSV writes nan)') + '.';
+    }
     charts.forEach(function (c) { c.cursor.setAttribute('x1', c.xOf(i)); c.cursor.setAttribute('x2', c.xOf(i)); });
+  }
+  // The forces at pose i, on the joints drawn at pose `at` (the same pose, or the last assembled one:
+  // there the loads are drawn and no reaction). Each line's ends go to forceEnds for the names.
+  function drawForces(i, at) {
+    forceEnds.fill(NaN);
+    loads.forEach(function (l, k) {
+      const shape = loadShapes[k];
+      if (l.kind === 'torque') {  // an arc of 270 deg round the link's joints' centre (y down: counter-clockwise is sweep 0)
+        let cx = 0, cy = 0;
+        l.joints.forEach(function (j) { const p = xy(j, at); cx += p[0] / l.joints.length; cy += p[1] / l.joints.length; });
+        const r = 4 * u, ccw = l.torque >= 0, a0 = (ccw ? 135 : 45) * Math.PI / 180, a1 = a0 + (ccw ? -1.5 : 1.5) * Math.PI;
+        shape.setAttribute('d', 'M ' + (cx + r * Math.cos(a0)) + ' ' + (cy + r * Math.sin(a0)) + ' A ' + r + ' ' + r + ' 0 1 ' +
+                           (ccw ? 0 : 1) + ' ' + (cx + r * Math.cos(a1)) + ' ' + (cy + r * Math.sin(a1)));
+        return;
+      }
+      const p = xy(l.joint, at), q = [p[0] + l.force[0] * forceScale, p[1] - l.force[1] * forceScale];
+      shape.setAttribute('x1', p[0]); shape.setAttribute('y1', p[1]); shape.setAttribute('x2', q[0]); shape.setAttribute('y2', q[1]);
+      forceEnds.set([p[0], p[1], q[0], q[1]], 4 * k);
+    });
+    const equilibrium = inEquilibrium(i);
+    reactionShapes.forEach(function (shape, s) {
+      const fx = reactionX[s][i], fy = reactionY[s][i];
+      const visible = equilibrium && finiteForce(fx, fy) && Math.hypot(fx, fy) > 0;
+      shape.style.display = visible ? '' : 'none';
+      if (!visible) return;
+      const p = xy(supportJoint[s], i), q = [p[0] + fx * forceScale, p[1] - fy * forceScale];
+      shape.setAttribute('x1', p[0]); shape.setAttribute('y1', p[1]); shape.setAttribute('x2', q[0]); shape.setAttribute('y2', q[1]);
+      forceEnds.set([p[0], p[1], q[0], q[1]], 4 * (loads.length + s));
+    });
   }
   let lastDrawn = -1;
   function draw(i) {
@@ -490,6 +640,9 @@
       if (n < 1e-9) { dx = 0; dy = -1; } else { dx /= n; dy /= n; }
       labels.ax[j] = p[0]; labels.ay[j] = p[1]; labels.px[j] = dx; labels.py[j] = dy;
     });
+    for (let k = 0; forcesOn && k < forceEnds.length; k += 4) {
+      if (forceEnds[k] === forceEnds[k]) labels.segment(forceEnds[k], forceEnds[k + 1], forceEnds[k + 2], forceEnds[k + 3], 0.8 * u, true);
+    }
     labels.place();
     names.forEach(function (t, j) {
       t.setAttribute('x', labels.cx[j] - nameBoxes[j].ox);

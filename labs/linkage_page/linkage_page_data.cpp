@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "numlab/mechanisms/linkage/link_motion.hpp"
 #include "output/linkage_report.hpp"
 
 namespace numlab::cli {
@@ -89,6 +90,27 @@ ordered_json drawing_of(const LinkageDescription& d) {
                       {"slider", d.driver.slider}}}};
 }
 
+// 3. The loads, as the file gives them: a force at a joint (N), a mass at a joint with its weight
+// (0, -m g) N, a torque (N x length unit, counter-clockwise +) on a link or body and that item's joints.
+ordered_json loads_of(const LinkageDescription& d) {
+  const auto lines = mechanisms::link_lines(d);
+  ordered_json loads = ordered_json::array();
+  for (const auto& load : d.loads) {
+    if (load.kind == mechanisms::LoadKind::torque) {
+      const auto& line = lines.at(static_cast<std::size_t>(load.line));
+      const std::size_t body = static_cast<std::size_t>(load.line) - d.links.size();  // bodies follow the links
+      const std::vector<int> on = line.body ? d.bodies.at(body).joints : std::vector<int>{line.from, line.to};
+      loads.push_back({{"kind", "torque"}, {"link", line.name}, {"joints", on}, {"torque", load.torque}});
+    } else if (load.kind == mechanisms::LoadKind::mass) {
+      loads.push_back({{"kind", "mass"}, {"joint", load.joint}, {"mass", load.mass}, {"gravity", d.gravity},
+                       {"force", {0.0, -load.mass * d.gravity}}});
+    } else {
+      loads.push_back({{"kind", "force"}, {"joint", load.joint}, {"force", {load.force.x(), load.force.y()}}});
+    }
+  }
+  return loads;
+}
+
 }  // namespace
 
 nlohmann::ordered_json linkage_page_data(const PageSource& source) {
@@ -107,6 +129,7 @@ nlohmann::ordered_json linkage_page_data(const PageSource& source) {
                        {"driver_column", names.front()},
                        {"speed_rad_s", source.speed_rad_s ? ordered_json(*source.speed_rad_s) : ordered_json(nullptr)}};
   data.update(drawing_of(d));
+  data["loads"] = loads_of(d);
   data["transmission_window"] = {transmission_low_deg, transmission_high_deg};
   ordered_json marks = ordered_json::array();
   for (const auto& mark : source.marks) marks.push_back({{"driver", mark.driver}, {"kind", mark.kind}, {"text", mark.text}});
