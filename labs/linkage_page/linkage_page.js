@@ -162,6 +162,7 @@
   const jointLayer = element('g', {class: 'joints'}, svg);
   const arrowLayer = element('g', {class: 'arrows'}, svg);
   const forceLayer = element('g', {class: 'forces', id: 'forces'}, svg);
+  if (forceScale > 0) forceLayer.setAttribute('data-newtons-per-unit', 1 / forceScale);  // the scale, in full
   const nameLayer = element('g', {class: 'names'}, svg);
   const notAssembled = element('text', {x: view[0] + view[2] / 2, y: view[1] + 6 * u, 'font-size': 5 * u,
                                         class: 'not-assembled', 'text-anchor': 'middle'}, svg);
@@ -385,7 +386,7 @@
       ? 'Force arrows start at their joint; an arrow 1 unit of length long stands for ' + number(1 / forceScale, 6) +
         ' N (the largest force of the sweep, ' + number(largestForce, 6) + ' N, is a quarter of the frame\'s larger side). ' +
         'A reaction is ' + supportName.map(function (name, s) { return supportText(s); }).join('; ') +
-        '. A torque load is a curved arrow on its link, turning its way.'
+        '.' + (loads.some(function (l) { return l.kind === 'torque'; }) ? ' A torque load is a curved arrow on its link, turning its way.' : '')
       : 'The loads and reactions are all zero: no force arrow to draw.');
     forceNote = html('p', {class: 'force-note', id: 'force-note', 'aria-live': 'polite'}, left);
   }

@@ -59,6 +59,39 @@ joint = "A"
 force = [3.0, -4.0]
 """
 
+PARALLELOGRAM_LOAD = """
+[[load]]
+joint = "B"
+mass = 1.0
+"""
+
+
+def model_file(case, models_dir):
+    """The description file of a page's model, or None for a built-in (jansen, jansen10, mustang)."""
+    mechanism = case.args[2]
+    if mechanism.endswith(".toml"):
+        path = pathlib.Path(mechanism)
+        return path if path.is_absolute() else pathlib.Path(models_dir) / mechanism
+    path = pathlib.Path(models_dir) / (mechanism + ".toml")
+    return path if case.name not in ("jansen", "jansen10", "mustang") and path.is_file() else None
+
+
+def file_loads(path):
+    """The loads of a description file as the page should carry them: (kind, joint name or link name,
+    force (Fx, Fy) in N or torque), a mass's force its weight (0, -m g) with the file's gravity."""
+    import tomllib
+    model = tomllib.loads(path.read_text())
+    gravity = model.get("linkage", {}).get("gravity", 9.80665)
+    loads = []
+    for load in model.get("load", []):
+        if "torque" in load:
+            loads.append(("torque", load["link"], load["torque"]))
+        elif "mass" in load:
+            loads.append(("mass", load["joint"], (0.0, -load["mass"] * gravity), load["mass"]))
+        else:
+            loads.append(("force", load["joint"], tuple(load["force"])))
+    return loads
+
 
 class Case:
     def __init__(self, name, args, page, csv_text, exit_code):
@@ -111,7 +144,13 @@ def make_pages(numlab, models_dir, out_dir):
     out.mkdir(parents=True, exist_ok=True)
     loads = out / "four-bar-loads.toml"
     loads.write_text(FOUR_BAR_LOADS)
-    todo = sweeps(models_dir) + [("four-bar-loads", str(loads), ["--sweep", "0:359:1", "--speed", "60rpm"])]
+    # The statics where they are not in equilibrium: the parallelogram with a mass at B is singular at
+    # its change points (0 and 180 deg); the boom past its stroke does not assemble (no_pose).
+    parallelogram = out / "parallelogram-loads.toml"
+    parallelogram.write_text((pathlib.Path(models_dir) / "parallelogram.toml").read_text() + PARALLELOGRAM_LOAD)
+    todo = sweeps(models_dir) + [("four-bar-loads", str(loads), ["--sweep", "0:359:1", "--speed", "60rpm"]),
+                                 ("parallelogram-loads", str(parallelogram), ["--sweep", "0:359:1"]),
+                                 ("hydraulic-boom-past-stroke", "hydraulic-boom", ["--sweep", "0.4:3.2:0.1"])]
     cases = []
     for name, mechanism, extra in todo:
         page = out / (name.replace(".toml", "") + ("-file" if name.endswith(".toml") else "") + ".html")

@@ -12,7 +12,16 @@ four-bar with loads at 60 rpm):
     joint circles stand at the CSV's x, -y;
  2. the keys on the slider (ArrowRight, Home, End), the buttons (previous, first, next) and the
     page's own keys on no control (ArrowRight, End, ArrowLeft) move one pose, or to the ends;
- 3. no console error or uncaught exception; a screenshot per page (OUT_DIR/NAME.png).
+ 3. no console error or uncaught exception; a screenshot per page (OUT_DIR/NAME.png);
+ 4. a model with loads (whitworth, inverted-slider-crank, hydraulic-boom, the four-bar with loads,
+    the parallelogram with a mass, the boom past its stroke), at poses across the sweep and every
+    pose not in equilibrium: each reaction arrow starts at its support and its vector (SVG ends
+    times the page's newtons per unit) is the CSV's reaction_S_x, _y (to 1e-12 of the largest force);
+    none where statics is not `equilibrium`, and a sentence naming the status; each load arrow is
+    the file's force (a mass's weight) at its joint, a torque's arc turns its way; the readout's
+    reactions and |F|; the reactions, the loads (and a crank's torque) balance in force and moment
+    from the page's numbers (1e-9); the checkbox hides and shows them (a click, then Space); the
+    stated scale and largest force. A model without loads has no force control at all.
 Then on particular pages: the Jansen cycle's frame time over 200 slider moves (median under 16 ms:
 the input event handled, style and layout done), the page with scripts off (the static SVG and the
 table of 360 rows), printed (no controls), with reduced motion (Play's rate says so); Play at the
@@ -32,7 +41,7 @@ HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "browser"))
 from browser import Browser  # noqa: E402
-from pages import make_pages  # noqa: E402
+from pages import file_loads, make_pages, model_file  # noqa: E402
 
 
 def shown_cells(page):
@@ -116,6 +125,117 @@ def scrub(page, case):
     page.press("ArrowLeft")
     checked += check_pose(page, case, n - 2)
     return checked
+
+
+FORCES = """(() => {
+  const g = document.getElementById('forces');
+  const line = e => ['x1', 'y1', 'x2', 'y2'].map(a => +e.getAttribute(a));
+  const shown = e => getComputedStyle(e).display !== 'none';
+  return {
+    layer: shown(g), npu: +g.getAttribute('data-newtons-per-unit'), note: document.getElementById('force-note').textContent,
+    reactions: Object.fromEntries([...g.querySelectorAll('line.reaction')].map(e => [e.getAttribute('data-support'), [shown(e), line(e)]])),
+    loads: [...g.querySelectorAll('.load, .torque-load')].map(e => [+e.getAttribute('data-load'), e.getAttribute('class'),
+      e.tagName === 'line' ? line(e) : e.getAttribute('d'), e.getAttribute('data-torque')]),
+    magnitudes: [...document.querySelectorAll('#reaction-table tbody tr')].map(r =>
+      [r.querySelector('td').getAttribute('data-col'), r.querySelector('td.magnitude').getAttribute('data-value')]),
+    values: Object.fromEntries([...document.querySelectorAll('#readout [data-col]')].map(e => [e.getAttribute('data-col'), e.getAttribute('data-value')]))
+  };
+})()"""
+
+
+def check_forces(page, case, models_dir):
+    """4. The force arrows and the reactions' readout at poses across the sweep; the checkbox. Returns
+    the arrows checked and the worst imbalance (force, moment) over their terms' sizes."""
+    n = len(case.rows)
+    statics = case.column("statics")
+    supports = [c[len("reaction_"):-2] for c in case.header if c.startswith("reaction_") and c.endswith("_x")]
+    expected = file_loads(model_file(case, models_dir))
+    data = page.eval("numlabLinkage.data")
+    names = [joint["name"] for joint in data["joints"]]
+    largest = max([math.hypot(*load[2]) for load in expected if load[0] != "torque"] +
+                  [math.hypot(float(row[case.header.index(f"reaction_{s}_x")]), float(row[case.header.index(f"reaction_{s}_y")]))
+                   for row, st in zip(case.rows, statics) if st == "equilibrium" for s in supports])
+    text = page.text("#force-scale")
+    stated = [float(v) for v in text.split("stands for ")[1].split(" N")[:1] + text.split("the largest force of the sweep, ")[1].split(" N")[:1]]
+    found = page.eval(FORCES)
+    assert found["layer"] and found["npu"] > 0 and abs(stated[0] - found["npu"]) <= 1e-5 * found["npu"], (case.name, text, found["npu"])
+    assert abs(stated[1] - largest) <= 1e-5 * largest, (case.name, text, largest)
+    poses = {0, n // 3, n // 2, 2 * n // 3, n - 1} | {i for i, st in enumerate(statics) if st != "equilibrium"}
+    arrows, worst = 0, [0.0, 0.0]
+    for i in sorted(poses):
+        page.set_range("#pose-slider", i)
+        check_pose(page, case, i)
+        found = page.eval(FORCES)
+        row = dict(zip(case.header, case.rows[i]))
+        npu, tol = found["npu"], 1e-12 * largest
+        assert set(found["reactions"]) == set(supports), (case.name, found["reactions"].keys(), supports)
+        if statics[i] != "equilibrium":
+            assert not any(shown for shown, _ in found["reactions"].values()), f"{case.name} pose {i}: a reaction drawn at {statics[i]}"
+            assert statics[i] in found["note"] and "No reactions" in found["note"], (case.name, i, found["note"])
+        else:
+            assert found["note"] == "", (case.name, i, found["note"])
+            force = [0.0, 0.0]
+            for s in supports:
+                shown, (x1, y1, x2, y2) = found["reactions"][s]
+                rx, ry = float(row[f"reaction_{s}_x"]), float(row[f"reaction_{s}_y"])
+                assert shown == (math.hypot(rx, ry) > 0), (case.name, i, s)
+                assert (x1, y1) == (float(row[f"x_{s}"]), -float(row[f"y_{s}"])), f"{case.name} pose {i}: {s}'s reaction starts at {x1, y1}"
+                vx, vy = (x2 - x1) * npu, -(y2 - y1) * npu
+                assert abs(vx - rx) <= tol and abs(vy - ry) <= tol, f"{case.name} pose {i}: {s}'s arrow is ({vx}, {vy}) N, the CSV ({rx}, {ry})"
+                arrows += 1
+        assert len(found["loads"]) == len(expected), (case.name, found["loads"], expected)
+        drawn_at = i if row["status"] == "converged" else None
+        for (k, kind, shape, torque), want in zip(found["loads"], expected):
+            if want[0] == "torque":
+                assert kind == "torque-load" and float(torque) == want[2], (case.name, kind, torque, want)
+                flags = shape.split(" A ")[1].split()
+                assert flags[3:5] == ["1", "0" if want[2] >= 0 else "1"], f"{case.name}: the torque's arc {shape} for {want[2]}"
+                continue
+            x1, y1, x2, y2 = shape
+            vx, vy = (x2 - x1) * npu, -(y2 - y1) * npu
+            assert kind == "load" and abs(vx - want[2][0]) <= tol and abs(vy - want[2][1]) <= tol, (case.name, i, kind, (vx, vy), want)
+            if drawn_at is not None:
+                assert (x1, y1) == (float(row[f"x_{want[1]}"]), -float(row[f"y_{want[1]}"])), (case.name, i, want, x1, y1)
+            arrows += 1
+        # The readout's |F| and the balance from the page's numbers (its readout, its loads).
+        for column, magnitude in found["magnitudes"]:
+            s = column[len("reaction_"):-2]
+            rx, ry = float(row[f"reaction_{s}_x"]), float(row[f"reaction_{s}_y"])
+            if not (math.isfinite(rx) and math.isfinite(ry)):
+                assert magnitude == "", (case.name, i, s, magnitude)
+            else:  # the browser's Math.hypot and Python's may differ in the last bit
+                assert abs(float(magnitude) - math.hypot(rx, ry)) <= 4e-16 * math.hypot(rx, ry), (case.name, i, s, magnitude)
+        if statics[i] == "equilibrium":
+            values = {c: float(v) for c, v in found["values"].items() if v not in ("", None) and c != "status" and c != "statics"
+                      and c != "branch_kept"}
+            fx = fy = moment = fsize = msize = 0.0
+            terms = [(values[f"reaction_{s}_x"], values[f"reaction_{s}_y"], s) for s in supports]
+            terms += [(want[2][0], want[2][1], want[1]) for want in expected if want[0] != "torque"]
+            for x, y, at in terms:
+                px, py = values[f"x_{at}"], values[f"y_{at}"]
+                fx, fy, moment = fx + x, fy + y, moment + px * y - py * x
+                fsize, msize = fsize + math.hypot(x, y), msize + math.hypot(px, py) * math.hypot(x, y)
+            for want in expected:
+                if want[0] == "torque":
+                    moment, msize = moment + want[2], msize + abs(want[2])
+            if data["driver"]["kind"] == "crank":
+                moment, msize = moment + values["driver_torque"], msize + abs(values["driver_torque"])
+            elif data["driver"]["kind"] == "slider":
+                angle = math.radians(data["sliders"][data["driver"]["slider"]]["angle_deg"])
+                x, y, at = values["driver_force"] * math.cos(angle), values["driver_force"] * math.sin(angle), names[data["driver"]["joint"]]
+                fx, fy, moment = fx + x, fy + y, moment + values[f"x_{at}"] * y - values[f"y_{at}"] * x
+                fsize, msize = fsize + abs(values["driver_force"]), msize + math.hypot(values[f"x_{at}"], values[f"y_{at}"]) * abs(values["driver_force"])
+            imbalance = [math.hypot(fx, fy) / fsize, abs(moment) / msize]
+            assert imbalance[0] <= 1e-9 and imbalance[1] <= 1e-9, f"{case.name} pose {i}: the page's forces do not balance: {imbalance}"
+            worst = [max(worst[0], imbalance[0]), max(worst[1], imbalance[1])]
+    # The checkbox: a click hides the forces (the names placed again), Space on it shows them.
+    page.click("#show-forces")
+    assert page.eval("getComputedStyle(document.getElementById('forces')).display") == "none", case.name
+    assert not page.eval("document.getElementById('show-forces').checked"), case.name
+    page.press(" ", "#show-forces")
+    assert page.eval("getComputedStyle(document.getElementById('forces')).display") != "none", case.name
+    assert page.eval("document.getElementById('show-forces').checked"), case.name
+    return arrows, worst
 
 
 # Every pose of the page (the slider's every value that assembled): each joint's name, by its box
@@ -210,6 +330,7 @@ def main(out_dir, numlab, models_dir):
     cases = make_pages(numlab, models_dir, out / "pages")
     by_name = {case.name: case for case in cases}
     total = 0
+    force_pages, force_arrows, imbalance = [], 0, [0.0, 0.0]
     label_poses, farthest = 0, 0.0
     with Browser(out, width=1300, height=1000) as browser:
         for case in cases:
@@ -219,6 +340,13 @@ def main(out_dir, numlab, models_dir):
             assert poses == case.column("status").count("converged"), (case.name, poses)
             label_poses, farthest = label_poses + poses, max(farthest, far)
             total += scrub(page, case)
+            if "statics" in case.header:
+                arrows, worst = check_forces(page, case, models_dir)
+                force_pages.append(case.name)
+                force_arrows, imbalance = force_arrows + arrows, [max(a, b) for a, b in zip(imbalance, worst)]
+            else:
+                assert not any(page.exists(s) for s in ("#show-forces", "#force-scale", "#reaction-table", "#forces *")), \
+                    f"{case.name}: force controls on a model without loads"
             page.set_range("#pose-slider", len(case.rows) // 3)
             page.eval("window.scrollTo(0, 0)")
             page.screenshot(case.page.stem + ".png")
@@ -232,6 +360,16 @@ def main(out_dir, numlab, models_dir):
             page.set_range("#pose-slider", pose)
             page.eval("document.getElementById('scene').scrollIntoView()")
             page.screenshot(f"names-{case.page.stem}-at-{driver}.png")
+            page.check_no_errors()
+        # The forces at two poses of whitworth.toml (crank 30 and 200 deg) and hydraulic-boom.toml (its
+        # 11th and 101st pose): screenshots of the scene and the readout.
+        for name, poses in (("whitworth.toml", (30, 200)), ("hydraulic-boom.toml", (10, 100))):
+            case = by_name[name]
+            page = browser.open(case.page)
+            for pose in poses:
+                page.set_range("#pose-slider", pose)
+                page.eval("document.getElementById('scene').scrollIntoView()")
+                page.screenshot(f"forces-{case.page.stem}-at-{case.rows[pose][0]}.png")
             page.check_no_errors()
         # The Jansen cycle: frame time, scripts off, print, reduced motion.
         jansen = by_name["jansen"]
@@ -306,6 +444,10 @@ def main(out_dir, numlab, models_dir):
             page.eval("window.scrollTo(0, 0)")
             page.screenshot(f"lab-{lab}-{name}.png")
             page.check_no_errors()
+    assert {"whitworth.toml", "inverted-slider-crank.toml", "hydraulic-boom.toml", "four-bar-loads", "parallelogram-loads",
+            "hydraulic-boom-past-stroke"} <= set(force_pages), force_pages
+    print(f"forces on {len(force_pages)} pages: {force_arrows} arrows equal to the CSV's reactions and the files' loads; "
+          f"the page's numbers balance to {imbalance[0]:.1e} (force) and {imbalance[1]:.1e} (moment) of their terms")
     print(f"{len(cases)} pages scrubbed in Chromium: {total} shown numbers and words equal to the CSV's, no page errors")
     print(f"joint names at {label_poses} assembled poses: no two overlap, none on a joint's circle, all in the frame, "
           f"the farthest {farthest:.1f} units from its joint")

@@ -12,7 +12,12 @@ four-bar with loads at 60 rpm:
     change point at 43.15 deg (built-in and file); the isosceles slider-crank's crossings at 90, 270 deg;
  4. self-contained: no URL the page would fetch (no src/href/url() to http, no @import);
     without scripts: the static SVG and a table row per pose;
- 5. the Jansen cycle's page is under 2 MB. Prints every page's size.
+ 5. the Jansen cycle's page is under 2 MB. Prints every page's size;
+ 6. the loads the page carries are the file's [[load]]s (kind, joint or link, force, a mass's weight
+    (0, -m g) with the file's gravity, torque), none for a model without; and at every pose in
+    equilibrium, from the page's own numbers, the reactions and loads balance: forces to 1e-9 of
+    the sum of their sizes, moments about the origin (with a crank's driver torque, a slider
+    driver's force along its line) to 1e-9 of theirs.
 """
 
 import math
@@ -21,7 +26,7 @@ import re
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from pages import make_pages  # noqa: E402
+from pages import file_loads, make_pages, model_file  # noqa: E402
 
 
 def same(csv_cell, value):
@@ -47,6 +52,72 @@ def check_columns(case, data):
             assert same(cell, value), f"{case.name}: {name} at pose {k}: CSV {cell}, page {value}"
             compared += 1
     return compared
+
+
+def check_loads(case, data, models_dir):
+    """6. The page's loads against the description file's; returns the number of loads."""
+    path = model_file(case, models_dir)
+    expected = file_loads(path) if path else []
+    names = [joint["name"] for joint in data["joints"]]
+    loads = data["loads"]
+    assert len(loads) == len(expected), f"{case.name}: the page has {len(loads)} loads, the file {len(expected)}"
+    for load, want in zip(loads, expected):
+        assert load["kind"] == want[0], (case.name, load, want)
+        if want[0] == "torque":
+            assert load["link"] == want[1] and load["torque"] == want[2], (case.name, load, want)
+            assert len(load["joints"]) >= 2 and all(0 <= j < len(names) for j in load["joints"]), (case.name, load)
+        else:
+            assert names[load["joint"]] == want[1] and tuple(load["force"]) == want[2], (case.name, load, want)
+            assert want[0] != "mass" or load["mass"] == want[3], (case.name, load, want)
+    reactions = [c for c in data["csv_columns"] if c.startswith("reaction_")]
+    assert bool(reactions) == bool(loads), f"{case.name}: {len(loads)} loads, reaction columns {reactions}"
+    return len(loads)
+
+
+def balance(data, i):
+    """Pose i's net force and moment about the origin, from the page's numbers, each over the sum of
+    its terms' sizes: the supports' reactions, the loads, and the driver's load where it is external
+    (a crank's torque; a slider driver's force along its line; an actuator's or motor's acts between
+    members, inside the reactions)."""
+    columns, names = data["columns"], [joint["name"] for joint in data["joints"]]
+    fx = fy = moment = force_size = moment_size = 0.0
+
+    def add(x, y, at):
+        nonlocal fx, fy, moment, force_size, moment_size
+        px, py = columns["x_" + at][i], columns["y_" + at][i]
+        fx, fy, moment = fx + x, fy + y, moment + px * y - py * x
+        force_size += math.hypot(x, y)
+        moment_size += math.hypot(px, py) * math.hypot(x, y)
+    for name in data["csv_columns"]:
+        if name.startswith("reaction_") and name.endswith("_x"):
+            support = name[len("reaction_"):-2]
+            add(columns[name][i], columns[f"reaction_{support}_y"][i], support)
+    for load in data["loads"]:
+        if load["kind"] == "torque":
+            moment, moment_size = moment + load["torque"], moment_size + abs(load["torque"])
+        else:
+            add(load["force"][0], load["force"][1], names[load["joint"]])
+    driver = data["driver"]
+    if driver["kind"] == "crank":
+        torque = columns["driver_torque"][i]
+        moment, moment_size = moment + torque, moment_size + abs(torque)
+    elif driver["kind"] == "slider":
+        angle = math.radians(data["sliders"][driver["slider"]]["angle_deg"])
+        force = columns["driver_force"][i]
+        add(force * math.cos(angle), force * math.sin(angle), names[driver["joint"]])
+    return math.hypot(fx, fy) / force_size, abs(moment) / moment_size
+
+
+def check_balance(case, data):
+    """6. Every pose in equilibrium balances (1e-9); returns the poses checked and the worst ratios."""
+    poses, worst_force, worst_moment = 0, 0.0, 0.0
+    for i, statics in enumerate(data["columns"]["statics"]):
+        if statics != "equilibrium":
+            continue
+        force, moment = balance(data, i)
+        assert force <= 1e-9 and moment <= 1e-9, f"{case.name} pose {i}: net force {force:.2e}, moment {moment:.2e} of their terms"
+        poses, worst_force, worst_moment = poses + 1, max(worst_force, force), max(worst_moment, moment)
+    return poses, worst_force, worst_moment
 
 
 def check_builtin_velocities(case, data):
@@ -102,9 +173,13 @@ def main(numlab, models_dir, out_dir):
         table = re.search(r'<table id="pose-table">(.*?)</table>', html, re.S)
         assert table and table.group(1).count("<tr>") == len(case.rows) + 1, f"{case.name}: the table is not a row per pose"
         note = ""
+        if check_loads(case, data, models_dir):
+            poses, force, moment = check_balance(case, data)
+            assert poses > 0, f"{case.name}: no pose in equilibrium"
+            note = f", loads the file's; {poses} poses balance (force {force:.1e}, moment {moment:.1e} of their terms)"
         if case.name in ("jansen", "jansen10", "mustang"):
             assert {"vx_F" if "jansen" in case.name else "vx_P12", "condition"} <= set(data["columns"]), case.name
-            note = f", velocity vs 5-point difference {check_builtin_velocities(case, data):.1e} of its scale"
+            note += f", velocity vs 5-point difference {check_builtin_velocities(case, data):.1e} of its scale"
         size = case.page.stat().st_size
         print(f"{case.name:28} {len(case.rows):4} poses  {size / 1e6:6.3f} MB  {compared} numbers equal to the CSV's{note}")
         if case.name == "jansen":
@@ -125,7 +200,9 @@ def main(numlab, models_dir, out_dir):
     assert len(crossings) == 2 and abs(crossings[0] - 90) < 1e-3 and abs(crossings[1] - 270) < 1e-3, crossings
     loads = by_name["four-bar-loads"].data()
     assert "driver_torque" in loads["columns"] and abs(loads["speed_rad_s"] - 2 * math.pi) < 1e-12, loads["speed_rad_s"]
-    print(f"{len(cases)} pages: numbers equal to the CSV's, marks, self-contained, static fallback")
+    statics = {name: by_name[name].column("statics") for name in ("parallelogram-loads", "hydraulic-boom-past-stroke")}
+    assert statics["parallelogram-loads"].count("singular") == 2 and "no_pose" in statics["hydraulic-boom-past-stroke"], statics
+    print(f"{len(cases)} pages: numbers equal to the CSV's, marks, self-contained, static fallback, loads the files'")
 
 
 if __name__ == "__main__":
