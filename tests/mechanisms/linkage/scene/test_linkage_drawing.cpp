@@ -21,6 +21,7 @@
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 #include "scenes/label_placement.hpp"
 #include "scenes/linkage_scene.hpp"
+#include "svg_reading.hpp"
 
 using namespace numlab::mechanisms;
 using numlab::Status;
@@ -71,12 +72,6 @@ std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
   return n;
-}
-
-Point circle_of(const std::string& svg, const std::string& name) {
-  std::smatch m;
-  REQUIRE(std::regex_search(svg, m, std::regex("id=\"joint-" + name + "\" cx=\"([-0-9.]+)\" cy=\"([-0-9.]+)\"")));
-  return {std::stod(m[1]), std::stod(m[2])};
 }
 
 // Each name's box from its <text>, in SVG coordinates: centred (text-anchor middle, dominant-baseline

@@ -17,6 +17,7 @@
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 #include "scenes/linkage_scene.hpp"
+#include "svg_reading.hpp"
 
 using namespace numlab::mechanisms;
 using numlab::Status;
@@ -50,12 +51,6 @@ std::string attribute(const std::string& element, const std::string& name) {
   return m[1];
 }
 double number_of(const std::string& element, const std::string& name) { return std::stod(attribute(element, name)); }
-
-Point circle_of(const std::string& svg, const std::string& name) {
-  std::smatch m;
-  REQUIRE(std::regex_search(svg, m, std::regex("id=\"joint-" + name + "\" cx=\"([-0-9.]+)\" cy=\"([-0-9.]+)\"")));
-  return {std::stod(m[1]), std::stod(m[2])};
-}
 
 // The values of `element`'s <animate> of `name`, as numbers.
 std::vector<double> animated(const std::string& element, const std::string& name) {

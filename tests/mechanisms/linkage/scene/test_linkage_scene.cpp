@@ -17,6 +17,7 @@
 #include "numlab/mechanisms/linkage/linkage_solver.hpp"
 #include "numlab/mechanisms/linkage/linkage_sweep.hpp"
 #include "scenes/linkage_scene.hpp"
+#include "svg_reading.hpp"
 #include "scenes/scene_layout.hpp"
 
 using namespace numlab::mechanisms;
@@ -53,14 +54,6 @@ bool balanced(const std::string& svg) {
     }
   }
   return open.empty() && roots == 1 && svg.starts_with("<svg");
-}
-
-// The centre of joint `name`'s circle, in SVG coordinates.
-Eigen::Vector2d circle_of(const std::string& svg, const std::string& name) {
-  std::smatch m;
-  const std::regex circle("id=\"joint-" + name + "\" cx=\"([-0-9.]+)\" cy=\"([-0-9.]+)\"");
-  REQUIRE(std::regex_search(svg, m, circle));
-  return {std::stod(m[1]), std::stod(m[2])};
 }
 
 struct Arrow {
