@@ -51,10 +51,10 @@ double second_driver_at(const LinkageModel& model, const LinkagePose& pose) {
 
 // A coordinate (or a speed, `decimals` 4) in the text table: the decimals it has for a model of size
 // about 1, and more for a smaller one, so a model in micrometres shows as many digits as one in metres.
+// A pose that did not assemble has no speed: "-".
 std::string fixed_for_size(double value, int decimals, double size) {
-  if (std::isnan(value)) return "-";  // a pose that did not assemble has no speed
   const int more = size > 0.0 && std::isfinite(size) ? std::max(0, -static_cast<int>(std::floor(std::log10(size)))) : 0;
-  return fmt::format("{:.{}f}", value, decimals + more);
+  return fixed(value, decimals + more);
 }
 
 // The driver in words: "crank" or "motor" (per radian of it), "travel" or "length" (per unit of it).
